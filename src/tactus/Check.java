@@ -1,0 +1,45 @@
+package tactus;
+
+/** Argument validation at the API boundary, with messages that name the element and the value. */
+final class Check {
+    private Check() {
+    }
+
+    static IllegalArgumentException fail(String op, String element, String message) {
+        return new IllegalArgumentException(op + "(\"" + element + "\"): " + message);
+    }
+
+    static void name(String op, String name) {
+        if (name == null || name.isEmpty()) {
+            throw new IllegalArgumentException(op + ": the name must be a non-empty string, got "
+                    + (name == null ? "null" : "\"\""));
+        }
+    }
+
+    static void finite(String op, String element, String param, double v) {
+        if (!Double.isFinite(v)) {
+            throw fail(op, element, param + " must be a finite number, got " + v);
+        }
+    }
+
+    static void positive(String op, String element, String param, double v) {
+        if (!(v > 0) || !Double.isFinite(v)) {
+            throw fail(op, element, param + " must be a finite number > 0, got " + v);
+        }
+    }
+
+    static void nonNegative(String op, String element, String param, double v) {
+        if (!(v >= 0) || !Double.isFinite(v)) {
+            throw fail(op, element, param + " must be a finite number >= 0, got " + v);
+        }
+    }
+
+    static void vector(String op, String element, String param, Vect3D v) {
+        if (v == null) {
+            throw fail(op, element, param + " must not be null");
+        }
+        if (!v.isFinite()) {
+            throw fail(op, element, param + " must have finite components, got " + v);
+        }
+    }
+}

@@ -1,0 +1,8 @@
+package tactus;
+
+/** A mass that moves along z only; x and y keep their initial values. */
+public final class Mass1D extends InertialMass {
+    Mass1D(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}

@@ -1,0 +1,8 @@
+package tactus;
+
+/** A mass that moves in the plane z = constant of its initial position. */
+public final class Mass2DPlane extends InertialMass {
+    Mass2DPlane(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}

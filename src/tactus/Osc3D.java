@@ -1,0 +1,8 @@
+package tactus;
+
+/** A 3D oscillator: a mass tied to its initial position by an internal spring and damper. */
+public final class Osc3D extends Oscillator {
+    Osc3D(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}

@@ -1,0 +1,17 @@
+package tactus;
+
+/**
+ * A kinematic position driver: it follows a target position through an exponentially weighted
+ * moving average and pushes whatever it is linked to. It reports no force.
+ */
+public final class PosInput3D extends Mass {
+    PosInput3D(PhysicalModel model, int id) {
+        super(model, id);
+    }
+
+    /** Sets the target position the driver follows, in model units. */
+    public void drivePosition(Vect3D pos) {
+        checkValid();
+        model.setHapticPosition(model.massName(id), pos);
+    }
+}

@@ -1,0 +1,8 @@
+package tactus;
+
+/** A spring-damper that acts only while the masses are farther apart than its length. */
+public final class Rope3D extends ElasticInteraction {
+    Rope3D(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}

@@ -1,0 +1,8 @@
+package tactus;
+
+/** A spring-damper along z only, on the signed difference z1 - z2. */
+public final class SpringDamper1D extends ElasticInteraction {
+    SpringDamper1D(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}

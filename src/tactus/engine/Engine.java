@@ -1,0 +1,547 @@
+package tactus.engine;
+
+/**
+ * The mass-interaction simulation, in algorithmic (per-step) units, addressed by integer ids.
+ *
+ * <p>Masses and links are added by kind and receive a stable id that is never reused. The
+ * scene is compiled lazily into a {@link StepPlan} before the next step whenever its topology
+ * changed; parameter changes are written straight into the compiled arrays. Each step runs the
+ * two phases of the explicit scheme: every mass moves using the forces of the previous
+ * interaction phase, then every interaction computes new forces from the new positions.
+ *
+ * <p>This class does no name handling, unit conversion or locking: the {@code tactus} facade
+ * does that. Ids passed in must be live, or an {@link IllegalArgumentException} is thrown.
+ */
+public final class Engine {
+    private final MassTable masses = new MassTable();
+    private final LinkTable links = new LinkTable();
+    private final Medium medium = new Medium();
+    private StepPlan plan;
+    private boolean topologyDirty = true;
+    private boolean effectsDirty;
+    private long steps;
+    private final double[] scratchA = new double[3];
+    private final double[] scratchB = new double[3];
+
+    /** Creates an empty engine with no gravity and no friction. */
+    public Engine() {
+    }
+
+    // ------------------------------------------------------------------ medium
+
+    /** Sets the gravity acceleration vector, in units per step squared; masses accelerate along it. */
+    public void setGravity(double gx, double gy, double gz) {
+        boolean had = medium.hasGravity();
+        medium.gx = gx;
+        medium.gy = gy;
+        medium.gz = gz;
+        if (had != medium.hasGravity()) {
+            effectsDirty = true;
+        }
+    }
+
+    /** @return the gravity acceleration component along axis 0, 1 or 2, in units per step squared. */
+    public double gravity(int axis) {
+        return axis == 0 ? medium.gx : axis == 1 ? medium.gy : medium.gz;
+    }
+
+    /** Sets the air friction coefficient (per-step damping against the fixed frame) of every mass. */
+    public void setFriction(double f) {
+        boolean had = medium.hasFriction();
+        medium.friction = f;
+        if (had != medium.hasFriction()) {
+            effectsDirty = true;
+        }
+        if (plan != null) {
+            for (int s = 0; s < plan.nMass; s++) {
+                PlanCompiler.fillMass(plan, s, masses, plan.massId[s], medium);
+            }
+        }
+    }
+
+    /** @return the air friction coefficient, per step. */
+    public double friction() {
+        return medium.friction;
+    }
+
+    // ------------------------------------------------------------------ building
+
+    /**
+     * Adds a mass-type module.
+     *
+     * @param kind the module kind
+     * @param mass the inertia M (ignored for fixed and input kinds)
+     * @param x initial position
+     * @param vx initial displacement per step: the previous position is set to {@code x - vx}
+     * @return the new mass id
+     */
+    public int addMass(MassKind kind, double mass, double x, double y, double z, double vx, double vy, double vz) {
+        int id = masses.add(kind, mass);
+        boolean fixed = kind.isFixed();
+        boolean plane = kind == MassKind.MASS2D_PLANE;
+        boolean line = kind == MassKind.MASS1D || kind == MassKind.OSC1D;
+        double pvx = fixed || line ? 0 : vx;
+        double pvy = fixed || line ? 0 : vy;
+        double pvz = fixed || plane ? 0 : vz;
+        masses.setPending(id, x, y, z, x - pvx, y - pvy, z - pvz);
+        masses.setRest(id, x, y, z);
+        masses.weight[id] = 1.0;
+        topologyDirty = true;
+        return id;
+    }
+
+    /** Sets the internal stiffness and damping of an oscillator, per step. */
+    public void setOscillator(int id, double stiffness, double damping) {
+        checkMass(id);
+        masses.stiffness[id] = stiffness;
+        masses.damping[id] = damping;
+        refreshMass(id);
+    }
+
+    /** Sets the EWMA weight of an input module: 1 follows the target at once, 1/s smooths over about s steps. */
+    public void setInputWeight(int id, double weight) {
+        checkMass(id);
+        masses.weight[id] = weight;
+        refreshMass(id);
+    }
+
+    /**
+     * Adds an interaction between two masses. {@code length} is the rest length, contact
+     * threshold, bubble radius or attractor limit distance, depending on the kind.
+     *
+     * @return the new link id
+     */
+    public int addLink(LinkKind kind, int massA, int massB, double stiffness, double damping, double length) {
+        checkMass(massA);
+        if (!kind.isSingleMass()) {
+            checkMass(massB);
+        }
+        int id = links.add(kind, massA, kind.isSingleMass() ? massA : massB, stiffness, damping, length);
+        topologyDirty = true;
+        return id;
+    }
+
+    /** Adds a one-sided plane contact on axis 0, 1 or 2 at coordinate {@code position}, with offset {@code l0}. */
+    public int addPlaneContact(int mass, int axis, double position, double l0, double stiffness, double damping) {
+        if (axis < 0 || axis > 2) {
+            throw new IllegalArgumentException("plane axis must be 0, 1 or 2, got " + axis);
+        }
+        int id = addLink(LinkKind.PLANE_CONTACT3D, mass, mass, stiffness, damping, l0);
+        links.aux[id] = position;
+        links.axis[id] = axis;
+        return id;
+    }
+
+    /** Adds an inverse-square attractor: force {@code -attraction / d^2} while d exceeds {@code limit}. */
+    public int addAttractor(int massA, int massB, double limit, double attraction) {
+        int id = addLink(LinkKind.ATTRACTOR3D, massA, massB, 0, 0, limit);
+        links.aux[id] = attraction;
+        return id;
+    }
+
+    /** Removes one link. */
+    public void removeLink(int id) {
+        checkLink(id);
+        links.alive[id] = false;
+        topologyDirty = true;
+    }
+
+    /** Removes a mass and every link attached to it. */
+    public void removeMass(int id) {
+        checkMass(id);
+        for (int l = 0; l < links.count; l++) {
+            if (links.alive[l] && (links.a[l] == id || links.b[l] == id)) {
+                links.alive[l] = false;
+            }
+        }
+        masses.alive[id] = false;
+        topologyDirty = true;
+    }
+
+    /** Turns a mass into a fixed point (Ground3D) at its current position; its links stay attached. */
+    public void makeFixed(int id) {
+        checkMass(id);
+        double[] pos = scratchA;
+        position(id, pos);
+        masses.kind[id] = MassKind.GROUND3D;
+        setPosition(id, pos[0], pos[1], pos[2]);
+        topologyDirty = true;
+    }
+
+    /** Removes every mass and link. Ids already issued stay invalid. */
+    public void clear() {
+        for (int id = 0; id < masses.count; id++) {
+            masses.alive[id] = false;
+        }
+        for (int id = 0; id < links.count; id++) {
+            links.alive[id] = false;
+        }
+        topologyDirty = true;
+    }
+
+    // ------------------------------------------------------------------ compiling and stepping
+
+    /** Compiles the scene now if its topology or effects changed since the last compile. */
+    public void compile() {
+        if (topologyDirty || plan == null) {
+            plan = PlanCompiler.compile(masses, links, medium, plan);
+            topologyDirty = false;
+            effectsDirty = false;
+        } else if (effectsDirty) {
+            plan.selectKernels();
+            effectsDirty = false;
+        }
+    }
+
+    /** @return the current compiled plan, compiling first if needed. */
+    public StepPlan plan() {
+        compile();
+        return plan;
+    }
+
+    /** Runs one simulation step. */
+    public void step() {
+        if (topologyDirty || effectsDirty) {
+            compile();
+        }
+        plan.step();
+        steps++;
+    }
+
+    /** Runs {@code n} simulation steps. */
+    public void step(int n) {
+        if (topologyDirty || effectsDirty) {
+            compile();
+        }
+        StepPlan p = plan;
+        for (int i = 0; i < n; i++) {
+            p.step();
+        }
+        steps += n;
+    }
+
+    /** @return the number of steps run since this engine was created. */
+    public long stepCount() {
+        return steps;
+    }
+
+    // ------------------------------------------------------------------ introspection
+
+    /** @return true when {@code id} names a live mass. */
+    public boolean isMass(int id) {
+        return masses.isLive(id);
+    }
+
+    /** @return true when {@code id} names a live link. */
+    public boolean isLink(int id) {
+        return links.isLive(id);
+    }
+
+    /** @return the kind of a live mass. */
+    public MassKind massKind(int id) {
+        checkMass(id);
+        return masses.kind[id];
+    }
+
+    /** @return the kind of a live link. */
+    public LinkKind linkKind(int id) {
+        checkLink(id);
+        return links.kind[id];
+    }
+
+    /** @return the id of the first mass of a link. */
+    public int linkMassA(int id) {
+        checkLink(id);
+        return links.a[id];
+    }
+
+    /** @return the id of the second mass of a link (the same as the first for a plane contact). */
+    public int linkMassB(int id) {
+        checkLink(id);
+        return links.b[id];
+    }
+
+    /** @return the number of mass ids issued so far, live or not. */
+    public int massIdCount() {
+        return masses.count;
+    }
+
+    /** @return the number of link ids issued so far, live or not. */
+    public int linkIdCount() {
+        return links.count;
+    }
+
+    // ------------------------------------------------------------------ parameters
+
+    /** @return the inertia M of a mass. */
+    public double mass(int id) {
+        checkMass(id);
+        return masses.mass[id];
+    }
+
+    /** Sets the inertia M of a mass (must be finite and positive; the caller validates). */
+    public void setMass(int id, double m) {
+        checkMass(id);
+        masses.mass[id] = m;
+        refreshMass(id);
+    }
+
+    /** @return the internal stiffness of an oscillator, per step. */
+    public double oscStiffness(int id) {
+        checkMass(id);
+        return masses.stiffness[id];
+    }
+
+    /** @return the internal damping of an oscillator, per step. */
+    public double oscDamping(int id) {
+        checkMass(id);
+        return masses.damping[id];
+    }
+
+    /** @return the EWMA weight of an input module. */
+    public double inputWeight(int id) {
+        checkMass(id);
+        return masses.weight[id];
+    }
+
+    /** @return the rest position of an oscillator along axis 0, 1 or 2. */
+    public double rest(int id, int axis) {
+        checkMass(id);
+        return masses.rest[3 * id + axis];
+    }
+
+    /** @return the stiffness K of a link, per step. */
+    public double linkStiffness(int id) {
+        checkLink(id);
+        return links.stiffness[id];
+    }
+
+    /** @return the damping Z of a link, per step. */
+    public double linkDamping(int id) {
+        checkLink(id);
+        return links.damping[id];
+    }
+
+    /** @return the length parameter of a link (rest length, threshold, radius, offset or limit). */
+    public double linkLength(int id) {
+        checkLink(id);
+        return links.length[id];
+    }
+
+    /** @return the plane position of a plane contact, or the attraction factor of an attractor. */
+    public double linkAux(int id) {
+        checkLink(id);
+        return links.aux[id];
+    }
+
+    /** @return the axis (0, 1, 2) of a plane contact. */
+    public int linkAxis(int id) {
+        checkLink(id);
+        return links.axis[id];
+    }
+
+    /** Sets the stiffness, damping and length of a link together. */
+    public void setLinkParams(int id, double stiffness, double damping, double length) {
+        checkLink(id);
+        links.stiffness[id] = stiffness;
+        links.damping[id] = damping;
+        links.length[id] = length;
+        refreshLink(id);
+    }
+
+    /** Sets the plane position of a plane contact, or the attraction factor of an attractor. */
+    public void setLinkAux(int id, double value) {
+        checkLink(id);
+        links.aux[id] = value;
+        refreshLink(id);
+    }
+
+    // ------------------------------------------------------------------ state
+
+    /** Writes the position of a mass into {@code out[0..2]}. */
+    public void position(int id, double[] out) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            out[0] = plan.x[s];
+            out[1] = plan.y[s];
+            out[2] = plan.z[s];
+        } else {
+            int q = 6 * id;
+            out[0] = masses.pending[q];
+            out[1] = masses.pending[q + 1];
+            out[2] = masses.pending[q + 2];
+        }
+    }
+
+    /** Writes the displacement of a mass over the last step, X(n) - X(n-1), into {@code out[0..2]}. */
+    public void displacement(int id, double[] out) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            out[0] = plan.x[s] - plan.px[s];
+            out[1] = plan.y[s] - plan.py[s];
+            out[2] = plan.z[s] - plan.pz[s];
+        } else {
+            int q = 6 * id;
+            out[0] = masses.pending[q] - masses.pending[q + 3];
+            out[1] = masses.pending[q + 1] - masses.pending[q + 4];
+            out[2] = masses.pending[q + 2] - masses.pending[q + 5];
+        }
+    }
+
+    /** Writes the force accumulated on a mass for its next step into {@code out[0..2]}. */
+    public void force(int id, double[] out) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            out[0] = plan.fx[s];
+            out[1] = plan.fy[s];
+            out[2] = plan.fz[s];
+        } else {
+            out[0] = 0;
+            out[1] = 0;
+            out[2] = 0;
+        }
+    }
+
+    /** Moves a mass to a position and sets its velocity to zero (both current and previous positions). */
+    public void setPosition(int id, double x, double y, double z) {
+        setState(id, x, y, z, x, y, z);
+    }
+
+    /** Sets the current and previous positions of a mass. */
+    public void setState(int id, double x, double y, double z, double prevX, double prevY, double prevZ) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            plan.x[s] = x;
+            plan.y[s] = y;
+            plan.z[s] = z;
+            plan.px[s] = prevX;
+            plan.py[s] = prevY;
+            plan.pz[s] = prevZ;
+            plan.tx[s] = x;
+            plan.ty[s] = y;
+            plan.tz[s] = z;
+        } else {
+            masses.setPending(id, x, y, z, prevX, prevY, prevZ);
+        }
+        if (masses.kind[id].isFixed() || masses.kind[id].isOscillator()) {
+            // fixed points and oscillators keep their anchor where they are put
+            masses.setRest(id, x, y, z);
+            refreshMass(id);
+        }
+    }
+
+    /** Adds a force to a mass's buffer; it acts once, in the next step. */
+    public void addForce(int id, double fx, double fy, double fz) {
+        checkMass(id);
+        compile();
+        int s = masses.slot[id];
+        plan.fx[s] += fx;
+        plan.fy[s] += fy;
+        plan.fz[s] += fz;
+    }
+
+    /** Sets the target position that an input module (haptic avatar or position driver) follows. */
+    public void setInputTarget(int id, double x, double y, double z) {
+        checkMass(id);
+        compile();
+        int s = masses.slot[id];
+        plan.tx[s] = x;
+        plan.ty[s] = y;
+        plan.tz[s] = z;
+    }
+
+    /**
+     * Copies the force accumulated on a mass since the last call into {@code out[0..2]} and clears it.
+     *
+     * @return the number of steps over which the force was accumulated
+     */
+    public long takeForce(int id, double[] out) {
+        checkMass(id);
+        compile();
+        int s = masses.slot[id];
+        out[0] = plan.fx[s];
+        out[1] = plan.fy[s];
+        out[2] = plan.fz[s];
+        plan.fx[s] = 0;
+        plan.fy[s] = 0;
+        plan.fz[s] = 0;
+        long n = steps - masses.lastTake[id];
+        masses.lastTake[id] = steps;
+        return n;
+    }
+
+    /** @return the current distance between the two masses of a link (the axis gap for a plane contact). */
+    public double linkDistance(int id) {
+        checkLink(id);
+        double[] a = scratchA;
+        double[] b = scratchB;
+        position(links.a[id], a);
+        if (links.kind[id] == LinkKind.PLANE_CONTACT3D) {
+            return a[links.axis[id]] - links.aux[id];
+        }
+        position(links.b[id], b);
+        if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
+            return a[2] - b[2];
+        }
+        double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /** Multiplies every mass's displacement per step by {@code ratio}, keeping positions. */
+    public void scaleVelocities(double ratio) {
+        compile();
+        StepPlan p = plan;
+        for (int s = 0; s < p.nMass; s++) {
+            p.px[s] = p.x[s] - (p.x[s] - p.px[s]) * ratio;
+            p.py[s] = p.y[s] - (p.y[s] - p.py[s]) * ratio;
+            p.pz[s] = p.z[s] - (p.z[s] - p.pz[s]) * ratio;
+        }
+        for (LinkBatch b : p.batches) {
+            if (b == null) {
+                continue;
+            }
+            for (int j = 0; j < b.n; j++) {
+                boolean tracked = b.kind == LinkKind.SPRING_DAMPER1D || b.dp[j] >= 0;
+                if (tracked && b.kind != LinkKind.PLANE_CONTACT3D && b.kind != LinkKind.ATTRACTOR3D) {
+                    double d = PlanCompiler.distanceOf(b, j, p);
+                    b.dp[j] = d - (d - b.dp[j]) * ratio;
+                }
+            }
+        }
+    }
+
+    // ------------------------------------------------------------------ helpers
+
+    private int liveSlot(int id) {
+        return plan == null ? -1 : masses.slot[id];
+    }
+
+    private void refreshMass(int id) {
+        int s = liveSlot(id);
+        if (s >= 0) {
+            PlanCompiler.fillMass(plan, s, masses, id, medium);
+        }
+    }
+
+    private void refreshLink(int id) {
+        if (plan != null && links.slot[id] >= 0) {
+            PlanCompiler.fillLink(plan.batches[links.kind[id].ordinal()], links.slot[id], links, id);
+        }
+    }
+
+    private void checkMass(int id) {
+        if (!masses.isLive(id)) {
+            throw new IllegalArgumentException("no live mass with id " + id);
+        }
+    }
+
+    private void checkLink(int id) {
+        if (!links.isLive(id)) {
+            throw new IllegalArgumentException("no live link with id " + id);
+        }
+    }
+}

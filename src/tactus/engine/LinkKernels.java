@@ -1,0 +1,322 @@
+package tactus.engine;
+
+/**
+ * The interaction-phase kernels. Each one reads the positions just computed by the mass phase
+ * and adds equal and opposite forces into the two masses' force buffers. With
+ * {@code d = |X1 - X2|} and {@code u = (X1 - X2)/d}, a link with scalar force {@code f}
+ * adds {@code f u} to mass 1 and {@code -f u} to mass 2, so a negative {@code f} attracts.
+ * Damping uses the link's own previous distance: {@code v = d(n) - d(n-1)}.
+ * Coincident masses ({@code d = 0}) exchange no force, so no NaN can appear.
+ */
+final class LinkKernels {
+    private LinkKernels() {
+    }
+
+    static Kernel create(LinkBatch b, StepPlan p) {
+        switch (b.kind) {
+            case SPRING3D:
+                return new Spring(b, p);
+            case DAMPER3D:
+                return new Damper(b, p);
+            case SPRING_DAMPER3D:
+                return new SpringDamper(b, p);
+            case SPRING_DAMPER1D:
+                return new SpringDamper1D(b, p);
+            case ROPE3D:
+            case BUBBLE3D:
+                return new Stretched(b, p);
+            case CONTACT3D:
+                return new Proximity(b, p);
+            case PLANE_CONTACT3D:
+                return new Plane(b, p);
+            case ATTRACTOR3D:
+                return new Attractor(b, p);
+            default:
+                throw new IllegalStateException("no kernel for " + b.kind);
+        }
+    }
+
+    /** Spring3D: f = -K (d - l0). */
+    static final class Spring implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Spring(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] k = b.k, l0 = b.len;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                double s = d > 0 ? -k[j] * (d - l0[j]) / d : 0.0;
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    /** Damper3D: f = -Z (d(n) - d(n-1)). */
+    static final class Damper implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Damper(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] zz = b.z, dp = b.dp;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                double s = d > 0 ? -zz[j] * (d - dp[j]) / d : 0.0;
+                dp[j] = d;
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    /** SpringDamper3D: f = -K (d - l0) - Z (d(n) - d(n-1)). */
+    static final class SpringDamper implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        SpringDamper(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                double f = -k[j] * (d - l0[j]) - zz[j] * (d - dp[j]);
+                dp[j] = d;
+                double s = d > 0 ? f / d : 0.0;
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    /**
+     * SpringDamper1D: on the signed difference {@code e = z1 - z2},
+     * {@code F = K (e - l0) + Z (e(n) - e(n-1))}; mass 1 receives -F and mass 2 receives +F along z.
+     */
+    static final class SpringDamper1D implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        SpringDamper1D(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] z = p.z, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double e = z[a] - z[c];
+                double f = k[j] * (e - l0[j]) + zz[j] * (e - dp[j]);
+                dp[j] = e;
+                fz[a] -= f;
+                fz[c] += f;
+            }
+        }
+    }
+
+    /**
+     * Rope3D and Bubble3D: the spring-damper force, only while {@code d > l0} (rope length or
+     * bubble radius). On the first active step the previous distance is re-derived from the
+     * masses' previous positions, so the damper sees the true approach speed.
+     */
+    static final class Stretched implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Stretched(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d2 = dx * dx + dy * dy + dz * dz;
+                double l = l0[j];
+                if (d2 <= l * l) {
+                    dp[j] = -1.0;
+                    continue;
+                }
+                double d = Math.sqrt(d2);
+                double prev = dp[j] < 0 ? previousDistance(p, a, c) : dp[j];
+                dp[j] = d;
+                double s = (-k[j] * (d - l) - zz[j] * (d - prev)) / d;
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    /**
+     * Contact3D: the spring-damper force with the threshold as rest length, only while
+     * {@code d < threshold}. The force is not clamped, as in the reference scheme.
+     */
+    static final class Proximity implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Proximity(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] k = b.k, zz = b.z, thr = b.len, dp = b.dp;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d2 = dx * dx + dy * dy + dz * dz;
+                double t = thr[j];
+                if (d2 >= t * t) {
+                    dp[j] = -1.0;
+                    continue;
+                }
+                double d = Math.sqrt(d2);
+                double prev = dp[j] < 0 ? previousDistance(p, a, c) : dp[j];
+                dp[j] = d;
+                if (d > 0) {
+                    double s = (-k[j] * (d - t) - zz[j] * (d - prev)) / d;
+                    fx[a] += s * dx;
+                    fy[a] += s * dy;
+                    fz[a] += s * dz;
+                    fx[c] -= s * dx;
+                    fy[c] -= s * dy;
+                    fz[c] -= s * dz;
+                }
+            }
+        }
+    }
+
+    /**
+     * PlaneContact3D: with q the mass coordinate on the plane's axis and {@code t = q - pos - l0},
+     * while {@code t < 0} the axis force {@code -K t - Z (q(n) - q(n-1))} pushes the mass back to
+     * the positive side. Links are grouped by axis, so the loop has no branch on the axis.
+     */
+    static final class Plane implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Plane(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            int[] as = b.axisStart;
+            axis(as[0], as[1], p.x, p.px, p.fx);
+            axis(as[1], as[2], p.y, p.py, p.fy);
+            axis(as[2], as[3], p.z, p.pz, p.fz);
+        }
+
+        private void axis(int s, int e, double[] q, double[] pq, double[] fq) {
+            final int[] ia = b.a;
+            final double[] k = b.k, zz = b.z, l0 = b.len, pos = b.aux;
+            for (int j = s; j < e; j++) {
+                int a = ia[j];
+                double qa = q[a];
+                double t = qa - pos[j] - l0[j];
+                if (t < 0) {
+                    fq[a] += -k[j] * t - zz[j] * (qa - pq[a]);
+                }
+            }
+        }
+    }
+
+    /** Attractor3D: f = -A / d^2 while d > the limit distance; no damping. */
+    static final class Attractor implements Kernel {
+        private final LinkBatch b;
+        private final StepPlan p;
+
+        Attractor(LinkBatch b, StepPlan p) {
+            this.b = b;
+            this.p = p;
+        }
+
+        @Override
+        public void run() {
+            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
+            final int[] ia = b.a, ib = b.b;
+            final double[] lim = b.len, att = b.aux;
+            for (int j = 0, n = b.n; j < n; j++) {
+                int a = ia[j], c = ib[j];
+                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+                double d2 = dx * dx + dy * dy + dz * dz;
+                double l = lim[j];
+                if (d2 <= l * l || d2 == 0) {
+                    continue;
+                }
+                double d = Math.sqrt(d2);
+                double s = -att[j] / (d2 * d);
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    /** Distance between two masses at the previous step, from their previous positions. */
+    static double previousDistance(StepPlan p, int a, int c) {
+        double dx = p.px[a] - p.px[c], dy = p.py[a] - p.py[c], dz = p.pz[a] - p.pz[c];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+}

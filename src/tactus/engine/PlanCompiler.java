@@ -1,0 +1,189 @@
+package tactus.engine;
+
+/**
+ * Builds a {@link StepPlan} from the mass and link tables. Masses are laid out grouped by
+ * kind (in {@link MassKind} order, insertion order within a kind) and links become one batch
+ * per kind present. The live state of masses and links that were already in the previous
+ * plan is carried over exactly; new masses start from their pending state and new links
+ * take their previous distance from the current positions.
+ */
+final class PlanCompiler {
+    private PlanCompiler() {
+    }
+
+    static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old) {
+        int kinds = MassKind.values().length;
+        int[] counts = new int[kinds];
+        for (int id = 0; id < mt.count; id++) {
+            if (mt.alive[id]) {
+                counts[mt.kind[id].ordinal()]++;
+            }
+        }
+        int[] start = new int[kinds + 1];
+        for (int k = 0; k < kinds; k++) {
+            start[k + 1] = start[k] + counts[k];
+        }
+        int n = start[kinds];
+        int[] cursor = start.clone();
+        int[] newSlot = new int[mt.count];
+        for (int id = 0; id < mt.count; id++) {
+            newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
+        }
+        LinkBatch[] batches = buildBatches(lt, newSlot);
+        StepPlan p = new StepPlan(n, start, batches, medium);
+        for (int id = 0; id < mt.count; id++) {
+            int s = newSlot[id];
+            if (s < 0) {
+                continue;
+            }
+            p.massId[s] = id;
+            int o = mt.slot[id];
+            if (old != null && o >= 0) {
+                copyState(old, o, p, s);
+            } else {
+                int q = 6 * id;
+                p.x[s] = mt.pending[q];
+                p.y[s] = mt.pending[q + 1];
+                p.z[s] = mt.pending[q + 2];
+                p.px[s] = mt.pending[q + 3];
+                p.py[s] = mt.pending[q + 4];
+                p.pz[s] = mt.pending[q + 5];
+                p.tx[s] = p.x[s];
+                p.ty[s] = p.y[s];
+                p.tz[s] = p.z[s];
+            }
+            fillMass(p, s, mt, id, medium);
+        }
+        System.arraycopy(newSlot, 0, mt.slot, 0, mt.count);
+        fillLinks(lt, p, old);
+        p.selectKernels();
+        return p;
+    }
+
+    private static void copyState(StepPlan from, int o, StepPlan to, int s) {
+        to.x[s] = from.x[o];
+        to.y[s] = from.y[o];
+        to.z[s] = from.z[o];
+        to.px[s] = from.px[o];
+        to.py[s] = from.py[o];
+        to.pz[s] = from.pz[o];
+        to.fx[s] = from.fx[o];
+        to.fy[s] = from.fy[o];
+        to.fz[s] = from.fz[o];
+        to.tx[s] = from.tx[o];
+        to.ty[s] = from.ty[o];
+        to.tz[s] = from.tz[o];
+    }
+
+    /** Writes the per-slot coefficients of one mass from its parameters and the medium. */
+    static void fillMass(StepPlan p, int s, MassTable mt, int id, Medium medium) {
+        MassKind k = mt.kind[id];
+        double im = k.isInertial() ? 1.0 / mt.mass[id] : 0.0;
+        p.invM[s] = im;
+        p.w[s] = k.isInput() ? mt.weight[id] : 0.0;
+        if (k.isOscillator()) {
+            p.dmp[s] = 1.0 - (mt.damping[id] + medium.friction) * im;
+            p.stf[s] = mt.stiffness[id] * im;
+            p.rx[s] = mt.rest[3 * id];
+            p.ry[s] = mt.rest[3 * id + 1];
+            p.rz[s] = mt.rest[3 * id + 2];
+        } else {
+            p.dmp[s] = 1.0 - medium.friction * im;
+            p.stf[s] = 0.0;
+        }
+        if (k.isFixed()) {
+            p.px[s] = p.x[s];
+            p.py[s] = p.y[s];
+            p.pz[s] = p.z[s];
+        }
+    }
+
+    private static LinkBatch[] buildBatches(LinkTable lt, int[] massSlot) {
+        LinkKind[] kinds = LinkKind.values();
+        int[] counts = new int[kinds.length];
+        for (int id = 0; id < lt.count; id++) {
+            if (lt.alive[id]) {
+                counts[lt.kind[id].ordinal()]++;
+            }
+        }
+        LinkBatch[] batches = new LinkBatch[kinds.length];
+        for (LinkKind k : kinds) {
+            if (counts[k.ordinal()] > 0) {
+                batches[k.ordinal()] = new LinkBatch(k, counts[k.ordinal()]);
+            }
+        }
+        LinkBatch plane = batches[LinkKind.PLANE_CONTACT3D.ordinal()];
+        int[] planeCursor = new int[3];
+        if (plane != null) {
+            int[] perAxis = new int[3];
+            for (int id = 0; id < lt.count; id++) {
+                if (lt.alive[id] && lt.kind[id] == LinkKind.PLANE_CONTACT3D) {
+                    perAxis[lt.axis[id]]++;
+                }
+            }
+            plane.axisStart[1] = perAxis[0];
+            plane.axisStart[2] = perAxis[0] + perAxis[1];
+            plane.axisStart[3] = plane.n;
+            planeCursor[0] = 0;
+            planeCursor[1] = plane.axisStart[1];
+            planeCursor[2] = plane.axisStart[2];
+        }
+        int[] cursor = new int[kinds.length];
+        for (int id = 0; id < lt.count; id++) {
+            if (!lt.alive[id]) {
+                lt.slot[id] = -1;
+                continue;
+            }
+            LinkKind k = lt.kind[id];
+            LinkBatch b = batches[k.ordinal()];
+            int j = k == LinkKind.PLANE_CONTACT3D ? planeCursor[lt.axis[id]]++ : cursor[k.ordinal()]++;
+            b.id[j] = id;
+            b.a[j] = massSlot[lt.a[id]];
+            b.b[j] = k.isSingleMass() ? b.a[j] : massSlot[lt.b[id]];
+        }
+        return batches;
+    }
+
+    private static void fillLinks(LinkTable lt, StepPlan p, StepPlan old) {
+        for (LinkBatch b : p.batches) {
+            if (b == null) {
+                continue;
+            }
+            for (int j = 0; j < b.n; j++) {
+                int id = b.id[j];
+                fillLink(b, j, lt, id);
+                int o = lt.slot[id];
+                if (old != null && o >= 0 && old.batches[b.kind.ordinal()] != null) {
+                    b.dp[j] = old.batches[b.kind.ordinal()].dp[o];
+                } else {
+                    b.dp[j] = initialPrevious(b, j, p);
+                }
+            }
+            for (int j = 0; j < b.n; j++) {
+                lt.slot[b.id[j]] = j;
+            }
+        }
+    }
+
+    /** Writes the parameters of one link into its batch slot. */
+    static void fillLink(LinkBatch b, int j, LinkTable lt, int id) {
+        b.k[j] = lt.stiffness[id];
+        b.z[j] = lt.damping[id];
+        b.len[j] = lt.length[id];
+        b.aux[j] = lt.aux[id];
+    }
+
+    private static double initialPrevious(LinkBatch b, int j, StepPlan p) {
+        return b.kind.isConditional() ? -1.0 : distanceOf(b, j, p);
+    }
+
+    /** @return the current distance of link slot j (the signed z difference for SpringDamper1D). */
+    static double distanceOf(LinkBatch b, int j, StepPlan p) {
+        int a = b.a[j], c = b.b[j];
+        if (b.kind == LinkKind.SPRING_DAMPER1D) {
+            return p.z[a] - p.z[c];
+        }
+        double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+}
