@@ -6,6 +6,8 @@ import tactus.engine.Engine;
 import tactus.engine.EnergyMeter;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
+import tactus.engine.StabilityAnalyzer;
+import tactus.engine.StabilityReport;
 import tactus.engine.StepPlan;
 
 /**
@@ -44,6 +46,13 @@ public class PhysicalModel {
     private Mass[] massHandles = new Mass[16];
     private Interaction[] linkHandles = new Interaction[16];
     private int anonymous;
+    private boolean initialized;
+    private StabilityPolicy stabilityPolicy = StabilityPolicy.WARN;
+    private int maxContacts = StabilityAnalyzer.DEFAULT_MAX_CONTACTS;
+    private int deferAnalysis;
+    private String lastWarning;
+    private DivergenceListener divergenceListener;
+    private boolean divergenceNotified;
 
     /**
      * Creates an empty model.
@@ -127,6 +136,7 @@ public class PhysicalModel {
             }
             units.setRate(rate);
             applyMedium();
+            analyzeAfterChange(null);
         }
     }
 
@@ -172,6 +182,9 @@ public class PhysicalModel {
     public void init() {
         synchronized (lock) {
             engine.compile();
+            initialized = true;
+            lastWarning = null;
+            analyzeAfterChange(null);
         }
     }
 
@@ -187,6 +200,7 @@ public class PhysicalModel {
             int n = (int) Math.floor(exact);
             residue = exact - n;
             engine.step(n);
+            checkDivergence();
             return n;
         }
     }
@@ -194,7 +208,8 @@ public class PhysicalModel {
     /** Runs one simulation step. */
     public void computeStep() {
         synchronized (lock) {
-            engine.step();
+            engine.step(1);
+            checkDivergence();
         }
     }
 
@@ -205,6 +220,7 @@ public class PhysicalModel {
         }
         synchronized (lock) {
             engine.step(n);
+            checkDivergence();
         }
     }
 
@@ -267,8 +283,13 @@ public class PhysicalModel {
     public void setFriction(double f) {
         Check.finite("setFriction", "friction", "friction", f);
         synchronized (lock) {
+            double old = friction;
             friction = f;
             applyMedium();
+            analyzeAfterChange(() -> {
+                friction = old;
+                applyMedium();
+            });
         }
     }
 
@@ -543,6 +564,7 @@ public class PhysicalModel {
             links.add(label, id);
             Interaction h = Interaction.create(this, id, kind);
             storeLinkHandle(id, h);
+            analyzeAfterChange(() -> removeLinkId(id));
             return h;
         }
     }
@@ -914,15 +936,19 @@ public class PhysicalModel {
         synchronized (lock) {
             requireInertial(op, id);
             Check.positive(op, mats.name(id), "mass", mass);
+            double old = engine.mass(id);
             engine.setMass(id, mass);
+            analyzeAfterChange(() -> engine.setMass(id, old));
         }
     }
 
     void setOscOf(String op, int id, double K, double Z) {
         synchronized (lock) {
             requireOsc(op, id);
-            engine.setOscillator(id, Double.isNaN(K) ? engine.oscStiffness(id) : units.stiffnessIn(K),
-                    Double.isNaN(Z) ? engine.oscDamping(id) : units.dampingIn(Z));
+            double oldK = engine.oscStiffness(id), oldZ = engine.oscDamping(id);
+            engine.setOscillator(id, Double.isNaN(K) ? oldK : units.stiffnessIn(K),
+                    Double.isNaN(Z) ? oldZ : units.dampingIn(Z));
+            analyzeAfterChange(() -> engine.setOscillator(id, oldK, oldZ));
         }
     }
 
@@ -1076,10 +1102,10 @@ public class PhysicalModel {
                     Check.nonNegative(op, n, "dist", len);
                 }
             }
-            engine.setLinkParams(id,
-                    Double.isNaN(K) ? engine.linkStiffness(id) : units.stiffnessIn(K),
-                    Double.isNaN(Z) ? engine.linkDamping(id) : units.dampingIn(Z),
-                    Double.isNaN(len) ? engine.linkLength(id) : len);
+            double oldK = engine.linkStiffness(id), oldZ = engine.linkDamping(id), oldL = engine.linkLength(id);
+            engine.setLinkParams(id, Double.isNaN(K) ? oldK : units.stiffnessIn(K),
+                    Double.isNaN(Z) ? oldZ : units.dampingIn(Z), Double.isNaN(len) ? oldL : len);
+            analyzeAfterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
         }
     }
 
@@ -1093,7 +1119,9 @@ public class PhysicalModel {
     void setLinkAuxOf(String op, int id, double v) {
         synchronized (lock) {
             Check.finite(op, links.name(id), "value", v);
+            double old = engine.linkAux(id);
             engine.setLinkAux(id, engine.linkKind(id) == LinkKind.ATTRACTOR3D ? units.forceIn(v) : v);
+            analyzeAfterChange(() -> engine.setLinkAux(id, old));
         }
     }
 
@@ -1330,9 +1358,17 @@ public class PhysicalModel {
             for (int id : members) {
                 checkSubsetMember(op, isMat, id, param, value);
             }
-            for (int id : members) {
-                applySubsetParam(isMat, id, param, value);
+            java.util.List<Runnable> undo = new java.util.ArrayList<>();
+            deferAnalysis++;
+            try {
+                for (int id : members) {
+                    undo.add(snapshot(isMat, id));
+                    applySubsetParam(isMat, id, param, value);
+                }
+            } finally {
+                deferAnalysis--;
             }
+            analyzeAfterChange(() -> undo.forEach(Runnable::run));
         }
     }
 
@@ -1373,6 +1409,22 @@ public class PhysicalModel {
             setLinkOf("changeParamOfSubset", id, "stiffness".equals(param) ? value : Double.NaN,
                     "damping".equals(param) ? value : Double.NaN, "dist".equals(param) ? value : Double.NaN);
         }
+    }
+
+    private Runnable snapshot(boolean isMat, int id) {
+        if (isMat) {
+            double m = engine.mass(id);
+            if (engine.massKind(id).isOscillator()) {
+                double k = engine.oscStiffness(id), z = engine.oscDamping(id);
+                return () -> {
+                    engine.setMass(id, m);
+                    engine.setOscillator(id, k, z);
+                };
+            }
+            return () -> engine.setMass(id, m);
+        }
+        double k = engine.linkStiffness(id), z = engine.linkDamping(id), l = engine.linkLength(id);
+        return () -> engine.setLinkParams(id, k, z, l);
     }
 
     /** @return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset. */
@@ -1419,6 +1471,142 @@ public class PhysicalModel {
             throw Check.fail(op, String.valueOf(subset), "no such subset");
         }
         return subset;
+    }
+
+    // =================================================================== stability and divergence
+
+    /**
+     * Sets what the automatic stability analysis does: it runs at {@link #init()} and after every
+     * parameter or topology change made after it.
+     */
+    public void setStabilityPolicy(StabilityPolicy policy) {
+        if (policy == null) {
+            throw new IllegalArgumentException("setStabilityPolicy: the policy must not be null");
+        }
+        synchronized (lock) {
+            stabilityPolicy = policy;
+            lastWarning = null;
+        }
+    }
+
+    /** @return the current stability policy (WARN by default). */
+    public StabilityPolicy getStabilityPolicy() {
+        synchronized (lock) {
+            return stabilityPolicy;
+        }
+    }
+
+    /**
+     * Sets how many contacts the analysis assumes engaged at once on one mass (12 by default: close
+     * packing in 3D; 6 suits a cubic pile, 2 a chain of beads).
+     */
+    public void setMaxContactsPerMass(int n) {
+        if (n < 0) {
+            throw new IllegalArgumentException("setMaxContactsPerMass: the count must be >= 0, got " + n);
+        }
+        synchronized (lock) {
+            maxContacts = n;
+        }
+    }
+
+    /** @return the stability analysis of the model as it is now (see {@link StabilityReport}). */
+    public StabilityReport getStabilityReport() {
+        synchronized (lock) {
+            return StabilityAnalyzer.analyze(engine.plan(), maxContacts);
+        }
+    }
+
+    /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
+    public String describeStability() {
+        synchronized (lock) {
+            StabilityReport r = getStabilityReport();
+            String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts);
+            return msg != null ? msg : String.format(java.util.Locale.ROOT,
+                    "Tactus: stable (lambda max = %.4g < 4, every stiffness could grow %.3gx)", r.lambda(),
+                    r.headroom());
+        }
+    }
+
+    private void analyzeAfterChange(Runnable undo) {
+        if (!initialized || stabilityPolicy == StabilityPolicy.OFF || deferAnalysis > 0) {
+            return;
+        }
+        StabilityReport r = StabilityAnalyzer.analyze(engine.plan(), maxContacts);
+        String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts);
+        if (msg == null) {
+            lastWarning = null;
+            return;
+        }
+        if (!r.isStable() && stabilityPolicy == StabilityPolicy.THROW) {
+            if (undo != null) {
+                undo.run();
+            }
+            throw new UnstableModelException(msg, r);
+        }
+        if (!msg.equals(lastWarning)) {
+            System.err.println(msg);
+            lastWarning = msg;
+        }
+    }
+
+    /**
+     * Registers a listener for divergence events; with a listener, stepping calls no longer throw
+     * {@link DivergenceException} but notify it once per divergence. Pass null to go back to exceptions.
+     */
+    public void setDivergenceListener(DivergenceListener listener) {
+        synchronized (lock) {
+            divergenceListener = listener;
+        }
+    }
+
+    /** Sets how often (in steps, &ge; 1, default 64) the running model is checked for divergence. */
+    public void setDivergenceCheckInterval(int steps) {
+        synchronized (lock) {
+            engine.guard().setInterval(steps);
+        }
+    }
+
+    /** Sets the largest coordinate magnitude still considered sane (default 1e12 model length units). */
+    public void setDivergenceLimit(double limit) {
+        synchronized (lock) {
+            engine.guard().setLimit(limit);
+        }
+    }
+
+    /** @return true when the model has diverged and is frozen. */
+    public boolean isDiverged() {
+        synchronized (lock) {
+            return engine.divergedMass() >= 0;
+        }
+    }
+
+    /** Lets a diverged model step again; repair its state first (positions, parameters). */
+    public void clearDivergence() {
+        synchronized (lock) {
+            engine.clearDivergence();
+            divergenceNotified = false;
+        }
+    }
+
+    private void checkDivergence() {
+        int id = engine.divergedMass();
+        if (id < 0) {
+            return;
+        }
+        if (divergenceListener != null && divergenceNotified) {
+            return;
+        }
+        engine.position(id, tmp);
+        String name = mats.name(id);
+        DivergenceException ex = new DivergenceException(engine.massKind(id).label() + " \"" + name
+                + "\" diverged at step " + engine.divergedAt() + ": position (" + tmp[0] + ", " + tmp[1] + ", "
+                + tmp[2] + "); the model is frozen until clearDivergence()", name, engine.divergedAt());
+        if (divergenceListener != null) {
+            divergenceNotified = true;
+            divergenceListener.diverged(ex);
+            return;
+        }
+        throw ex;
     }
 
     // =================================================================== energy

@@ -20,6 +20,10 @@ public final class Engine {
     private boolean topologyDirty = true;
     private boolean effectsDirty;
     private long steps;
+    private final DivergenceGuard guard = new DivergenceGuard();
+    private int countdown = guard.interval();
+    private int divergedMass = -1;
+    private long divergedAt = -1;
     private final double[] scratchA = new double[3];
     private final double[] scratchB = new double[3];
 
@@ -199,25 +203,75 @@ public final class Engine {
         return plan;
     }
 
-    /** Runs one simulation step. */
+    /** Runs one simulation step (nothing if the engine has diverged). */
     public void step() {
-        if (topologyDirty || effectsDirty) {
-            compile();
-        }
-        plan.step();
-        steps++;
+        step(1);
     }
 
-    /** Runs {@code n} simulation steps. */
-    public void step(int n) {
+    /**
+     * Runs {@code n} simulation steps. The divergence guard scans the state every
+     * {@link DivergenceGuard#interval()} steps; when it finds a diverged mass the engine stops at that
+     * step, records the mass ({@link #divergedMass()}) and runs no further step until
+     * {@link #clearDivergence()}.
+     *
+     * @return the number of steps actually run
+     */
+    public int step(int n) {
+        if (divergedMass >= 0) {
+            return 0;
+        }
         if (topologyDirty || effectsDirty) {
             compile();
         }
         StepPlan p = plan;
         for (int i = 0; i < n; i++) {
             p.step();
+            if (--countdown == 0) {
+                countdown = guard.interval();
+                int bad = guard.scan(p);
+                if (bad >= 0) {
+                    divergedMass = p.massId[bad];
+                    divergedAt = steps + i + 1;
+                    steps += i + 1;
+                    return i + 1;
+                }
+            }
         }
         steps += n;
+        return n;
+    }
+
+    /** @return the divergence guard, to tune its interval and limit. */
+    public DivergenceGuard guard() {
+        return guard;
+    }
+
+    /** Scans the state now (outside the regular interval) and records a divergence if there is one. */
+    public boolean checkNow() {
+        compile();
+        int bad = guard.scan(plan);
+        if (bad >= 0 && divergedMass < 0) {
+            divergedMass = plan.massId[bad];
+            divergedAt = steps;
+        }
+        return divergedMass >= 0;
+    }
+
+    /** @return the id of the mass found diverged, or -1 while the state is sane. */
+    public int divergedMass() {
+        return divergedMass;
+    }
+
+    /** @return the step count at which the divergence was detected, or -1. */
+    public long divergedAt() {
+        return divergedAt;
+    }
+
+    /** Lets the engine step again after a divergence (repair the state first). */
+    public void clearDivergence() {
+        divergedMass = -1;
+        divergedAt = -1;
+        countdown = guard.interval();
     }
 
     /** @return the number of steps run since this engine was created. */

@@ -1,0 +1,98 @@
+package tactus;
+
+import tactus.engine.Engine;
+import tactus.engine.LinkKind;
+import tactus.engine.StabilityReport;
+
+/** Formats stability reports as one readable line, with module names and model units. */
+final class StabilityMessages {
+    private StabilityMessages() {
+    }
+
+    /** @return a one-line description of an unstable report, or null if it is stable without negative damping. */
+    static String describe(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u, int contacts) {
+        if (r.isStable()) {
+            if (r.hasNegativeDamping()) {
+                return negativeDamping(r, e, mats, links, u);
+            }
+            return null;
+        }
+        String where;
+        double scale = StabilityReport.LIMIT / r.lambda();
+        if (r.culpritLink() >= 0 && e.isLink(r.culpritLink())) {
+            int id = r.culpritLink();
+            LinkKind k = e.linkKind(id);
+            String param;
+            double value;
+            double limit;
+            if (k == LinkKind.DAMPER3D) {
+                param = "Z";
+                value = u.dampingOut(e.linkDamping(id));
+                limit = value * scale;
+            } else if (k == LinkKind.ATTRACTOR3D) {
+                param = "attraction";
+                value = u.forceOut(e.linkAux(id));
+                limit = value * scale;
+            } else {
+                param = "K";
+                double kk = e.linkStiffness(id), zz = e.linkDamping(id), ll = e.linkLength(id);
+                limit = u.stiffnessOut(linearLimit(r, e, contacts, kk,
+                    v -> e.setLinkParams(id, v, zz, ll)));
+                value = u.stiffnessOut(kk);
+            }
+            where = k.label() + " \"" + links.name(id) + "\": " + param + " = " + fmt(value)
+                    + " is above its limit of about " + fmt(limit);
+        } else if (r.culpritMass() >= 0 && e.isMass(r.culpritMass())) {
+            int id = r.culpritMass();
+            if (e.massKind(id).isOscillator()) {
+                double kk = e.oscStiffness(id), zz = e.oscDamping(id);
+                double k = u.stiffnessOut(kk);
+                double limit = u.stiffnessOut(linearLimit(r, e, contacts, kk, v -> e.setOscillator(id, v, zz)));
+                where = e.massKind(id).label() + " \"" + mats.name(id) + "\": K = " + fmt(k)
+                        + " is above its limit of about " + fmt(limit);
+            } else {
+                where = e.massKind(id).label() + " \"" + mats.name(id) + "\": mass = " + fmt(e.mass(id))
+                        + " is below its limit of about " + fmt(e.mass(id) / scale) + " (air friction)";
+            }
+        } else {
+            where = "the model";
+        }
+        return "Tactus: unstable model: " + where + " (lambda max(M^-1 (K + 2Z)) = " + fmt(r.lambda())
+                + " must stay below 4" + (r.lambdaContacts() > 0 ? "; contacts counted as engaged add "
+                + fmt(r.lambdaContacts()) : "") + ")";
+    }
+
+    /**
+     * The value of one stiffness at which lambda reaches the limit, by linear extrapolation from a second
+     * analysis with that stiffness 1% higher (exact for a single mass; the parameter is restored).
+     */
+    private static double linearLimit(StabilityReport r, Engine e, int contacts, double value,
+                                      java.util.function.DoubleConsumer set) {
+        double probe = value * 1.01;
+        set.accept(probe);
+        double l2;
+        try {
+            l2 = tactus.engine.StabilityAnalyzer.analyze(e.plan(), contacts).lambda();
+        } finally {
+            set.accept(value);
+        }
+        double slope = (l2 - r.lambda()) / (probe - value);
+        return slope > 0 ? value + (StabilityReport.LIMIT - r.lambda()) / slope : value * StabilityReport.LIMIT / r.lambda();
+    }
+
+    private static String negativeDamping(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u) {
+        if (r.negativeDampingLink() >= 0) {
+            int id = r.negativeDampingLink();
+            return "Tactus: negative damping: " + e.linkKind(id).label() + " \"" + links.name(id) + "\": Z = "
+                    + fmt(u.dampingOut(e.linkDamping(id)))
+                    + " < 0 feeds energy in; oscillations are sustained or grow (fine if intended, e.g. bowing)";
+        }
+        int id = r.negativeDampingMass();
+        return "Tactus: negative damping: " + e.massKind(id).label() + " \"" + mats.name(id)
+                + "\": damping plus air friction < 0 feeds energy in; oscillations are sustained or grow";
+    }
+
+    private static String fmt(double v) {
+        return String.format(java.util.Locale.ROOT, "%.4g", v);
+    }
+}

@@ -1,0 +1,373 @@
+package tactus.engine;
+
+import java.util.Arrays;
+
+/**
+ * Computes the stability margin of the explicit scheme for a compiled scene, before it runs.
+ *
+ * <p>For a linear network stepped with {@code X(n+1) = 2X(n) - X(n-1) + M⁻¹F} and forces
+ * {@code F = -K X(n) - Z (X(n) - X(n-1))}, each mode with per-step stiffness k and damping z is stable
+ * iff {@code k > 0} and {@code k + 2z < 4}. With proportional damping the modes of {@code M⁻¹K} and
+ * {@code M⁻¹Z} coincide, so the network is stable iff {@code λmax(M⁻¹(K + 2Z)) < 4}; this analyser uses
+ * that criterion for every network. See docs/stability.md for the derivation.
+ *
+ * <ul>
+ *   <li>Every coordinate is treated like a scalar network with the link's axial stiffness. Under tension a
+ *       3D spring's transverse stiffness {@code K (1 - l0/d)} is at most K, so this bounds the 3D case.</li>
+ *   <li>Springs, dampers, ropes, bubbles and 1D spring-dampers are edges; edges to fixed points, input
+ *       modules, plane contacts, oscillator springs and air friction are diagonal terms.</li>
+ *   <li>An attractor counts with its largest local stiffness {@code 2|A| / dLim^3}.</li>
+ *   <li>Contacts are counted as engaged, but a mass can touch only so many neighbours at once (12 in a
+ *       close-packed 3D pile by default): their share is bounded by Gershgorin row sums with that many
+ *       of the mass's stiffest contacts, and added to the rest (Weyl's inequality keeps this an upper
+ *       bound).</li>
+ *   <li>{@code λmax} of the permanent network is computed by Lanczos iteration on the symmetric matrix
+ *       {@code M^-1/2 (K + 2Z) M^-1/2}, matrix-free on the link list, under a work budget. Gershgorin
+ *       row sums give a cheap, guaranteed upper bound alongside.</li>
+ * </ul>
+ */
+public final class StabilityAnalyzer {
+    /** Default number of contacts assumed engaged at once on one mass (close packing in 3D). */
+    public static final int DEFAULT_MAX_CONTACTS = 12;
+
+    private static final double TOLERANCE = 1e-6;
+    private static final long WORK_BUDGET = 40_000_000L;
+    private static final int MAX_ITERATIONS = 3000;
+
+    private StabilityAnalyzer() {
+    }
+
+    /** Analyses a plan with the default contact count. */
+    public static StabilityReport analyze(StepPlan p) {
+        return analyze(p, DEFAULT_MAX_CONTACTS);
+    }
+
+    /**
+     * Analyses a plan.
+     *
+     * @param p the compiled scene
+     * @param maxContacts how many contacts may be engaged at once on one mass
+     * @return the report
+     */
+    public static StabilityReport analyze(StepPlan p, int maxContacts) {
+        Network net = new Network(p);
+        double gersh = net.gershgorin();
+        double lambda;
+        StabilityReport.Method method;
+        if (net.edges == 0 && net.maxDiag() == 0) {
+            lambda = 0;
+            method = StabilityReport.Method.TRIVIAL;
+        } else {
+            double[] result = net.lanczos();
+            lambda = Math.min(result[0], gersh);
+            method = result[1] > 0 ? StabilityReport.Method.LANCZOS : StabilityReport.Method.LANCZOS_UNCONVERGED;
+        }
+        double contacts = contactBound(p, maxContacts);
+        return new StabilityReport(lambda, contacts, gersh, method, net.culpritLink, net.culpritMass,
+                net.culpritShare, net.negativeLink, net.negativeMass);
+    }
+
+    private static double coefficient(double k, double z) {
+        return k + 2 * Math.max(z, 0);
+    }
+
+    /** Gershgorin bound of M⁻¹C for contacts, with at most {@code cap} engaged per mass. */
+    private static double contactBound(StepPlan p, int cap) {
+        LinkBatch b = p.batch(LinkKind.CONTACT3D);
+        if (b == null || b.n == 0) {
+            return 0;
+        }
+        int n = p.nMass;
+        double[] cmax = new double[n];
+        int[] mobile = new int[n];
+        int[] fixed = new int[n];
+        for (int j = 0; j < b.n; j++) {
+            double c = coefficient(b.k[j], b.z[j]);
+            int a = b.a[j], d = b.b[j];
+            boolean am = p.invM[a] > 0, dm = p.invM[d] > 0;
+            cmax[a] = Math.max(cmax[a], c);
+            cmax[d] = Math.max(cmax[d], c);
+            if (dm) {
+                mobile[a]++;
+            } else {
+                fixed[a]++;
+            }
+            if (am) {
+                mobile[d]++;
+            } else {
+                fixed[d]++;
+            }
+        }
+        double worst = 0;
+        for (int i = 0; i < n; i++) {
+            if (p.invM[i] == 0) {
+                continue;
+            }
+            int m = Math.min(mobile[i], cap);
+            int f = Math.min(fixed[i], cap - m);
+            worst = Math.max(worst, p.invM[i] * cmax[i] * (2 * m + f));
+        }
+        return worst;
+    }
+
+    /** The permanent network as an edge list plus a diagonal, in force units (per step). */
+    private static final class Network {
+        final StepPlan p;
+        final int n;
+        final double[] diag;
+        final double[] sqrtInvM;
+        int edges;
+        int[] ea = new int[64];
+        int[] eb = new int[64];
+        double[] ec = new double[64];
+        int[] eid = new int[64];
+        int culpritLink = -1;
+        int culpritMass = -1;
+        double culpritShare;
+        int negativeLink = -1;
+        int negativeMass = -1;
+
+        Network(StepPlan p) {
+            this.p = p;
+            n = p.nMass;
+            diag = new double[n];
+            sqrtInvM = new double[n];
+            for (int i = 0; i < n; i++) {
+                double im = p.invM[i];
+                sqrtInvM[i] = Math.sqrt(im);
+                if (im > 0) {
+                    double zf = (1 - p.dmp[i]) / im;
+                    diag[i] += p.stf[i] / im + 2 * Math.max(zf, 0);
+                    if (zf < 0 && negativeMass < 0) {
+                        negativeMass = p.massId[i];
+                    }
+                }
+            }
+            for (LinkBatch b : p.batches) {
+                if (b == null || b.kind == LinkKind.CONTACT3D) {
+                    continue;
+                }
+                for (int j = 0; j < b.n; j++) {
+                    addLink(b, j);
+                }
+            }
+        }
+
+        private void addLink(LinkBatch b, int j) {
+            double c;
+            if (b.kind == LinkKind.ATTRACTOR3D) {
+                double l = b.len[j] > 0 ? b.len[j] : PlanCompiler.distanceOf(b, j, p);
+                c = l > 0 ? 2 * Math.abs(b.aux[j]) / (l * l * l) : 0;
+            } else {
+                double k = b.kind.hasStiffness() ? b.k[j] : 0;
+                double z = b.kind.hasDamping() ? b.z[j] : 0;
+                if (z < 0 && negativeLink < 0) {
+                    negativeLink = b.id[j];
+                }
+                c = coefficient(k, z);
+            }
+            if (c == 0) {
+                return;
+            }
+            int a = b.a[j], d = b.b[j];
+            boolean am = p.invM[a] > 0, dm = p.invM[d] > 0;
+            if (b.kind == LinkKind.PLANE_CONTACT3D || (am && !dm)) {
+                if (am) {
+                    addEdge(a, -1, c, b.id[j]);
+                }
+            } else if (dm && !am) {
+                addEdge(d, -1, c, b.id[j]);
+            } else if (am) {
+                addEdge(a, d, c, b.id[j]);
+            }
+        }
+
+        private void addEdge(int a, int b, double c, int id) {
+            if (edges == ea.length) {
+                int cap = edges * 2;
+                ea = Arrays.copyOf(ea, cap);
+                eb = Arrays.copyOf(eb, cap);
+                ec = Arrays.copyOf(ec, cap);
+                eid = Arrays.copyOf(eid, cap);
+            }
+            ea[edges] = a;
+            eb[edges] = b;
+            ec[edges] = c;
+            eid[edges] = id;
+            edges++;
+        }
+
+        double maxDiag() {
+            double m = 0;
+            for (int i = 0; i < n; i++) {
+                m = Math.max(m, diag[i] * p.invM[i]);
+            }
+            return m;
+        }
+
+        /** Gershgorin bound of M⁻¹C, and the culprit where it is reached. */
+        double gershgorin() {
+            double[] row = new double[n];
+            for (int i = 0; i < n; i++) {
+                row[i] = diag[i];
+            }
+            for (int e = 0; e < edges; e++) {
+                if (eb[e] < 0) {
+                    row[ea[e]] += ec[e];
+                } else {
+                    row[ea[e]] += 2 * ec[e];
+                    row[eb[e]] += 2 * ec[e];
+                }
+            }
+            double worst = 0;
+            int at = -1;
+            for (int i = 0; i < n; i++) {
+                double r = row[i] * p.invM[i];
+                if (r > worst) {
+                    worst = r;
+                    at = i;
+                }
+            }
+            if (at >= 0) {
+                culpritMass = p.massId[at];
+                double best = diag[at];
+                culpritShare = best / row[at];
+                for (int e = 0; e < edges; e++) {
+                    if (ea[e] == at || eb[e] == at) {
+                        double share = (eb[e] < 0 ? 1 : 2) * ec[e];
+                        if (share > best) {
+                            best = share;
+                            culpritLink = eid[e];
+                            culpritShare = share / row[at];
+                        }
+                    }
+                }
+            }
+            return worst;
+        }
+
+        /** y = M^-1/2 C M^-1/2 v. */
+        private void apply(double[] v, double[] u, double[] y) {
+            for (int i = 0; i < n; i++) {
+                u[i] = v[i] * sqrtInvM[i];
+                y[i] = diag[i] * u[i];
+            }
+            for (int e = 0; e < edges; e++) {
+                int a = ea[e], b = eb[e];
+                double c = ec[e];
+                if (b < 0) {
+                    y[a] += c * u[a];
+                } else {
+                    double t = c * (u[a] - u[b]);
+                    y[a] += t;
+                    y[b] -= t;
+                }
+            }
+            for (int i = 0; i < n; i++) {
+                y[i] *= sqrtInvM[i];
+            }
+        }
+
+        /** @return {largest Ritz value, 1 if converged else 0}. */
+        double[] lanczos() {
+            double[] q = new double[n];
+            double[] qPrev = new double[n];
+            double[] w = new double[n];
+            double[] u = new double[n];
+            long seed = 0x9E3779B97F4A7C15L;
+            double norm = 0;
+            for (int i = 0; i < n; i++) {
+                seed = seed * 6364136223846793005L + 1442695040888963407L;
+                q[i] = sqrtInvM[i] > 0 ? 0.5 + ((seed >>> 11) * 0x1.0p-53) : 0;
+                norm += q[i] * q[i];
+            }
+            if (norm == 0) {
+                return new double[] {0, 1};
+            }
+            norm = Math.sqrt(norm);
+            for (int i = 0; i < n; i++) {
+                q[i] /= norm;
+            }
+            int maxIt = (int) Math.max(30, Math.min(MAX_ITERATIONS, WORK_BUDGET / Math.max(1, 2L * n + 3L * edges)));
+            maxIt = Math.min(maxIt, 2 * n + 2);
+            double[] alpha = new double[maxIt];
+            double[] beta = new double[maxIt];
+            double theta = 0;
+            double previous = -1;
+            int k = 0;
+            boolean converged = false;
+            double betaPrev = 0;
+            for (int j = 0; j < maxIt; j++) {
+                apply(q, u, w);
+                double a = 0;
+                for (int i = 0; i < n; i++) {
+                    w[i] -= betaPrev * qPrev[i];
+                    a += q[i] * w[i];
+                }
+                double bb = 0;
+                for (int i = 0; i < n; i++) {
+                    w[i] -= a * q[i];
+                    bb += w[i] * w[i];
+                }
+                double b = Math.sqrt(bb);
+                alpha[j] = a;
+                beta[j] = b;
+                k = j + 1;
+                if (j % 5 == 4 || b <= 1e-12 * Math.abs(a)) {
+                    theta = largestTridiagonal(alpha, beta, k);
+                    if (b <= 1e-12 * Math.abs(a) || Math.abs(theta - previous) <= TOLERANCE * Math.abs(theta)) {
+                        converged = true;
+                        break;
+                    }
+                    previous = theta;
+                }
+                for (int i = 0; i < n; i++) {
+                    double t = q[i];
+                    q[i] = w[i] / b;
+                    qPrev[i] = t;
+                }
+                betaPrev = b;
+            }
+            if (!converged) {
+                theta = largestTridiagonal(alpha, beta, k);
+            }
+            return new double[] {theta, converged ? 1 : 0};
+        }
+    }
+
+    /** Largest eigenvalue of the symmetric tridiagonal matrix (alpha, beta off-diagonal), by bisection. */
+    static double largestTridiagonal(double[] alpha, double[] beta, int k) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < k; i++) {
+            double r = (i > 0 ? Math.abs(beta[i - 1]) : 0) + (i < k - 1 ? Math.abs(beta[i]) : 0);
+            lo = Math.min(lo, alpha[i] - r);
+            hi = Math.max(hi, alpha[i] + r);
+        }
+        for (int it = 0; it < 200 && hi - lo > 1e-15 * Math.max(1, Math.abs(hi)); it++) {
+            double mid = 0.5 * (lo + hi);
+            if (countBelow(alpha, beta, k, mid) < k) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return hi;
+    }
+
+    /** Sturm count: the number of eigenvalues of the tridiagonal matrix below x. */
+    private static int countBelow(double[] alpha, double[] beta, int k, double x) {
+        int count = 0;
+        double d = 1;
+        for (int i = 0; i < k; i++) {
+            double b2 = i > 0 ? beta[i - 1] * beta[i - 1] : 0;
+            d = alpha[i] - x - (i > 0 ? b2 / d : 0);
+            if (d == 0) {
+                d = 1e-300;
+            }
+            if (d < 0) {
+                count++;
+            }
+        }
+        return count;
+    }
+}
