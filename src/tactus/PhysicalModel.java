@@ -39,13 +39,13 @@ public class PhysicalModel {
     private final double[] tmp = new double[3];
     private int simRate;
     private int dispRate;
-    private double residue;
+    /** Fractional step carried between frames, in units of 1/dispRate steps (exact integer arithmetic). */
+    private long residue;
     private double gravity;
     private final Vect3D gravityDir = new Vect3D(0, 0, 1);
     private double friction;
     private Mass[] massHandles = new Mass[16];
     private Interaction[] linkHandles = new Interaction[16];
-    private int anonymous;
     private boolean initialized;
     private StabilityPolicy stabilityPolicy = StabilityPolicy.WARN;
     private int maxContacts = StabilityAnalyzer.DEFAULT_MAX_CONTACTS;
@@ -128,16 +128,21 @@ public class PhysicalModel {
             throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
         }
         synchronized (lock) {
-            double ratio = (double) simRate / rate;
-            simRate = rate;
-            residue = 0;
-            if (units.isReal() && ratio != 1.0) {
-                rescale(ratio);
-            }
-            units.setRate(rate);
-            applyMedium();
-            analyzeAfterChange(null);
+            int old = simRate;
+            applyRate(rate);
+            analyzeAfterChange(() -> applyRate(old));
         }
+    }
+
+    private void applyRate(int rate) {
+        double ratio = (double) simRate / rate;
+        simRate = rate;
+        residue = 0;
+        if (units.isReal() && ratio != 1.0) {
+            rescale(ratio);
+        }
+        units.setRate(rate);
+        applyMedium();
     }
 
     private void rescale(double ratio) {
@@ -154,7 +159,7 @@ public class PhysicalModel {
                 engine.setLinkAux(id, engine.linkAux(id) * r2);
             }
         }
-        engine.scaleVelocities(ratio);
+        engine.rescaleTime(ratio);
     }
 
     /** @return the display rate, in frames per second. */
@@ -196,9 +201,9 @@ public class PhysicalModel {
      */
     public int draw_physics() {
         synchronized (lock) {
-            double exact = (double) simRate / dispRate + residue;
-            int n = (int) Math.floor(exact);
-            residue = exact - n;
+            long total = simRate + residue;
+            int n = (int) (total / dispRate);
+            residue = total % dispRate;
             engine.step(n);
             checkDivergence();
             return n;
@@ -262,12 +267,14 @@ public class PhysicalModel {
     /** Sets the gravity direction ("up"); it is normalised. Masses accelerate along its opposite. */
     public void setGravityDirection(Vect3D direction) {
         Check.vector("setGravityDirection", "gravity", "direction", direction);
-        double n = direction.norm();
-        if (n == 0) {
+        double big = Math.max(Math.abs(direction.x), Math.max(Math.abs(direction.y), Math.abs(direction.z)));
+        if (big == 0) {
             throw Check.fail("setGravityDirection", "gravity", "direction must not be the zero vector");
         }
+        Vect3D unit = new Vect3D(direction).div(big);
+        unit.div(unit.norm());
         synchronized (lock) {
-            gravityDir.set(direction).div(n);
+            gravityDir.set(unit);
             applyMedium();
         }
     }
@@ -400,7 +407,9 @@ public class PhysicalModel {
                 engine.setInputWeight(id, 1.0 / smoothing);
             }
             mats.add(name, id);
-            return registerMass(id, kind);
+            Mass h = registerMass(id, kind);
+            analyzeAfterChange(() -> removeMassId(id));
+            return h;
         }
     }
 
@@ -523,10 +532,8 @@ public class PhysicalModel {
 
     private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2,
                                 double K, double Z, double len, double aux, int axis) {
-        String label = name == null ? kind.label() + "#" + (anonymous + 1) : name;
-        if (name != null) {
-            Check.name(op, name);
-        }
+        Check.name(op, name);
+        String label = name;
         Check.finite(op, label, "K", K);
         Check.finite(op, label, "Z", Z);
         if (kind == LinkKind.PLANE_CONTACT3D) {
@@ -549,9 +556,6 @@ public class PhysicalModel {
             int b = kind.isSingleMass() ? a : requireMass(op, label, m2);
             if (!kind.isSingleMass() && a == b) {
                 throw Check.fail(op, label, "cannot link mass \"" + m1 + "\" to itself");
-            }
-            if (name == null) {
-                anonymous++;
             }
             int id;
             if (kind == LinkKind.PLANE_CONTACT3D) {
@@ -805,6 +809,7 @@ public class PhysicalModel {
         Check.vector("setMatVelocity", name, "vel", vel);
         synchronized (lock) {
             int id = massId("setMatVelocity", name);
+            requireInertial("setMatVelocity", id);
             engine.position(id, tmp);
             engine.setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - units.velocityIn(vel.x),
                     tmp[1] - units.velocityIn(vel.y), tmp[2] - units.velocityIn(vel.z));
@@ -914,6 +919,20 @@ public class PhysicalModel {
         }
     }
 
+    /** @return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m). */
+    public double getMatStiffnessAt(int i) {
+        synchronized (lock) {
+            return getMatStiffness(mats.name(massAt("getMatStiffnessAt", i)));
+        }
+    }
+
+    /** @return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m). */
+    public double getMatDampingAt(int i) {
+        synchronized (lock) {
+            return getMatDamping(mats.name(massAt("getMatDampingAt", i)));
+        }
+    }
+
     /** @return the internal stiffness of an oscillator. */
     public double getMatStiffness(String name) {
         synchronized (lock) {
@@ -1001,6 +1020,27 @@ public class PhysicalModel {
     public double getLinkStiffness(String name) {
         synchronized (lock) {
             return units.stiffnessOut(engine.linkStiffness(linkId("getLinkStiffness", name)));
+        }
+    }
+
+    /** @return the stiffness of the interaction at an index (REAL_UNITS: N/m). */
+    public double getLinkStiffnessAt(int i) {
+        synchronized (lock) {
+            return units.stiffnessOut(engine.linkStiffness(linkAt("getLinkStiffnessAt", i)));
+        }
+    }
+
+    /** @return the damping of the interaction at an index (REAL_UNITS: N·s/m). */
+    public double getLinkDampingAt(int i) {
+        synchronized (lock) {
+            return units.dampingOut(engine.linkDamping(linkAt("getLinkDampingAt", i)));
+        }
+    }
+
+    /** @return the length parameter of the interaction at an index. */
+    public double getLinkDRestAt(int i) {
+        synchronized (lock) {
+            return engine.linkLength(linkAt("getLinkDRestAt", i));
         }
     }
 
@@ -1096,6 +1136,9 @@ public class PhysicalModel {
                 }
             }
             if (!Double.isNaN(len)) {
+                if (!kind.hasLength() && kind != LinkKind.ATTRACTOR3D) {
+                    throw Check.fail(op, n, "a " + kind.label() + " has no length parameter");
+                }
                 if (kind == LinkKind.PLANE_CONTACT3D) {
                     Check.finite(op, n, "dist", len);
                 } else {
@@ -1146,6 +1189,9 @@ public class PhysicalModel {
             int id = massId("getHapticForce", name);
             requireInput("getHapticForce", id);
             engine.takeForce(id, tmp);
+            if (engine.massKind(id) == MassKind.POS_INPUT3D) {
+                return new Vect3D();
+            }
             return new Vect3D(units.forceOut(tmp[0]), units.forceOut(tmp[1]), units.forceOut(tmp[2]));
         }
     }
@@ -1243,7 +1289,7 @@ public class PhysicalModel {
     public void createMatSubset(String subset) {
         Check.name("createMatSubset", subset);
         synchronized (lock) {
-            if (!matSubsets.create(subset)) {
+            if (linkSubsets.exists(subset) || !matSubsets.create(subset)) {
                 throw Check.fail("createMatSubset", subset, "a mass subset with this name already exists");
             }
         }
@@ -1253,7 +1299,7 @@ public class PhysicalModel {
     public void createLinkSubset(String subset) {
         Check.name("createLinkSubset", subset);
         synchronized (lock) {
-            if (!linkSubsets.create(subset)) {
+            if (matSubsets.exists(subset) || !linkSubsets.create(subset)) {
                 throw Check.fail("createLinkSubset", subset, "a link subset with this name already exists");
             }
         }

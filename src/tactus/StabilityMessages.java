@@ -41,7 +41,8 @@ final class StabilityMessages {
                 value = u.stiffnessOut(kk);
             }
             where = k.label() + " \"" + links.name(id) + "\": " + param + " = " + fmt(value)
-                    + " is above its limit of about " + fmt(limit);
+                    + (limit > 0 ? " is above its limit of about " + fmt(limit)
+                    : " is too high, and lowering it alone cannot make the model stable");
         } else if (r.culpritMass() >= 0 && e.isMass(r.culpritMass())) {
             int id = r.culpritMass();
             if (e.massKind(id).isOscillator()) {

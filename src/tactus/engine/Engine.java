@@ -481,8 +481,7 @@ public final class Engine {
         } else {
             masses.setPending(id, x, y, z, prevX, prevY, prevZ);
         }
-        if (masses.kind[id].isFixed() || masses.kind[id].isOscillator()) {
-            // fixed points and oscillators keep their anchor where they are put
+        if (masses.kind[id].isFixed()) {
             masses.setRest(id, x, y, z);
             refreshMass(id);
         }
@@ -545,11 +544,19 @@ public final class Engine {
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
-    /** Multiplies every mass's displacement per step by {@code ratio}, keeping positions. */
-    public void scaleVelocities(double ratio) {
+    /**
+     * Re-expresses the state for a new step duration: with {@code ratio = oldRate / newRate}, every
+     * displacement per step (velocity) is multiplied by {@code ratio} and every pending or accumulated force
+     * by {@code ratio^2}, keeping positions, so velocities in units per second and forces in newtons are kept.
+     */
+    public void rescaleTime(double ratio) {
         compile();
         StepPlan p = plan;
+        double r2 = ratio * ratio;
         for (int s = 0; s < p.nMass; s++) {
+            p.fx[s] *= r2;
+            p.fy[s] *= r2;
+            p.fz[s] *= r2;
             p.px[s] = p.x[s] - (p.x[s] - p.px[s]) * ratio;
             p.py[s] = p.y[s] - (p.y[s] - p.py[s]) * ratio;
             p.pz[s] = p.z[s] - (p.z[s] - p.pz[s]) * ratio;

@@ -62,28 +62,53 @@ public final class StabilityAnalyzer {
             lambda = Math.min(result[0], gersh);
             method = result[1] > 0 ? StabilityReport.Method.LANCZOS : StabilityReport.Method.LANCZOS_UNCONVERGED;
         }
-        double contacts = contactBound(p, maxContacts);
-        return new StabilityReport(lambda, contacts, gersh, method, net.culpritLink, net.culpritMass,
-                net.culpritShare, net.negativeLink, net.negativeMass);
+        double[] contacts = contactBound(p, maxContacts);
+        int culpritLink = net.culpritLink;
+        int culpritMass = net.culpritMass;
+        double share = net.culpritShare;
+        if (contacts[0] > lambda) {
+            culpritLink = (int) contacts[1];
+            culpritMass = (int) contacts[2];
+            share = 1.0;
+        }
+        int negative = net.negativeLink >= 0 ? net.negativeLink : (int) contacts[3];
+        return new StabilityReport(lambda, contacts[0], gersh, method, culpritLink, culpritMass, share, negative,
+                net.negativeMass);
     }
 
     private static double coefficient(double k, double z) {
         return k + 2 * Math.max(z, 0);
     }
 
-    /** Gershgorin bound of M⁻¹C for contacts, with at most {@code cap} engaged per mass. */
-    private static double contactBound(StepPlan p, int cap) {
+    /**
+     * Gershgorin bound of M⁻¹C for contacts, with at most {@code cap} engaged per mass.
+     *
+     * @return {bound, id of the stiffest contact at the worst mass, id of that mass, first negative-damping
+     *     contact id} (ids are -1 when absent)
+     */
+    private static double[] contactBound(StepPlan p, int cap) {
         LinkBatch b = p.batch(LinkKind.CONTACT3D);
         if (b == null || b.n == 0) {
-            return 0;
+            return new double[] {0, -1, -1, -1};
         }
+        int negative = -1;
         int n = p.nMass;
         double[] cmax = new double[n];
         int[] mobile = new int[n];
         int[] fixed = new int[n];
+        int[] stiffest = new int[n];
         for (int j = 0; j < b.n; j++) {
             double c = coefficient(b.k[j], b.z[j]);
+            if (b.z[j] < 0 && negative < 0) {
+                negative = b.id[j];
+            }
             int a = b.a[j], d = b.b[j];
+            if (c >= cmax[a]) {
+                stiffest[a] = b.id[j];
+            }
+            if (c >= cmax[d]) {
+                stiffest[d] = b.id[j];
+            }
             boolean am = p.invM[a] > 0, dm = p.invM[d] > 0;
             cmax[a] = Math.max(cmax[a], c);
             cmax[d] = Math.max(cmax[d], c);
@@ -99,15 +124,20 @@ public final class StabilityAnalyzer {
             }
         }
         double worst = 0;
+        int at = -1;
         for (int i = 0; i < n; i++) {
             if (p.invM[i] == 0) {
                 continue;
             }
             int m = Math.min(mobile[i], cap);
             int f = Math.min(fixed[i], cap - m);
-            worst = Math.max(worst, p.invM[i] * cmax[i] * (2 * m + f));
+            double r = p.invM[i] * cmax[i] * (2 * m + f);
+            if (r > worst) {
+                worst = r;
+                at = i;
+            }
         }
-        return worst;
+        return new double[] {worst, at >= 0 ? stiffest[at] : -1, at >= 0 ? p.massId[at] : -1, negative};
     }
 
     /** The permanent network as an edge list plus a diagonal, in force units (per step). */
