@@ -481,9 +481,30 @@ public final class Engine {
         } else {
             masses.setPending(id, x, y, z, prevX, prevY, prevZ);
         }
+        if (s >= 0) {
+            resetLinkHistory(s);
+        }
         if (masses.kind[id].isFixed()) {
             masses.setRest(id, x, y, z);
             refreshMass(id);
+        }
+    }
+
+    /**
+     * After a mass was moved by hand, makes its links forget the distance they saw before, so that their
+     * dampers do not mistake the jump for a velocity: tracked links take the current distance as their
+     * previous one, and conditional links (contacts, ropes, bubbles) start again as inactive.
+     */
+    private void resetLinkHistory(int slot) {
+        for (LinkBatch b : plan.batches) {
+            if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
+                continue;
+            }
+            for (int j = 0; j < b.n; j++) {
+                if (b.a[j] == slot || b.b[j] == slot) {
+                    b.dp[j] = b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, plan);
+                }
+            }
         }
     }
 

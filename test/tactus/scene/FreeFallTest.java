@@ -132,4 +132,19 @@ class FreeFallTest {
             assertEquals(vInf, pm.getMatVelocity("m").z, tol, "terminal velocity at fs=" + fs);
         }
     }
+
+    // An Osc3D under gravity settles where its spring balances the weight: M g / K below its rest point, in
+    // metres, at any rate (the per-step equilibrium Y = -(g/fs^2) / (K/(M fs^2)) does not depend on fs).
+    @Test
+    void oscillatorSagsByMgOverK() {
+        for (int fs : new int[] {1000, 8000}) {
+            PhysicalModel pm = new PhysicalModel(fs, 30, paramSystem.REAL_UNITS);
+            pm.setGravity(G);
+            pm.addOsc3D("o", 0.2, 50, 2, new Vect3D(0, 0, 1), new Vect3D(0, 0, 0));
+            pm.init();
+            pm.computeNSteps(5 * fs);   // decay time 2 M / Z = 0.2 s: 25 time constants
+            assertEquals(1 - 0.2 * G / 50, pm.getMatPosition("o").z, 1e-10, "fs=" + fs);
+            assertEquals(0.0, pm.getMatVelocity("o").z, 1e-8);
+        }
+    }
 }

@@ -3,7 +3,6 @@ package tactus.scene;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.function.Consumer;
 import org.junit.jupiter.api.Test;
 import tactus.Osc3D;
 import tactus.PhysicalModel;

@@ -90,4 +90,42 @@ class SimRateChangeTest {
         // the one-step force term is about 1e-4 m here; 1e-12 m is round-off
         assertEquals(expected, actual, 1e-12, "first step after setSimRate(2000)");
     }
+
+    // The haptic accumulator holds a force summed in per-step units; across a rate change it must still read
+    // back in newtons: 7 steps of 100 N before the switch and 3 after give 1000 N.
+    @Test
+    void accumulatedHapticForceKeepsItsNewtons() {
+        PhysicalModel pm = new PhysicalModel(1000, 30, paramSystem.REAL_UNITS);
+        pm.addHapticInput3D("h", new Vect3D(0, 0, 0), 1);
+        pm.addGround3D("g", new Vect3D(0, 0, 1));
+        pm.addSpring3D("s", 0.5, 200, "h", "g");
+        pm.init();
+        pm.computeNSteps(7);
+        pm.setSimRate(4000);
+        pm.computeNSteps(3);
+        assertEquals(1000.0, pm.getHapticForce("h").z, 1e-9);
+    }
+
+    // In ALGO_UNITS coefficients are per step, so changing the rate changes nothing per step: the trajectory
+    // in steps is bit-identical to an untouched model (only the velocity reading in units/s scales with fs).
+    @Test
+    void algoUnitsRateChangeKeepsThePerStepDynamics() {
+        PhysicalModel a = new PhysicalModel(1000, 30);
+        PhysicalModel b = new PhysicalModel(1000, 30);
+        for (PhysicalModel pm : new PhysicalModel[] {a, b}) {
+            pm.setGravity(1e-7);
+            pm.setFriction(1e-4);
+            pm.addGround3D("g", new Vect3D(0, 0, 0));
+            pm.addMass3D("m", 1, new Vect3D(0, 0, 1.1), new Vect3D(0, 0, 0));
+            pm.addSpringDamper3D("s", 1, 0.1, 0.01, "m", "g");
+            pm.init();
+            pm.computeNSteps(100);
+        }
+        double v = a.getMatVelocity("m").z;
+        b.setSimRate(3000);
+        assertEquals(3 * v, b.getMatVelocity("m").z, 1e-12 * Math.abs(v), "per-step displacement kept");
+        a.computeNSteps(2000);
+        b.computeNSteps(2000);
+        assertEquals(a.getMatPosition("m").z, b.getMatPosition("m").z, 0.0);
+    }
 }

@@ -3,6 +3,7 @@ package tactus.scene;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.function.DoubleUnaryOperator;
 import org.junit.jupiter.api.Test;
 import tactus.Attractor3D;
 import tactus.PhysicalModel;
@@ -21,25 +22,17 @@ class UnitsEquivalenceTest {
     private static final int FS = 1000;
     private static final String[] MASSES = {"m1", "m2", "m3", "m4", "m5", "o"};
 
-    private static final double fs2 = (double) FS * FS;
-    private static boolean real;
-
-    /** Stiffness, gravity and attraction: divided by fs^2 for the ALGO model. */
-    private static double s2(double v) {
-        return real ? v : v / fs2;
-    }
-
-    /** Damping and friction: divided by fs for the ALGO model. */
-    private static double s1(double v) {
-        return real ? v : v / FS;
-    }
+    private static final double FS2 = (double) FS * FS;
 
     /** A chain of spring-dampers with an oscillator, an attractor, a contact and a floor. */
     private static PhysicalModel network(paramSystem sys) {
-        real = sys == paramSystem.REAL_UNITS;
+        boolean real = sys == paramSystem.REAL_UNITS;
+        // stiffness, gravity and attraction are divided by fs^2 for the ALGO model, damping and friction by fs
+        DoubleUnaryOperator s2 = v -> real ? v : v / FS2;
+        DoubleUnaryOperator s1 = v -> real ? v : v / FS;
         PhysicalModel pm = new PhysicalModel(FS, 30, sys);
-        pm.setGravity(s2(9.81));
-        pm.setFriction(s1(0.001));
+        pm.setGravity(s2.applyAsDouble(9.81));
+        pm.setFriction(s1.applyAsDouble(0.001));
         pm.addGround3D("g0", new Vect3D(0, 0, 0));
         for (int i = 1; i <= 5; i++) {
             pm.addMass3D("m" + i, 0.01 + 0.002 * i, new Vect3D(0.1 * i, 0.01 * (i % 2), 0.005 * i),
@@ -49,13 +42,14 @@ class UnitsEquivalenceTest {
         for (int i = 0; i < 6; i++) {
             String a = i == 0 ? "g0" : "m" + i;
             String b = i == 5 ? "g6" : "m" + (i + 1);
-            pm.addSpringDamper3D("sd" + i, 0.1, s2(200), s1(0.05), a, b);
+            pm.addSpringDamper3D("sd" + i, 0.1, s2.applyAsDouble(200), s1.applyAsDouble(0.05), a, b);
         }
-        pm.addOsc3D("o", 0.02, s2(50), s1(0.01), new Vect3D(0.3, 0.1, 0), new Vect3D(0, 0.5, 0));
-        pm.addSpringDamper3D("so", 0.1, s2(100), s1(0.02), "o", "m3");
-        pm.addAttractor3D("att", 0.05, s2(0.01), "m1", "o");
-        pm.addContact3D("c", 0.08, s2(500), s1(0.05), "m5", "o");
-        pm.addPlaneContact("floor", 0, s2(1000), s1(0.1), 2, -0.01, "m2");
+        pm.addOsc3D("o", 0.02, s2.applyAsDouble(50), s1.applyAsDouble(0.01), new Vect3D(0.3, 0.1, 0),
+                new Vect3D(0, 0.5, 0));
+        pm.addSpringDamper3D("so", 0.1, s2.applyAsDouble(100), s1.applyAsDouble(0.02), "o", "m3");
+        pm.addAttractor3D("att", 0.05, s2.applyAsDouble(0.01), "m1", "o");
+        pm.addContact3D("c", 0.08, s2.applyAsDouble(500), s1.applyAsDouble(0.05), "m5", "o");
+        pm.addPlaneContact("floor", 0, s2.applyAsDouble(1000), s1.applyAsDouble(0.1), 2, -0.01, "m2");
         pm.init();
         return pm;
     }
@@ -75,14 +69,14 @@ class UnitsEquivalenceTest {
                 assertEquals(pa.y, pr.y, 1e-12, m + " y at step " + n);
                 assertEquals(pa.z, pr.z, 1e-12, m + " z at step " + n);
                 Vect3D fr = real.getMatForce(m);
-                Vect3D fa = algo.getMatForce(m).mult(fs2);
+                Vect3D fa = algo.getMatForce(m).mult(FS2);
                 // a net force is a sum of link forces of up to ~2 N that largely cancel: compare to that scale
                 double scale = 1e-12 * 2;
                 assertEquals(fa.x, fr.x, scale, m + " force x (N) at step " + n);
                 assertEquals(fa.z, fr.z, scale, m + " force z (N) at step " + n);
             }
         }
-        double e = algo.getTotalEnergy() * fs2;
+        double e = algo.getTotalEnergy() * FS2;
         assertEquals(e, real.getTotalEnergy(), 1e-12 * Math.abs(e), "energy in joules");
         // the model did something: the chain moved well beyond round-off
         assertTrue(Math.abs(real.getMatPosition("m3").y) > 1e-4);
