@@ -20,6 +20,7 @@ public final class Engine {
     private boolean topologyDirty = true;
     private boolean effectsDirty;
     private long steps;
+    private boolean stencils = true;
     private final DivergenceGuard guard = new DivergenceGuard();
     private int countdown = guard.interval();
     private int divergedMass = -1;
@@ -185,10 +186,34 @@ public final class Engine {
 
     // ------------------------------------------------------------------ compiling and stepping
 
+    /**
+     * Chooses whether dense blocks of spring-family links (chains, mesh rows and columns) are stepped as
+     * vectorisable stencil runs (the default) or all through index arrays. Both give the same physics; the
+     * force sums on a mass are added in a different order, so results differ by round-off only.
+     */
+    public void setStencilRuns(boolean enabled) {
+        if (enabled != stencils) {
+            stencils = enabled;
+            topologyDirty = true;
+        }
+    }
+
+    /** @return the number of stencil runs in the compiled plan (0 when the scene has no dense link block). */
+    public int stencilRunCount() {
+        compile();
+        int n = 0;
+        for (LinkBatch b : plan.batches) {
+            if (b != null) {
+                n += b.runs.length;
+            }
+        }
+        return n;
+    }
+
     /** Compiles the scene now if its topology or effects changed since the last compile. */
     public void compile() {
         if (topologyDirty || plan == null) {
-            plan = PlanCompiler.compile(masses, links, medium, plan);
+            plan = PlanCompiler.compile(masses, links, medium, plan, stencils);
             topologyDirty = false;
             effectsDirty = false;
         } else if (effectsDirty) {
@@ -502,7 +527,7 @@ public final class Engine {
             }
             for (int j = 0; j < b.n; j++) {
                 if (b.a[j] == slot || b.b[j] == slot) {
-                    b.dp[j] = b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, plan);
+                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, plan));
                 }
             }
         }
@@ -587,10 +612,10 @@ public final class Engine {
                 continue;
             }
             for (int j = 0; j < b.n; j++) {
-                boolean tracked = b.kind == LinkKind.SPRING_DAMPER1D || b.dp[j] >= 0;
+                boolean tracked = b.kind == LinkKind.SPRING_DAMPER1D || b.prev(j) >= 0;
                 if (tracked && b.kind != LinkKind.PLANE_CONTACT3D && b.kind != LinkKind.ATTRACTOR3D) {
                     double d = PlanCompiler.distanceOf(b, j, p);
-                    b.dp[j] = d - (d - b.dp[j]) * ratio;
+                    b.setPrev(j, d - (d - b.prev(j)) * ratio);
                 }
             }
         }

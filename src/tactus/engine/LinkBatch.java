@@ -18,6 +18,12 @@ final class LinkBatch {
     final double[] dp;
     /** For plane contacts: links [axisStart[i], axisStart[i+1]) act on axis i. */
     final int[] axisStart = new int[4];
+    /** Links [0, nIrregular) are stepped with index arrays; the rest belong to {@link #runs}. */
+    int nIrregular;
+    /** Structured blocks of this batch (see {@link StencilRun}); empty for most kinds. */
+    StencilRun[] runs = new StencilRun[0];
+    /** For each link, the index of its run, or -1 when it is irregular. */
+    final int[] runOf;
 
     LinkBatch(LinkKind kind, int n) {
         this.kind = kind;
@@ -30,5 +36,39 @@ final class LinkBatch {
         len = new double[n];
         aux = new double[n];
         dp = new double[n];
+        runOf = new int[n];
+        java.util.Arrays.fill(runOf, -1);
+        nIrregular = n;
+    }
+
+    /** @return the damper's previous distance of link j (a negative value marks an inactive conditional link). */
+    double prev(int j) {
+        int r = runOf[j];
+        return r < 0 ? dp[j] : runs[r].dp[a[j]];
+    }
+
+    /** Sets the damper's previous distance of link j. */
+    void setPrev(int j, double v) {
+        int r = runOf[j];
+        if (r < 0) {
+            dp[j] = v;
+        } else {
+            runs[r].dp[a[j]] = v;
+        }
+    }
+
+    /** Sets the parameters of link j, in the batch and in its run if it has one. */
+    void setParams(int j, double kk, double zz, double length, double auxValue) {
+        k[j] = kk;
+        z[j] = zz;
+        len[j] = length;
+        aux[j] = auxValue;
+        int r = runOf[j];
+        if (r >= 0) {
+            StencilRun run = runs[r];
+            run.k[a[j]] = kk;
+            run.z[a[j]] = zz;
+            run.l0[a[j]] = length;
+        }
     }
 }

@@ -51,7 +51,7 @@ final class LinkKernels {
             final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
             final int[] ia = b.a, ib = b.b;
             final double[] k = b.k, l0 = b.len;
-            for (int j = 0, n = b.n; j < n; j++) {
+            for (int j = 0, n = b.nIrregular; j < n; j++) {
                 int a = ia[j], c = ib[j];
                 double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
                 double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
@@ -81,7 +81,7 @@ final class LinkKernels {
             final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
             final int[] ia = b.a, ib = b.b;
             final double[] zz = b.z, dp = b.dp;
-            for (int j = 0, n = b.n; j < n; j++) {
+            for (int j = 0, n = b.nIrregular; j < n; j++) {
                 int a = ia[j], c = ib[j];
                 double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
                 double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
@@ -112,7 +112,7 @@ final class LinkKernels {
             final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
             final int[] ia = b.a, ib = b.b;
             final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
-            for (int j = 0, n = b.n; j < n; j++) {
+            for (int j = 0, n = b.nIrregular; j < n; j++) {
                 int a = ia[j], c = ib[j];
                 double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
                 double d = Math.sqrt(dx * dx + dy * dy + dz * dz);

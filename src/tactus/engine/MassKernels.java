@@ -38,7 +38,10 @@ final class MassKernels {
         }
     }
 
-    /** Mass3D with neither friction nor gravity: X(n+1) = 2X(n) - X(n-1) + F/M. */
+    /**
+     * Mass3D with neither friction nor gravity: X(n+1) = 2X(n) - X(n-1) + F/M. Each coordinate is a
+     * separate loop whose arrays share one index, the form JDK 17's C2 vectorises.
+     */
     static final class Free3D implements Kernel {
         private final StepPlan p;
         private final int s;
@@ -52,25 +55,22 @@ final class MassKernels {
 
         @Override
         public void run() {
-            final double[] x = p.x, y = p.y, z = p.z, px = p.px, py = p.py, pz = p.pz;
-            final double[] fx = p.fx, fy = p.fy, fz = p.fz, im = p.invM;
+            free(p.x, p.px, p.fx, p.invM, s, e);
+            free(p.y, p.py, p.fy, p.invM, s, e);
+            free(p.z, p.pz, p.fz, p.invM, s, e);
+        }
+
+        private static void free(double[] x, double[] px, double[] f, double[] im, int s, int e) {
             for (int i = s; i < e; i++) {
-                double m = im[i];
-                double xi = x[i], yi = y[i], zi = z[i];
-                x[i] = xi + (xi - px[i]) + fx[i] * m;
-                y[i] = yi + (yi - py[i]) + fy[i] * m;
-                z[i] = zi + (zi - pz[i]) + fz[i] * m;
+                double xi = x[i];
+                x[i] = xi + (xi - px[i]) + f[i] * im[i];
                 px[i] = xi;
-                py[i] = yi;
-                pz[i] = zi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
+                f[i] = 0;
             }
         }
     }
 
-    /** Mass3D with air friction and gravity. */
+    /** Mass3D with air friction and gravity, one loop per coordinate. */
     static final class Medium3D implements Kernel {
         private final StepPlan p;
         private final int s;
@@ -84,21 +84,19 @@ final class MassKernels {
 
         @Override
         public void run() {
-            final double[] x = p.x, y = p.y, z = p.z, px = p.px, py = p.py, pz = p.pz;
-            final double[] fx = p.fx, fy = p.fy, fz = p.fz, im = p.invM, d = p.dmp;
-            final double gx = p.medium.gx, gy = p.medium.gy, gz = p.medium.gz;
+            Medium m = p.medium;
+            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, s, e);
+            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, s, e);
+            damped(p.z, p.pz, p.fz, p.invM, p.dmp, m.gz, s, e);
+        }
+
+        private static void damped(double[] x, double[] px, double[] f, double[] im, double[] d, double g,
+                                   int s, int e) {
             for (int i = s; i < e; i++) {
-                double m = im[i], r = d[i];
-                double xi = x[i], yi = y[i], zi = z[i];
-                x[i] = xi + r * (xi - px[i]) + fx[i] * m + gx;
-                y[i] = yi + r * (yi - py[i]) + fy[i] * m + gy;
-                z[i] = zi + r * (zi - pz[i]) + fz[i] * m + gz;
+                double xi = x[i];
+                x[i] = xi + d[i] * (xi - px[i]) + f[i] * im[i] + g;
                 px[i] = xi;
-                py[i] = yi;
-                pz[i] = zi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
+                f[i] = 0;
             }
         }
     }

@@ -11,7 +11,7 @@ final class PlanCompiler {
     private PlanCompiler() {
     }
 
-    static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old) {
+    static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old, boolean stencils) {
         int kinds = MassKind.values().length;
         int[] counts = new int[kinds];
         for (int id = 0; id < mt.count; id++) {
@@ -29,7 +29,7 @@ final class PlanCompiler {
         for (int id = 0; id < mt.count; id++) {
             newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
         }
-        LinkBatch[] batches = buildBatches(lt, newSlot);
+        LinkBatch[] batches = buildBatches(lt, newSlot, stencils);
         StepPlan p = new StepPlan(n, start, batches, medium);
         for (int id = 0; id < mt.count; id++) {
             int s = newSlot[id];
@@ -98,7 +98,7 @@ final class PlanCompiler {
         }
     }
 
-    private static LinkBatch[] buildBatches(LinkTable lt, int[] massSlot) {
+    private static LinkBatch[] buildBatches(LinkTable lt, int[] massSlot, boolean stencils) {
         LinkKind[] kinds = LinkKind.values();
         int[] counts = new int[kinds.length];
         for (int id = 0; id < lt.count; id++) {
@@ -141,6 +141,12 @@ final class PlanCompiler {
             b.a[j] = massSlot[lt.a[id]];
             b.b[j] = k.isSingleMass() ? b.a[j] : massSlot[lt.b[id]];
         }
+        for (LinkKind k : kinds) {
+            LinkBatch b = batches[k.ordinal()];
+            if (b != null && stencils && StencilPlanner.eligible(k)) {
+                batches[k.ordinal()] = StencilPlanner.organize(b);
+            }
+        }
         return batches;
     }
 
@@ -154,9 +160,9 @@ final class PlanCompiler {
                 fillLink(b, j, lt, id);
                 int o = lt.slot[id];
                 if (old != null && o >= 0 && old.batches[b.kind.ordinal()] != null) {
-                    b.dp[j] = old.batches[b.kind.ordinal()].dp[o];
+                    b.setPrev(j, old.batches[b.kind.ordinal()].prev(o));
                 } else {
-                    b.dp[j] = initialPrevious(b, j, p);
+                    b.setPrev(j, initialPrevious(b, j, p));
                 }
             }
             for (int j = 0; j < b.n; j++) {
@@ -167,10 +173,7 @@ final class PlanCompiler {
 
     /** Writes the parameters of one link into its batch slot. */
     static void fillLink(LinkBatch b, int j, LinkTable lt, int id) {
-        b.k[j] = lt.stiffness[id];
-        b.z[j] = lt.damping[id];
-        b.len[j] = lt.length[id];
-        b.aux[j] = lt.aux[id];
+        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.aux[id]);
     }
 
     private static double initialPrevious(LinkBatch b, int j, StepPlan p) {

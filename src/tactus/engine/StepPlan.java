@@ -42,6 +42,14 @@ public final class StepPlan {
     /** One batch per link kind (by ordinal), null when the scene has none of that kind. */
     final LinkBatch[] batches;
     final Medium medium;
+    /** Scratch arrays (one value per mass slot) shared by the stencil-run kernels; null when there are no runs. */
+    double[] sbx;
+    double[] sby;
+    double[] sbz;
+    double[] sdd;
+    double[] stx;
+    double[] sty;
+    double[] stz;
     private Kernel[] kernels = new Kernel[0];
 
     StepPlan(int nMass, int[] kindStart, LinkBatch[] batches, Medium medium) {
@@ -124,8 +132,23 @@ public final class StepPlan {
         }
         for (LinkKind k : LinkKind.values()) {
             LinkBatch b = batch(k);
-            if (b != null && b.n > 0) {
+            if (b == null || b.n == 0) {
+                continue;
+            }
+            if (b.nIrregular > 0) {
                 list.add(LinkKernels.create(b, this));
+            }
+            for (StencilRun run : b.runs) {
+                if (sbx == null) {
+                    sbx = new double[nMass];
+                    sby = new double[nMass];
+                    sbz = new double[nMass];
+                    sdd = new double[nMass];
+                    stx = new double[nMass];
+                    sty = new double[nMass];
+                    stz = new double[nMass];
+                }
+                list.add(new StencilKernel(run, this));
             }
         }
         kernels = list.toArray(new Kernel[0]);
