@@ -52,6 +52,8 @@ public class PhysicalModel {
     private int deferAnalysis;
     private String lastWarning;
     private DivergenceListener divergenceListener;
+    /** Contact groups by mass-subset name, in creation order, with their engine group ids. */
+    private final java.util.LinkedHashMap<String, Integer> contactGroups = new java.util.LinkedHashMap<>();
     private boolean divergenceNotified;
 
     /**
@@ -1248,6 +1250,9 @@ public class PhysicalModel {
         engine.removeMass(id);
         mats.remove(id);
         matSubsets.forget(id);
+        for (String g : contactGroups.keySet()) {
+            syncGroup(g);
+        }
         massHandles[id].invalidate();
     }
 
@@ -1280,6 +1285,7 @@ public class PhysicalModel {
             links.clear();
             matSubsets.clear();
             linkSubsets.clear();
+            contactGroups.clear();
         }
     }
 
@@ -1310,6 +1316,7 @@ public class PhysicalModel {
         synchronized (lock) {
             int id = massId("addMatToSubset", mass);
             matSubsets.add(requireSubset(matSubsets, "addMatToSubset", subset), id);
+            syncGroup(subset);
         }
     }
 
@@ -1340,6 +1347,7 @@ public class PhysicalModel {
         synchronized (lock) {
             matSubsets.remove(requireSubset(matSubsets, "removeMatFromSubset", subset),
                     massId("removeMatFromSubset", mass));
+            syncGroup(subset);
         }
     }
 
@@ -1519,6 +1527,93 @@ public class PhysicalModel {
         return subset;
     }
 
+    // =================================================================== contact groups
+
+    /**
+     * Makes every pair of masses of a mass subset interact like a {@link Contact3D} with the given
+     * threshold, stiffness and damping, without N² explicit links: a broad phase (a neighbour list with a
+     * skin distance, built on a hashed grid) finds the close pairs. The forces are exactly those of
+     * explicit Contact3D links added for every pair (i, j), i before j in subset order. The group follows
+     * the subset: masses added to or removed from it later join or leave the group.
+     *
+     * @param subset an existing mass subset
+     * @param threshold contact distance, &gt; 0 (typically the sum of two radii)
+     * @param K contact stiffness (REAL_UNITS: N/m)
+     * @param Z contact damping (REAL_UNITS: N·s/m)
+     */
+    public void addContactGroup(String subset, double threshold, double K, double Z) {
+        String op = "addContactGroup";
+        Check.positive(op, subset, "threshold", threshold);
+        Check.finite(op, subset, "K", K);
+        Check.finite(op, subset, "Z", Z);
+        synchronized (lock) {
+            requireSubset(matSubsets, op, subset);
+            if (contactGroups.containsKey(subset)) {
+                throw Check.fail(op, subset, "this subset already has a contact group");
+            }
+            int gid = engine.addContactGroup(memberIds(subset), threshold, units.stiffnessIn(K), units.dampingIn(Z));
+            contactGroups.put(subset, gid);
+            analyzeAfterChange(() -> {
+                engine.removeContactGroup(gid);
+                contactGroups.remove(subset);
+            });
+        }
+    }
+
+    /** Changes the threshold, stiffness and damping of a subset's contact group. */
+    public void setContactGroupParams(String subset, double threshold, double K, double Z) {
+        String op = "setContactGroupParams";
+        Check.positive(op, subset, "threshold", threshold);
+        Check.finite(op, subset, "K", K);
+        Check.finite(op, subset, "Z", Z);
+        synchronized (lock) {
+            int gid = requireGroup(op, subset);
+            double[] old = engine.contactGroupParams(gid);
+            engine.setContactGroupParams(gid, threshold, units.stiffnessIn(K), units.dampingIn(Z));
+            analyzeAfterChange(() -> engine.setContactGroupParams(gid, old[0], old[1], old[2]));
+        }
+    }
+
+    /** Removes a subset's contact group (the subset itself stays). */
+    public void removeContactGroup(String subset) {
+        synchronized (lock) {
+            engine.removeContactGroup(requireGroup("removeContactGroup", subset));
+            contactGroups.remove(subset);
+        }
+    }
+
+    /** @return true when the mass subset has a contact group. */
+    public boolean hasContactGroup(String subset) {
+        synchronized (lock) {
+            return contactGroups.containsKey(subset);
+        }
+    }
+
+    private int requireGroup(String op, String subset) {
+        Integer gid = contactGroups.get(subset);
+        if (gid == null) {
+            throw Check.fail(op, String.valueOf(subset), "this subset has no contact group");
+        }
+        return gid;
+    }
+
+    private int[] memberIds(String subset) {
+        return matSubsets.members(subset).stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** Pushes a mass subset's current members to its contact group, if it has one. */
+    private void syncGroup(String subset) {
+        Integer gid = contactGroups.get(subset);
+        if (gid != null) {
+            engine.setContactGroupMembers(gid, memberIds(subset));
+        }
+    }
+
+    /** @return the subset names of the live contact groups, in the engine's compiled order. */
+    String[] contactGroupNames() {
+        return contactGroups.keySet().toArray(new String[0]);
+    }
+
     // =================================================================== stability and divergence
 
     /**
@@ -1566,7 +1661,7 @@ public class PhysicalModel {
     public String describeStability() {
         synchronized (lock) {
             StabilityReport r = getStabilityReport();
-            String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts);
+            String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts, contactGroupNames());
             return msg != null ? msg : String.format(java.util.Locale.ROOT,
                     "Tactus: stable (lambda max = %.4g < 4, every stiffness could grow %.3gx)", r.lambda(),
                     r.headroom());
@@ -1578,7 +1673,7 @@ public class PhysicalModel {
             return;
         }
         StabilityReport r = StabilityAnalyzer.analyze(engine.plan(), maxContacts);
-        String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts);
+        String msg = StabilityMessages.describe(r, engine, mats, links, units, maxContacts, contactGroupNames());
         if (msg == null) {
             lastWarning = null;
             return;
@@ -1608,7 +1703,7 @@ public class PhysicalModel {
     /** Sets how often (in steps, &ge; 1, default 64) the running model is checked for divergence. */
     public void setDivergenceCheckInterval(int steps) {
         synchronized (lock) {
-            engine.guard().setInterval(steps);
+            engine.setDivergenceCheckInterval(steps);
         }
     }
 

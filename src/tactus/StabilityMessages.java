@@ -10,7 +10,8 @@ final class StabilityMessages {
     }
 
     /** @return a one-line description of an unstable report, or null if it is stable without negative damping. */
-    static String describe(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u, int contacts) {
+    static String describe(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u, int contacts,
+                           String[] groupNames) {
         if (r.isStable()) {
             if (r.hasNegativeDamping()) {
                 return negativeDamping(r, e, mats, links, u);
@@ -43,6 +44,11 @@ final class StabilityMessages {
             where = k.label() + " \"" + links.name(id) + "\": " + param + " = " + fmt(value)
                     + (limit > 0 ? " is above its limit of about " + fmt(limit)
                     : " is too high, and lowering it alone cannot make the model stable");
+        } else if (r.culpritGroup() >= 0 && r.culpritGroup() < groupNames.length) {
+            String g = groupNames[r.culpritGroup()];
+            where = "the contact group of subset \"" + g + "\": its stiffness and damping are too high for "
+                    + contacts + " simultaneous contacts per mass (lower K, raise the masses, or set "
+                    + "setMaxContactsPerMass to the real packing)";
         } else if (r.culpritMass() >= 0 && e.isMass(r.culpritMass())) {
             int id = r.culpritMass();
             if (e.massKind(id).isOscillator()) {

@@ -5,10 +5,13 @@ package tactus.engine;
  *
  * <p>Every {@link #interval()} steps it scans all positions once: a non-finite coordinate, or one whose
  * magnitude exceeds {@link #limit()}, is a divergence, detected at most {@code interval} steps after it
- * appears. The same scan flushes to zero every coordinate closer to zero than {@link #FLUSH} (1e-150):
- * a decaying model then never reaches the subnormal range, where arithmetic is tens of times slower
- * (differences and squares of such small normal numbers stay normal). The scan costs one pass over the
- * positions per interval, so about {@code 1/interval} of a mass update per step.
+ * appears. The same scan protects decaying models from subnormal numbers, where arithmetic is tens of
+ * times slower: when every current and previous coordinate of an axis is closer to zero than
+ * {@link #FLUSH} (1e-150), that whole axis is set to exactly zero (a string vibrating around y = 0 comes to
+ * rest exactly instead of creeping through the subnormal range; squares and products of numbers above
+ * 1e-150 stay normal). Flushing a whole axis at once never adds energy. An axis that other parts of the
+ * model keep busy is left alone. The scan costs one pass over the positions per interval, so about
+ * {@code 1/interval} of a mass update per step.
  */
 public final class DivergenceGuard {
     /** Coordinates with a magnitude below this are set to exactly zero. */
@@ -44,38 +47,41 @@ public final class DivergenceGuard {
     }
 
     /**
-     * Scans a plan: flushes tiny coordinates, and finds a diverged mass.
+     * Scans a plan: flushes axes that have decayed to nothing, and finds a diverged mass.
      *
      * @return the slot of the diverged mass with the lowest id (non-finite first, else the largest
      *     magnitude beyond the limit), or -1 when the state is sane
      */
     int scan(StepPlan p) {
-        double worst = 0;
-        worst = Math.max(worst, flush(p.x, p.nMass));
-        worst = Math.max(worst, flush(p.y, p.nMass));
-        worst = Math.max(worst, flush(p.z, p.nMass));
-        worst = Math.max(worst, flush(p.px, p.nMass));
-        worst = Math.max(worst, flush(p.py, p.nMass));
-        worst = Math.max(worst, flush(p.pz, p.nMass));
-        LinkBatch oneD = p.batch(LinkKind.SPRING_DAMPER1D);
-        if (oneD != null) {
-            flush(oneD.dp, oneD.n);
-        }
+        double wx = axis(p.x, p.px, p.fx, p, false);
+        double wy = axis(p.y, p.py, p.fy, p, false);
+        double wz = axis(p.z, p.pz, p.fz, p, true);
+        double worst = Math.max(wx, Math.max(wy, wz));
         if (worst <= limit) {
             return -1;
         }
         return culprit(p);
     }
 
-    /** @return the largest magnitude in the first n values (NaN if any is NaN), after flushing tiny ones. */
-    private static double flush(double[] v, int n) {
+    /**
+     * @return the largest magnitude of an axis's current and previous coordinates (NaN if any is NaN); when it
+     *     is below {@link #FLUSH} the whole axis (positions, previous positions, forces) is set to exactly zero,
+     *     which removes the residual motion without ever adding energy.
+     */
+    private static double axis(double[] x, double[] px, double[] f, StepPlan p, boolean isZ) {
+        int n = p.nMass;
         double m = 0;
         for (int i = 0; i < n; i++) {
-            double a = Math.abs(v[i]);
-            if (a < FLUSH) {
-                v[i] = 0;
+            m = Math.max(m, Math.max(Math.abs(x[i]), Math.abs(px[i])));
+        }
+        if (m < FLUSH && m > 0) {
+            java.util.Arrays.fill(x, 0, n, 0.0);
+            java.util.Arrays.fill(px, 0, n, 0.0);
+            java.util.Arrays.fill(f, 0, n, 0.0);
+            LinkBatch oneD = p.batch(LinkKind.SPRING_DAMPER1D);
+            if (isZ && oneD != null) {
+                java.util.Arrays.fill(oneD.dp, 0, oneD.n, 0.0);
             }
-            m = Math.max(m, a);
         }
         return m;
     }

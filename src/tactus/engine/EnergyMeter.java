@@ -48,6 +48,9 @@ public final class EnergyMeter {
                 e += links(b, p);
             }
         }
+        for (ContactGroupKernel g : p.groups) {
+            e += g.energy();
+        }
         return e;
     }
 
@@ -63,8 +66,10 @@ public final class EnergyMeter {
                     break;
                 }
                 case ATTRACTOR3D: {
-                    double d = PlanCompiler.distanceOf(b, j, p);
-                    e -= b.aux[j] / Math.max(d, b.len[j]);
+                    double r = Math.max(PlanCompiler.distanceOf(b, j, p), b.len[j]);
+                    if (r > 0 && b.aux[j] != 0) {
+                        e -= b.aux[j] / r;
+                    }
                     continue;
                 }
                 case DAMPER3D:

@@ -16,6 +16,7 @@ public final class Engine {
     private final MassTable masses = new MassTable();
     private final LinkTable links = new LinkTable();
     private final Medium medium = new Medium();
+    private final java.util.ArrayList<ContactGroupSpec> groups = new java.util.ArrayList<>();
     private StepPlan plan;
     private boolean topologyDirty = true;
     private boolean effectsDirty;
@@ -144,6 +145,72 @@ public final class Engine {
         return id;
     }
 
+    /**
+     * Adds a contact group: a Contact3D between every unordered pair of the given masses (i before j in
+     * the given order), found each step by a broad phase (a neighbour list with a skin distance, built on
+     * a hashed grid) instead of N² explicit links.
+     *
+     * @param massIds the members, each a live mass, no duplicates
+     * @param threshold contact distance (the pair interacts while closer than this), &gt; 0
+     * @return the group id
+     */
+    public int addContactGroup(int[] massIds, double threshold, double stiffness, double damping) {
+        for (int id : massIds) {
+            checkMass(id);
+        }
+        groups.add(new ContactGroupSpec(massIds.clone(), threshold, stiffness, damping));
+        topologyDirty = true;
+        return groups.size() - 1;
+    }
+
+    /** Replaces the members of a contact group. */
+    public void setContactGroupMembers(int group, int[] massIds) {
+        ContactGroupSpec g = group(group);
+        for (int id : massIds) {
+            checkMass(id);
+        }
+        g.members = massIds.clone();
+        topologyDirty = true;
+    }
+
+    /** Sets the threshold, stiffness and damping of a contact group. */
+    public void setContactGroupParams(int group, double threshold, double stiffness, double damping) {
+        ContactGroupSpec g = group(group);
+        g.threshold = threshold;
+        g.stiffness = stiffness;
+        g.damping = damping;
+        topologyDirty = true;
+    }
+
+    /** @return {threshold, stiffness, damping} of a contact group, per step. */
+    public double[] contactGroupParams(int group) {
+        ContactGroupSpec g = group(group);
+        return new double[] {g.threshold, g.stiffness, g.damping};
+    }
+
+    /** Removes a contact group. */
+    public void removeContactGroup(int group) {
+        group(group).alive = false;
+        topologyDirty = true;
+    }
+
+    /** @return the number of times the neighbour lists of all contact groups have been rebuilt. */
+    public long contactGroupRebuilds() {
+        compile();
+        long n = 0;
+        for (ContactGroupKernel g : plan.groups) {
+            n += g.rebuilds();
+        }
+        return n;
+    }
+
+    private ContactGroupSpec group(int gid) {
+        if (gid < 0 || gid >= groups.size() || !groups.get(gid).alive) {
+            throw new IllegalArgumentException("no live contact group with id " + gid);
+        }
+        return groups.get(gid);
+    }
+
     /** Removes one link. */
     public void removeLink(int id) {
         checkLink(id);
@@ -181,6 +248,9 @@ public final class Engine {
         for (int id = 0; id < links.count; id++) {
             links.alive[id] = false;
         }
+        for (ContactGroupSpec g : groups) {
+            g.alive = false;
+        }
         topologyDirty = true;
     }
 
@@ -213,7 +283,7 @@ public final class Engine {
     /** Compiles the scene now if its topology or effects changed since the last compile. */
     public void compile() {
         if (topologyDirty || plan == null) {
-            plan = PlanCompiler.compile(masses, links, medium, plan, stencils);
+            plan = PlanCompiler.compile(masses, links, medium, plan, stencils, groups);
             topologyDirty = false;
             effectsDirty = false;
         } else if (effectsDirty) {
@@ -292,11 +362,35 @@ public final class Engine {
         return divergedAt;
     }
 
-    /** Lets the engine step again after a divergence (repair the state first). */
+    /**
+     * Lets the engine step again after a divergence. Repair the positions and parameters first; this clears
+     * every pending force (they were computed from the diverged state) and makes every link forget its
+     * previous distance, so the next step starts from the repaired positions at rest.
+     */
     public void clearDivergence() {
         divergedMass = -1;
         divergedAt = -1;
         countdown = guard.interval();
+        if (plan != null) {
+            StepPlan p = plan;
+            java.util.Arrays.fill(p.fx, 0.0);
+            java.util.Arrays.fill(p.fy, 0.0);
+            java.util.Arrays.fill(p.fz, 0.0);
+            for (LinkBatch b : p.batches) {
+                if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
+                    continue;
+                }
+                for (int j = 0; j < b.n; j++) {
+                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, p));
+                }
+            }
+        }
+    }
+
+    /** Sets the number of steps between two divergence scans; the next scan comes at most that many steps away. */
+    public void setDivergenceCheckInterval(int steps) {
+        guard.setInterval(steps);
+        countdown = Math.min(countdown, steps);
     }
 
     /** @return the number of steps run since this engine was created. */

@@ -11,7 +11,8 @@ final class PlanCompiler {
     private PlanCompiler() {
     }
 
-    static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old, boolean stencils) {
+    static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old, boolean stencils,
+                            java.util.List<ContactGroupSpec> groups) {
         int kinds = MassKind.values().length;
         int[] counts = new int[kinds];
         for (int id = 0; id < mt.count; id++) {
@@ -56,8 +57,29 @@ final class PlanCompiler {
         }
         System.arraycopy(newSlot, 0, mt.slot, 0, mt.count);
         fillLinks(lt, p, old);
+        p.groups = buildGroups(groups, mt, newSlot, p);
         p.selectKernels();
         return p;
+    }
+
+    private static ContactGroupKernel[] buildGroups(java.util.List<ContactGroupSpec> groups, MassTable mt,
+                                                    int[] slot, StepPlan p) {
+        java.util.ArrayList<ContactGroupKernel> out = new java.util.ArrayList<>();
+        for (ContactGroupSpec g : groups) {
+            if (!g.alive) {
+                continue;
+            }
+            int[] slots = new int[g.members.length];
+            int n = 0;
+            for (int id : g.members) {
+                if (mt.isLive(id)) {
+                    slots[n++] = slot[id];
+                }
+            }
+            out.add(new ContactGroupKernel(p, java.util.Arrays.copyOf(slots, n), g.threshold, g.stiffness,
+                    g.damping, ContactGroupSpec.SKIN * g.threshold));
+        }
+        return out.toArray(new ContactGroupKernel[0]);
     }
 
     private static void copyState(StepPlan from, int o, StepPlan to, int s) {

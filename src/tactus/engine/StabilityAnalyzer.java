@@ -66,14 +66,16 @@ public final class StabilityAnalyzer {
         int culpritLink = net.culpritLink;
         int culpritMass = net.culpritMass;
         double share = net.culpritShare;
+        int culpritGroup = -1;
         if (contacts[0] > lambda) {
             culpritLink = (int) contacts[1];
             culpritMass = (int) contacts[2];
+            culpritGroup = (int) contacts[4];
             share = 1.0;
         }
         int negative = net.negativeLink >= 0 ? net.negativeLink : (int) contacts[3];
         return new StabilityReport(lambda, contacts[0], gersh, method, culpritLink, culpritMass, share, negative,
-                net.negativeMass);
+                net.negativeMass, culpritGroup);
     }
 
     private static double coefficient(double k, double z) {
@@ -84,12 +86,12 @@ public final class StabilityAnalyzer {
      * Gershgorin bound of M⁻¹C for contacts, with at most {@code cap} engaged per mass.
      *
      * @return {bound, id of the stiffest contact at the worst mass, id of that mass, first negative-damping
-     *     contact id} (ids are -1 when absent)
+     *     contact id, index of the contact group responsible} (ids are -1 when absent)
      */
     private static double[] contactBound(StepPlan p, int cap) {
         LinkBatch b = p.batch(LinkKind.CONTACT3D);
-        if (b == null || b.n == 0) {
-            return new double[] {0, -1, -1, -1};
+        if ((b == null || b.n == 0) && p.groups.length == 0) {
+            return new double[] {0, -1, -1, -1, -1};
         }
         int negative = -1;
         int n = p.nMass;
@@ -97,7 +99,21 @@ public final class StabilityAnalyzer {
         int[] mobile = new int[n];
         int[] fixed = new int[n];
         int[] stiffest = new int[n];
-        for (int j = 0; j < b.n; j++) {
+        int[] stiffestGroup = new int[n];
+        java.util.Arrays.fill(stiffestGroup, -1);
+        for (int g = 0; g < p.groups.length; g++) {
+            ContactGroupKernel grp = p.groups[g];
+            double c = coefficient(grp.k, grp.z);
+            int[] members = grp.members();
+            for (int s : members) {
+                mobile[s] += members.length - 1;
+                if (c >= cmax[s]) {
+                    cmax[s] = c;
+                    stiffestGroup[s] = g;
+                }
+            }
+        }
+        for (int j = 0, nb = b == null ? 0 : b.n; j < nb; j++) {
             double c = coefficient(b.k[j], b.z[j]);
             if (b.z[j] < 0 && negative < 0) {
                 negative = b.id[j];
@@ -105,9 +121,11 @@ public final class StabilityAnalyzer {
             int a = b.a[j], d = b.b[j];
             if (c >= cmax[a]) {
                 stiffest[a] = b.id[j];
+                stiffestGroup[a] = -1;
             }
             if (c >= cmax[d]) {
                 stiffest[d] = b.id[j];
+                stiffestGroup[d] = -1;
             }
             boolean am = p.invM[a] > 0, dm = p.invM[d] > 0;
             cmax[a] = Math.max(cmax[a], c);
@@ -137,7 +155,9 @@ public final class StabilityAnalyzer {
                 at = i;
             }
         }
-        return new double[] {worst, at >= 0 ? stiffest[at] : -1, at >= 0 ? p.massId[at] : -1, negative};
+        boolean byGroup = at >= 0 && stiffestGroup[at] >= 0;
+        return new double[] {worst, at >= 0 && !byGroup ? stiffest[at] : -1, at >= 0 ? p.massId[at] : -1, negative,
+            byGroup ? stiffestGroup[at] : -1};
     }
 
     /** The permanent network as an edge list plus a diagonal, in force units (per step). */

@@ -36,10 +36,12 @@ public final class StabilityReport {
     private final double culpritShare;
     private final int negativeDampingLink;
     private final int negativeDampingMass;
+    private final int culpritGroup;
 
     StabilityReport(double lambdaLinks, double lambdaContacts, double gershgorinLinks, Method method,
                     int culpritLink, int culpritMass, double culpritShare, int negativeDampingLink,
-                    int negativeDampingMass) {
+                    int negativeDampingMass, int culpritGroup) {
+        this.culpritGroup = culpritGroup;
         this.lambda = lambdaLinks + lambdaContacts;
         this.gershgorin = gershgorinLinks + lambdaContacts;
         this.lambdaLinks = lambdaLinks;
@@ -106,6 +108,14 @@ public final class StabilityReport {
      */
     public double culpritShare() {
         return culpritShare;
+    }
+
+    /**
+     * @return the index (in compiled order of the live contact groups) of the contact group that makes the
+     *     bound tightest, or -1 when the culprit is not a contact group
+     */
+    public int culpritGroup() {
+        return culpritGroup;
     }
 
     /** @return the id of the first link with negative damping, or -1. */

@@ -50,6 +50,8 @@ public final class StepPlan {
     double[] stx;
     double[] sty;
     double[] stz;
+    /** Contact groups (broad-phase contacts), run right after the explicit Contact3D links. */
+    ContactGroupKernel[] groups = new ContactGroupKernel[0];
     private Kernel[] kernels = new Kernel[0];
 
     StepPlan(int nMass, int[] kindStart, LinkBatch[] batches, Medium medium) {
@@ -132,6 +134,10 @@ public final class StepPlan {
         }
         for (LinkKind k : LinkKind.values()) {
             LinkBatch b = batch(k);
+            if (k == LinkKind.BUBBLE3D) {
+                // contact groups take the place of explicit contacts: right after the Contact3D batch
+                java.util.Collections.addAll(list, groups);
+            }
             if (b == null || b.n == 0) {
                 continue;
             }

@@ -1,0 +1,239 @@
+package tactus.engine;
+
+import java.util.Arrays;
+
+/**
+ * Contact between every pair of a group of masses, found by a broad phase instead of N² explicit links.
+ *
+ * <p>Semantics: for every unordered pair (i, j) of members, i before j in member order, exactly a
+ * {@link LinkKind#CONTACT3D} link between i and j: while {@code d < threshold} it adds
+ * {@code f = -K (d - threshold) - Z (d(n) - d(n-1))} along the line between them, with the previous
+ * distance taken from the masses' previous positions (which is what an explicit contact stores). Pairs
+ * are visited in lexicographic order, so the force sums equal those of explicit contacts added in that
+ * order, bit for bit.
+ *
+ * <p>Broad phase: a Verlet neighbour list of the pairs closer than {@code threshold + skin}, built with
+ * a hashed uniform grid (cell size {@code threshold + skin}), and rebuilt only when some member has moved
+ * more than {@code skin / 2} since the last build, so a pair that comes within the threshold is always in
+ * the list. Steady-state stepping allocates nothing; the list only grows when the pile gets denser.
+ */
+final class ContactGroupKernel implements Kernel {
+    private final StepPlan p;
+    private final int[] slot;
+    private final int n;
+    final double threshold;
+    final double k;
+    final double z;
+    private final double skin;
+    private final double reach2;
+    private final double halfSkin2;
+    private final double cell;
+    private final double[] rx;
+    private final double[] ry;
+    private final double[] rz;
+    private final int mask;
+    private final int[] bucketStart;
+    private final int[] bucketItems;
+    private final int[] cellOf;
+    private final int[] scratch = new int[64];
+    int[] pairI = new int[256];
+    int[] pairJ = new int[256];
+    int pairs;
+    private boolean built;
+    private long rebuilds;
+
+    ContactGroupKernel(StepPlan p, int[] slots, double threshold, double k, double z, double skin) {
+        this.p = p;
+        this.slot = slots;
+        this.n = slots.length;
+        this.threshold = threshold;
+        this.k = k;
+        this.z = z;
+        this.skin = skin;
+        double reach = threshold + skin;
+        this.reach2 = reach * reach;
+        this.halfSkin2 = 0.25 * skin * skin;
+        this.cell = reach > 0 ? reach : 1.0;
+        rx = new double[n];
+        ry = new double[n];
+        rz = new double[n];
+        int size = Integer.highestOneBit(Math.max(4, 2 * n - 1)) << 1;
+        mask = size - 1;
+        bucketStart = new int[size + 1];
+        bucketItems = new int[n];
+        cellOf = new int[n];
+    }
+
+    /** @return the member slots, in member order (the caller must not modify the array). */
+    int[] members() {
+        return slot;
+    }
+
+    /** @return the potential energy ½K(threshold - d)² of the currently engaged pairs, per-step units. */
+    double energy() {
+        if (!built) {
+            rebuild();
+        }
+        double e = 0;
+        for (int q = 0; q < pairs; q++) {
+            int a = pairI[q], c = pairJ[q];
+            double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
+            double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            if (d < threshold) {
+                e += 0.5 * k * (threshold - d) * (threshold - d);
+            }
+        }
+        return e;
+    }
+
+    /** @return how many times the neighbour list has been rebuilt. */
+    long rebuilds() {
+        return rebuilds;
+    }
+
+    @Override
+    public void run() {
+        if (!built || movedTooFar()) {
+            rebuild();
+        }
+        final double[] x = p.x, y = p.y, zz = p.z, px = p.px, py = p.py, pz = p.pz;
+        final double[] fx = p.fx, fy = p.fy, fz = p.fz;
+        final double t = threshold, t2 = t * t, kk = k, zd = z;
+        final int[] pi = pairI, pj = pairJ;
+        for (int q = 0, m = pairs; q < m; q++) {
+            int a = pi[q], c = pj[q];
+            double dx = x[a] - x[c], dy = y[a] - y[c], dz = zz[a] - zz[c];
+            double d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 >= t2) {
+                continue;
+            }
+            double d = Math.sqrt(d2);
+            double ex = px[a] - px[c], ey = py[a] - py[c], ez = pz[a] - pz[c];
+            double prev = Math.sqrt(ex * ex + ey * ey + ez * ez);
+            if (d > 0) {
+                double s = (-kk * (d - t) - zd * (d - prev)) / d;
+                fx[a] += s * dx;
+                fy[a] += s * dy;
+                fz[a] += s * dz;
+                fx[c] -= s * dx;
+                fy[c] -= s * dy;
+                fz[c] -= s * dz;
+            }
+        }
+    }
+
+    private boolean movedTooFar() {
+        final double[] x = p.x, y = p.y, zz = p.z;
+        final double lim = halfSkin2;
+        for (int m = 0; m < n; m++) {
+            int s = slot[m];
+            double dx = x[s] - rx[m], dy = y[s] - ry[m], dz = zz[s] - rz[m];
+            if (!(dx * dx + dy * dy + dz * dz <= lim)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private int hash(long cx, long cy, long cz) {
+        long h = cx * 0x9E3779B97F4A7C15L ^ cy * 0xC2B2AE3D27D4EB4FL ^ cz * 0x165667B19E3779F9L;
+        return (int) (h ^ (h >>> 29)) & mask;
+    }
+
+    private long cellIndex(double v) {
+        double c = Math.floor(v / cell);
+        return c > 1e15 ? (long) 1e15 : c < -1e15 ? (long) -1e15 : (long) c;
+    }
+
+    /** Builds the neighbour list: every pair closer than threshold + skin, in lexicographic member order. */
+    void rebuild() {
+        rebuilds++;
+        built = true;
+        final double[] x = p.x, y = p.y, zz = p.z;
+        Arrays.fill(bucketStart, 0);
+        for (int m = 0; m < n; m++) {
+            int s = slot[m];
+            rx[m] = x[s];
+            ry[m] = y[s];
+            rz[m] = zz[s];
+            int h = hash(cellIndex(x[s]), cellIndex(y[s]), cellIndex(zz[s]));
+            cellOf[m] = h;
+            bucketStart[h + 1]++;
+        }
+        for (int h = 0; h < mask + 1; h++) {
+            bucketStart[h + 1] += bucketStart[h];
+        }
+        int[] fill = scratchFill();
+        for (int m = 0; m < n; m++) {
+            int h = cellOf[m];
+            bucketItems[bucketStart[h] + fill[h]++] = m;
+        }
+        pairs = 0;
+        for (int m = 0; m < n; m++) {
+            int s = slot[m];
+            long cx = cellIndex(x[s]), cy = cellIndex(y[s]), cz = cellIndex(zz[s]);
+            int found = 0;
+            for (int ox = -1; ox <= 1; ox++) {
+                for (int oy = -1; oy <= 1; oy++) {
+                    for (int oz = -1; oz <= 1; oz++) {
+                        int h = hash(cx + ox, cy + oy, cz + oz);
+                        for (int q = bucketStart[h]; q < bucketStart[h + 1]; q++) {
+                            int other = bucketItems[q];
+                            if (other <= m) {
+                                continue;
+                            }
+                            int os = slot[other];
+                            double dx = x[s] - x[os], dy = y[s] - y[os], dz = zz[s] - zz[os];
+                            if (dx * dx + dy * dy + dz * dz < reach2) {
+                                found = insertSorted(found, other);
+                            }
+                        }
+                    }
+                }
+            }
+            ensurePairs(pairs + found);
+            for (int f = 0; f < found; f++) {
+                pairI[pairs] = s;
+                pairJ[pairs] = slot[candidates[f]];
+                pairs++;
+            }
+        }
+    }
+
+    private int[] candidates = scratch;
+    private int[] fillCounts;
+
+    private int[] scratchFill() {
+        if (fillCounts == null) {
+            fillCounts = new int[mask + 1];
+        } else {
+            Arrays.fill(fillCounts, 0);
+        }
+        return fillCounts;
+    }
+
+    /** Inserts a member index into the sorted candidate list, skipping duplicates; returns the new count. */
+    private int insertSorted(int count, int value) {
+        int pos = count;
+        while (pos > 0 && candidates[pos - 1] > value) {
+            pos--;
+        }
+        if (pos > 0 && candidates[pos - 1] == value) {
+            return count;
+        }
+        if (count == candidates.length) {
+            candidates = Arrays.copyOf(candidates, count * 2);
+        }
+        System.arraycopy(candidates, pos, candidates, pos + 1, count - pos);
+        candidates[pos] = value;
+        return count + 1;
+    }
+
+    private void ensurePairs(int needed) {
+        if (needed > pairI.length) {
+            int c = Math.max(needed, pairI.length * 2);
+            pairI = Arrays.copyOf(pairI, c);
+            pairJ = Arrays.copyOf(pairJ, c);
+        }
+    }
+}
