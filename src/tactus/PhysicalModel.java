@@ -231,6 +231,30 @@ public class PhysicalModel {
         }
     }
 
+    /**
+     * Lets large models step on several threads (1, the default, keeps everything on the calling thread).
+     * Only models of at least 20,000 elements (masses plus interactions) stepped several steps at a time
+     * ({@link #computeNSteps(int)}, {@link #draw_physics()}) use them; results are bit-identical to one
+     * thread. Use at most the number of cores left free by the audio and haptic threads.
+     *
+     * @param threads 1 or more
+     */
+    public void setThreads(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("setThreads: the thread count must be >= 1, got " + threads);
+        }
+        synchronized (lock) {
+            engine.setThreads(threads);
+        }
+    }
+
+    /** @return the number of threads large models may use. */
+    public int getThreads() {
+        synchronized (lock) {
+            return engine.threads();
+        }
+    }
+
     /** @return the number of steps simulated since the model was created. */
     public long getStepCount() {
         synchronized (lock) {

@@ -22,6 +22,11 @@ public final class Engine {
     private boolean effectsDirty;
     private long steps;
     private boolean stencils = true;
+    private ParallelStepper stepper;
+    private int parallelMinElements = 20_000;
+    private StepPlan hookPlan;
+    private long hookSteps;
+    private final ParallelStepper.StepHook guardHook = this::afterParallelStep;
     private final DivergenceGuard guard = new DivergenceGuard();
     private int countdown = guard.interval();
     private int divergedMass = -1;
@@ -319,6 +324,13 @@ public final class Engine {
             compile();
         }
         StepPlan p = plan;
+        if (stepper != null && n > 1 && p.elementCount() >= parallelMinElements) {
+            hookPlan = p;
+            hookSteps = 0;
+            int ran = stepper.run(p, n, guardHook);
+            steps += ran;
+            return ran;
+        }
         for (int i = 0; i < n; i++) {
             p.step();
             if (--countdown == 0) {
@@ -334,6 +346,61 @@ public final class Engine {
         }
         steps += n;
         return n;
+    }
+
+    /** The divergence check after one parallel step; runs on the stepping thread while the others wait. */
+    private boolean afterParallelStep() {
+        hookSteps++;
+        if (--countdown == 0) {
+            countdown = guard.interval();
+            int bad = guard.scan(hookPlan);
+            if (bad >= 0) {
+                divergedMass = hookPlan.massId[bad];
+                divergedAt = steps + hookSteps;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Sets how many threads may step large models (1, the default, is single-threaded). With more, a model
+     * of at least {@link #parallelThreshold()} elements is stepped in parallel when {@link #step(int)} runs
+     * more than one step; results are bit-identical to single-threaded stepping. Threads beyond the number
+     * of cores only slow things down.
+     */
+    public void setThreads(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("thread count must be >= 1, got " + threads);
+        }
+        if (stepper != null) {
+            if (stepper.threads() == threads) {
+                return;
+            }
+            stepper.shutdown();
+            stepper = null;
+        }
+        if (threads > 1) {
+            stepper = new ParallelStepper(threads);
+        }
+    }
+
+    /** @return the number of threads that may step large models. */
+    public int threads() {
+        return stepper == null ? 1 : stepper.threads();
+    }
+
+    /** Sets the smallest model (masses plus links) stepped in parallel; smaller ones cannot pay the barriers. */
+    public void setParallelThreshold(int elements) {
+        if (elements < 0) {
+            throw new IllegalArgumentException("parallel threshold must be >= 0 elements, got " + elements);
+        }
+        parallelMinElements = elements;
+    }
+
+    /** @return the smallest model stepped in parallel, in elements. */
+    public int parallelThreshold() {
+        return parallelMinElements;
     }
 
     /** @return the divergence guard, to tune its interval and limit. */

@@ -42,7 +42,7 @@ final class MassKernels {
      * Mass3D with neither friction nor gravity: X(n+1) = 2X(n) - X(n-1) + F/M. Each coordinate is a
      * separate loop whose arrays share one index, the form JDK 17's C2 vectorises.
      */
-    static final class Free3D implements Kernel {
+    static final class Free3D implements RangeKernel {
         private final StepPlan p;
         private final int s;
         private final int e;
@@ -55,9 +55,29 @@ final class MassKernels {
 
         @Override
         public void run() {
-            free(p.x, p.px, p.fx, p.invM, s, e);
-            free(p.y, p.py, p.fy, p.invM, s, e);
-            free(p.z, p.pz, p.fz, p.invM, s, e);
+            run(0, s, e);
+        }
+
+        @Override
+        public int stages() {
+            return 1;
+        }
+
+        @Override
+        public int start(int stage) {
+            return s;
+        }
+
+        @Override
+        public int end(int stage) {
+            return e;
+        }
+
+        @Override
+        public void run(int stage, int from, int to) {
+            free(p.x, p.px, p.fx, p.invM, from, to);
+            free(p.y, p.py, p.fy, p.invM, from, to);
+            free(p.z, p.pz, p.fz, p.invM, from, to);
         }
 
         private static void free(double[] x, double[] px, double[] f, double[] im, int s, int e) {
@@ -71,7 +91,7 @@ final class MassKernels {
     }
 
     /** Mass3D with air friction and gravity, one loop per coordinate. */
-    static final class Medium3D implements Kernel {
+    static final class Medium3D implements RangeKernel {
         private final StepPlan p;
         private final int s;
         private final int e;
@@ -84,10 +104,30 @@ final class MassKernels {
 
         @Override
         public void run() {
+            run(0, s, e);
+        }
+
+        @Override
+        public int stages() {
+            return 1;
+        }
+
+        @Override
+        public int start(int stage) {
+            return s;
+        }
+
+        @Override
+        public int end(int stage) {
+            return e;
+        }
+
+        @Override
+        public void run(int stage, int from, int to) {
             Medium m = p.medium;
-            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, s, e);
-            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, s, e);
-            damped(p.z, p.pz, p.fz, p.invM, p.dmp, m.gz, s, e);
+            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, from, to);
+            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, from, to);
+            damped(p.z, p.pz, p.fz, p.invM, p.dmp, m.gz, from, to);
         }
 
         private static void damped(double[] x, double[] px, double[] f, double[] im, double[] d, double g,

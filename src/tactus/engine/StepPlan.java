@@ -53,6 +53,7 @@ public final class StepPlan {
     /** Contact groups (broad-phase contacts), run right after the explicit Contact3D links. */
     ContactGroupKernel[] groups = new ContactGroupKernel[0];
     private Kernel[] kernels = new Kernel[0];
+    private int kernelsVersion;
 
     StepPlan(int nMass, int[] kindStart, LinkBatch[] batches, Medium medium) {
         this.nMass = nMass;
@@ -87,6 +88,25 @@ public final class StepPlan {
         for (int i = 0; i < ks.length; i++) {
             ks[i].run();
         }
+    }
+
+    Kernel[] kernels() {
+        return kernels;
+    }
+
+    int kernelsVersion() {
+        return kernelsVersion;
+    }
+
+    /** @return the number of elements the plan updates per step: masses plus links (all kinds). */
+    public int elementCount() {
+        int n = nMass;
+        for (LinkBatch b : batches) {
+            if (b != null) {
+                n += b.n;
+            }
+        }
+        return n;
     }
 
     /** @return the number of masses in the plan. */
@@ -158,5 +178,6 @@ public final class StepPlan {
             }
         }
         kernels = list.toArray(new Kernel[0]);
+        kernelsVersion++;
     }
 }
