@@ -64,17 +64,15 @@ public final class DivergenceGuard {
     }
 
     /**
-     * @return the largest magnitude of an axis's current and previous coordinates (NaN if any is NaN); when it
-     *     is below {@link #FLUSH} the whole axis (positions, previous positions, forces) is set to exactly zero,
+     * @return the largest magnitude of an axis's coordinates (NaN if any is NaN; a non-finite previous position
+     *     shows up in the current one a step later); when every current and previous coordinate of the axis is
+     *     below {@link #FLUSH} the whole axis (positions, previous positions, forces) is set to exactly zero,
      *     which removes the residual motion without ever adding energy.
      */
     private static double axis(double[] x, double[] px, double[] f, StepPlan p, boolean isZ) {
         int n = p.nMass;
-        double m = 0;
-        for (int i = 0; i < n; i++) {
-            m = Math.max(m, Math.max(Math.abs(x[i]), Math.abs(px[i])));
-        }
-        if (m < FLUSH && m > 0) {
+        double m = largest(x, n);
+        if (m < FLUSH && m > 0 && largest(px, n) < FLUSH) {
             java.util.Arrays.fill(x, 0, n, 0.0);
             java.util.Arrays.fill(px, 0, n, 0.0);
             java.util.Arrays.fill(f, 0, n, 0.0);
@@ -82,6 +80,15 @@ public final class DivergenceGuard {
             if (isZ && oneD != null) {
                 java.util.Arrays.fill(oneD.dp, 0, oneD.n, 0.0);
             }
+        }
+        return m;
+    }
+
+    /** @return the largest magnitude among the first n values, or NaN if one of them is NaN. */
+    private static double largest(double[] v, int n) {
+        double m = 0;
+        for (int i = 0; i < n; i++) {
+            m = Math.max(m, Math.abs(v[i]));
         }
         return m;
     }
