@@ -9,9 +9,9 @@ package tactus.engine;
  * times slower: when every current and previous coordinate of an axis is closer to zero than
  * {@link #FLUSH} (1e-150), that whole axis is set to exactly zero (a string vibrating around y = 0 comes to
  * rest exactly instead of creeping through the subnormal range; squares and products of numbers above
- * 1e-150 stay normal). Flushing a whole axis at once never adds energy. An axis that other parts of the
- * model keep busy is left alone. The scan costs one pass over the positions per interval, so about
- * {@code 1/interval} of a mass update per step.
+ * 1e-150 stay normal). On an axis that other parts of the model keep busy, each mass that has decayed
+ * below the threshold is set to rest at zero instead. The scan costs one pass over the positions per
+ * interval, so about {@code 1/interval} of a mass update per step.
  */
 public final class DivergenceGuard {
     /** Coordinates with a magnitude below this are set to exactly zero. */
@@ -65,20 +65,40 @@ public final class DivergenceGuard {
 
     /**
      * @return the largest magnitude of an axis's coordinates (NaN if any is NaN; a non-finite previous position
-     *     shows up in the current one a step later); when every current and previous coordinate of the axis is
-     *     below {@link #FLUSH} the whole axis (positions, previous positions, forces) is set to exactly zero,
-     *     which removes the residual motion without ever adding energy.
+     *     shows up in the current one a step later). Tiny coordinates are flushed: when every current and
+     *     previous coordinate of the axis is below {@link #FLUSH}, the whole axis (positions, previous
+     *     positions, forces) is set to exactly zero, which removes the residual motion without adding energy;
+     *     when other masses keep the axis busy, each mass whose current and previous coordinates are both below
+     *     {@link #FLUSH} is set to rest at zero on that axis (a change of at most 1e-150, far below the
+     *     round-off of the busy part's energy).
      */
     private static double axis(double[] x, double[] px, double[] f, StepPlan p, boolean isZ) {
         int n = p.nMass;
-        double m = largest(x, n);
-        if (m < FLUSH && m > 0 && largest(px, n) < FLUSH) {
+        double m = 0;
+        boolean tiny = false;
+        for (int i = 0; i < n; i++) {
+            double a = Math.abs(x[i]);
+            m = Math.max(m, a);
+            tiny |= a < FLUSH & a > 0;
+        }
+        if (!tiny) {
+            return m;
+        }
+        if (m < FLUSH && largest(px, n) < FLUSH) {
             java.util.Arrays.fill(x, 0, n, 0.0);
             java.util.Arrays.fill(px, 0, n, 0.0);
             java.util.Arrays.fill(f, 0, n, 0.0);
             LinkBatch oneD = p.batch(LinkKind.SPRING_DAMPER1D);
             if (isZ && oneD != null) {
                 java.util.Arrays.fill(oneD.dp, 0, oneD.n, 0.0);
+            }
+        } else {
+            for (int i = 0; i < n; i++) {
+                if (Math.abs(x[i]) < FLUSH && Math.abs(px[i]) < FLUSH) {
+                    x[i] = 0;
+                    px[i] = 0;
+                    f[i] = 0;
+                }
             }
         }
         return m;
