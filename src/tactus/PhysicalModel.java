@@ -382,6 +382,79 @@ public class PhysicalModel {
         return (Osc3D) addMass("addOsc3D", MassKind.OSC3D, name, mass, initPos, initVel, K, Z, 1);
     }
 
+    /**
+     * Adds a 3D oscillator tuned by its pitch and decay: its stiffness and damping are chosen by exact pole
+     * matching at the current simulation rate, so it rings at exactly {@code freqHz} and loses 60 dB in exactly
+     * {@code t60} seconds (air friction included), with none of the scheme's frequency warping. Retune it with
+     * {@link #tuneOsc} after changing the simulation rate.
+     *
+     * @param freqHz pitch in Hz, below half the simulation rate
+     * @param t60 60 dB decay time in seconds, &gt; 0 ({@code Double.POSITIVE_INFINITY} for none)
+     */
+    public Osc3D addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
+        double[] kz = tunedCoefficients("addOsc3DTuned", name, mass, freqHz, t60);
+        return addOsc3D(name, mass, kz[0], kz[1], initPos, initVel);
+    }
+
+    /** Adds a 1D oscillator tuned by its pitch and decay (see {@link #addOsc3DTuned}). */
+    public Osc1D addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
+        double[] kz = tunedCoefficients("addOsc1DTuned", name, mass, freqHz, t60);
+        return addOsc1D(name, mass, kz[0], kz[1], initPos, initVel);
+    }
+
+    /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
+    public void tuneOsc(String name, double freqHz, double t60) {
+        synchronized (lock) {
+            int id = massId("tuneOsc", name);
+            requireOsc("tuneOsc", id);
+            double[] kz = tunedCoefficients("tuneOsc", name, engine.mass(id), freqHz, t60);
+            setOscOf("tuneOsc", id, kz[0], kz[1]);
+        }
+    }
+
+    /** @return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included. */
+    public double getOscFrequency(String name) {
+        synchronized (lock) {
+            int id = massId("getOscFrequency", name);
+            requireOsc("getOscFrequency", id);
+            double m = engine.mass(id);
+            return tactus.engine.Tuning.discreteFrequency(engine.oscStiffness(id) / m,
+                    (engine.oscDamping(id) + engine.friction()) / m, simRate);
+        }
+    }
+
+    /** @return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included. */
+    public double getOscT60(String name) {
+        synchronized (lock) {
+            int id = massId("getOscT60", name);
+            requireOsc("getOscT60", id);
+            return tactus.engine.Tuning.decayTime60((engine.oscDamping(id) + engine.friction()) / engine.mass(id),
+                    simRate);
+        }
+    }
+
+    /** @return {K, Z} in model units for a pole-matched oscillator of the given mass, air friction deducted. */
+    private double[] tunedCoefficients(String op, String name, double mass, double freqHz, double t60) {
+        Check.positive(op, String.valueOf(name), "mass", mass);
+        if (!(freqHz > 0) || !(freqHz < simRate / 2.0)) {
+            throw Check.fail(op, String.valueOf(name), "freqHz must be in (0, " + simRate / 2.0
+                    + ") Hz at this simulation rate, got " + freqHz);
+        }
+        if (!(t60 > 0)) {
+            throw Check.fail(op, String.valueOf(name), "t60 must be > 0 s, got " + t60);
+        }
+        synchronized (lock) {
+            double[] r = tactus.engine.Tuning.oscillatorCoefficients(freqHz, t60, simRate);
+            double k = r[0] * mass;
+            double z = r[1] * mass - engine.friction();
+            if (z < 0) {
+                throw Check.fail(op, String.valueOf(name), "air friction alone already decays faster than t60 = "
+                        + t60 + " s; use a longer t60 or less friction");
+            }
+            return new double[] {units.stiffnessOut(k), units.dampingOut(z)};
+        }
+    }
+
     /** Adds an oscillator that moves along z only (see {@link #addOsc3D}). */
     public Osc1D addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
         return (Osc1D) addMass("addOsc1D", MassKind.OSC1D, name, mass, initPos, initVel, K, Z, 1);
