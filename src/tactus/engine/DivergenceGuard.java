@@ -100,6 +100,16 @@ public final class DivergenceGuard {
                     f[i] = 0;
                 }
             }
+            LinkBatch oneD = p.batch(LinkKind.SPRING_DAMPER1D);
+            if (isZ && oneD != null) {
+                // a 1D link whose two ends now rest at zero must not remember a tiny previous length
+                for (int j = 0; j < oneD.n; j++) {
+                    int a = oneD.a[j], b = oneD.b[j];
+                    if (x[a] == 0 && x[b] == 0 && px[a] == 0 && px[b] == 0) {
+                        oneD.dp[j] = 0;
+                    }
+                }
+            }
         }
         return m;
     }

@@ -1,0 +1,158 @@
+package tactus.stability;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import tactus.DivergenceException;
+import tactus.PhysicalModel;
+import tactus.StabilityPolicy;
+import tactus.Vect3D;
+
+/**
+ * Regression tests for five engine defects found by the hard-case work (and fixed in src/ since): the subnormal
+ * flush fed energy into decaying models, forces from a diverged state survived the documented repair, a new check
+ * interval waited for the old countdown, the energy of a switched-off attractor at distance 0 was NaN, and the
+ * flush skipped an axis that another module kept busy. Each comment gives the old cause; each test states the
+ * correct behaviour.
+ */
+class DivergenceGuardTest {
+
+    /** A damped 12-mass 1D chain (SpringDamper1D K 0.7, Z 0.001) with every coordinate of order s. */
+    private static PhysicalModel dampedChain(double s) {
+        PhysicalModel pm = new PhysicalModel(1000);
+        SplittableRandom rnd = new SplittableRandom(99);
+        pm.addGround1D("g", new Vect3D());
+        for (int i = 0; i < 12; i++) {
+            pm.addMass1D("m" + i, 1.0 + i % 3, new Vect3D(0, 0, s * (2 * rnd.nextDouble() - 1)), new Vect3D());
+        }
+        for (int i = 0; i <= 12; i++) {
+            pm.addSpringDamper1D("k" + i, 0, 0.7, 0.001, i == 0 ? "g" : "m" + (i - 1), i == 12 ? "g" : "m" + i);
+        }
+        pm.init();
+        return pm;
+    }
+
+    // Was: the flush zeroed each coordinate below 1e-150 on its own, X(n) and X(n-1) separately, and left the
+    // force buffers (computed from the unflushed positions) in place. The next step turned those stale forces
+    // into fresh motion: a damped chain started entirely below the threshold (scale 2^-500 ~ 3e-151) gained
+    // ~200x its energy in 10^4 steps and kept ringing at ~1e-149 forever. Now: it must never gain energy and
+    // must end exactly at rest.
+    @Test
+    @DisplayName("the subnormal flush never adds energy: a damped chain below 1e-150 ends exactly at rest")
+    void flushNeverAddsEnergy() {
+        PhysicalModel pm = dampedChain(Math.scalb(1.0, -500));
+        double e0 = pm.getTotalEnergy();
+        assertTrue(e0 > 0);
+        double prev = e0;
+        for (int b = 0; b < 100; b++) {
+            pm.computeNSteps(100);
+            double e = pm.getTotalEnergy();
+            assertTrue(e <= e0, "a damped model gained energy through the flush: " + e0 + " -> " + e);
+            prev = e;
+        }
+        assertEquals(0.0, prev, 0.0, "at rest");
+        for (int i = 0; i < pm.getNumberOfMats(); i++) {
+            assertEquals(0.0, pm.getMatPosAt(i).z, 0.0);
+        }
+    }
+
+    // Was: when the guard froze a model, the force buffers kept the forces of the last interaction phase,
+    // computed from the exploded positions (~K x 1e12), and the documented recovery (repair positions and
+    // parameters, then clearDivergence) could not clear them: the first step after the repair threw the mass
+    // ~1e16 away. Now: the repaired model restarts from its repaired state.
+    @Test
+    @DisplayName("after clearDivergence a repaired model restarts from its repaired state (no stale forces)")
+    void cleanRestartAfterRepair() {
+        PhysicalModel pm = new PhysicalModel(44100);
+        pm.setStabilityPolicy(StabilityPolicy.OFF);
+        pm.addGround3D("anchor", new Vect3D());
+        pm.addMass3D("bob", 2, new Vect3D(1.05, 0, 0), new Vect3D());
+        pm.addSpringDamper3D("stiff", 1.0, 8.08, 0, "anchor", "bob");
+        pm.init();
+        assertThrows(DivergenceException.class, () -> {
+            for (int i = 0; i < 100; i++) {
+                pm.computeNSteps(64);
+            }
+        });
+        pm.setLinkStiffness("stiff", 1.0);   // repair the parameter ...
+        pm.setMatPosition("bob", new Vect3D(1.05, 0, 0));   // ... and the state: at rest, 0.05 from rest length
+        pm.clearDivergence();
+        pm.computeStep();
+        double x = pm.getMatPosition("bob").x;
+        assertEquals(1.05, x, 0.1, "the repaired model (K/M 0.5, at rest 0.05 off) jumped to x = " + x
+                + " on its first step: pending force " + pm.getMatForce("bob"));
+    }
+
+    // Was: the countdown to the next scan was re-armed only after a scan, so setDivergenceCheckInterval(1) took
+    // effect only after up to 63 more steps (or the old interval, however long), breaking "detected at most
+    // interval steps after it appears". Now: the new interval applies at once.
+    @Test
+    @DisplayName("setDivergenceCheckInterval(1) applies at once: a position beyond the limit is caught by the next step")
+    void intervalChangeAppliesAtOnce() {
+        PhysicalModel pm = new PhysicalModel(1000);
+        pm.addMass3D("m", 1, new Vect3D(), new Vect3D());
+        pm.init();
+        pm.computeNSteps(10);
+        pm.setDivergenceCheckInterval(1);
+        pm.setMatPosition("m", new Vect3D(1e13, 0, 0));
+        DivergenceException e = assertThrows(DivergenceException.class, pm::computeStep,
+                "a position beyond the limit must be caught by the next step when checking every step");
+        assertEquals(11, e.getStep());
+    }
+
+    // Was: EnergyMeter added -A / max(d, dLim) for every attractor: 0/0 = NaN for an attractor switched off
+    // (A = 0) with dLim = 0 between coincident masses, while the kernel itself skips d = 0. Now: finite.
+    @Test
+    @DisplayName("getTotalEnergy() is finite for a zero attractor with dLim 0 between coincident masses")
+    void attractorEnergyNaN() {
+        PhysicalModel pm = new PhysicalModel(1000);
+        pm.addMass3D("a", 1, new Vect3D(), new Vect3D());
+        pm.addMass3D("b", 1, new Vect3D(), new Vect3D());
+        pm.addAttractor3D("off", 0, 0, "a", "b");
+        pm.init();
+        pm.computeNSteps(10);
+        assertTrue(Double.isFinite(pm.getTotalEnergy()), "total energy " + pm.getTotalEnergy());
+    }
+
+    // Was: the whole-axis flush only fired when EVERY coordinate of the axis was below 1e-150. In the paper's
+    // PluckedString layout (miphysics-facts §4: a Mass2DPlane string vibrating in y around y = 0, the haptic
+    // avatar parked at y = -1 with a Contact3D to every bead) the avatar kept the y axis busy, so the decaying
+    // string sank into the subnormal range after ~7.5e5 steps (friction 2e-3) and every step cost ~12x more
+    // (~330 -> ~4,000 ns/step on 30 beads). Now: the beads are flushed one by one.
+    @Test
+    @DisplayName("a decaying string is kept out of the subnormal range when the haptic avatar sits on the same axis")
+    void busyAxisStillFlushed() {
+        PhysicalModel pm = new PhysicalModel(44100);
+        int n = 30;
+        pm.setFriction(2e-3);
+        pm.addGround3D("left", new Vect3D(0, 0, 0));
+        pm.addGround3D("right", new Vect3D(0.1 * (n + 1), 0, 0));
+        for (int i = 0; i < n; i++) {
+            double shape = i < 8 ? (i + 1) / 8.0 : (n - i) / (double) (n - 8);
+            pm.addMass2DPlane("str" + i, 1, new Vect3D(0.1 * (i + 1), 0.05 * shape, 0), new Vect3D());
+        }
+        for (int i = 0; i <= n; i++) {
+            pm.addSpringDamper3D("k" + i, 0.05, 0.4, 0.01, i == 0 ? "left" : "str" + (i - 1),
+                    i == n ? "right" : "str" + i);
+        }
+        pm.addHapticInput3D("hapticMass", new Vect3D(0, -1, 0), 30);
+        for (int i = 0; i < n; i++) {
+            pm.addContact3D("touch" + i, 0.5, 0.01, 0.01, "hapticMass", "str" + i);
+        }
+        pm.init();
+        pm.computeNSteps(900_000);
+        int subnormal = 0;
+        for (int i = 0; i < n; i++) {
+            Vect3D p = pm.getMatPosition("str" + i);
+            double y = Math.abs(p.y);
+            if (y != 0 && y < Double.MIN_NORMAL) {
+                subnormal++;
+            }
+        }
+        assertEquals(0, subnormal, "beads with a subnormal y after 9e5 steps (the string has decayed by 10^-308)");
+    }
+}
