@@ -7,14 +7,9 @@ import tactus.engine.LinkKind;
  * engine's arrays. Handles stay valid until the interaction or one of its masses is removed, or the
  * model is cleared; after that every method throws {@link IllegalStateException}.
  */
-public abstract class Interaction {
-    final PhysicalModel model;
-    final int id;
-    private volatile boolean valid = true;
-
+public abstract class Interaction extends Module {
     Interaction(PhysicalModel model, int id) {
-        this.model = model;
-        this.id = id;
+        super(model, id);
     }
 
     static Interaction create(PhysicalModel model, int id, LinkKind kind) {
@@ -42,29 +37,13 @@ public abstract class Interaction {
         }
     }
 
-    void invalidate() {
-        valid = false;
-    }
-
-    void checkValid() {
-        if (!valid) {
-            throw new IllegalStateException("this " + getClass().getSimpleName()
-                    + " handle is no longer part of its model (removed or cleared)");
-        }
-    }
-
-    /** @return true while the interaction is part of its model. */
-    public boolean isValid() {
-        return valid;
-    }
-
-    /** @return the unique name of this interaction. */
+    @Override
     public String getName() {
         checkValid();
         return model.linkName(id);
     }
 
-    /** @return the module type, for example "SpringDamper3D". */
+    @Override
     public String getType() {
         checkValid();
         return getClass().getSimpleName();
@@ -122,10 +101,5 @@ public abstract class Interaction {
     void length(double d) {
         checkValid();
         model.setLinkDRest(model.linkName(id), d);
-    }
-
-    @Override
-    public String toString() {
-        return valid ? getType() + "(\"" + getName() + "\")" : getClass().getSimpleName() + "(removed)";
     }
 }

@@ -7,14 +7,9 @@ import tactus.engine.MassKind;
  * engine's arrays. Handles stay valid until the module is removed, the model is cleared, or the
  * mass is turned into a fixed point; after that every method throws {@link IllegalStateException}.
  */
-public abstract class Mass {
-    final PhysicalModel model;
-    final int id;
-    private volatile boolean valid = true;
-
+public abstract class Mass extends Module {
     Mass(PhysicalModel model, int id) {
-        this.model = model;
-        this.id = id;
+        super(model, id);
     }
 
     static Mass create(PhysicalModel model, int id, MassKind kind) {
@@ -42,29 +37,13 @@ public abstract class Mass {
         }
     }
 
-    void invalidate() {
-        valid = false;
-    }
-
-    void checkValid() {
-        if (!valid) {
-            throw new IllegalStateException("this " + getClass().getSimpleName()
-                    + " handle is no longer part of its model (removed, cleared or made fixed)");
-        }
-    }
-
-    /** @return true while the module is part of its model. */
-    public boolean isValid() {
-        return valid;
-    }
-
-    /** @return the unique name of this mass. */
+    @Override
     public String getName() {
         checkValid();
         return model.massName(id);
     }
 
-    /** @return the module type, for example "Mass3D". */
+    @Override
     public String getType() {
         checkValid();
         return model.massKindOf(id).label();
@@ -104,10 +83,5 @@ public abstract class Mass {
     public void applyForce(double fx, double fy, double fz) {
         checkValid();
         model.triggerForceImpulse(model.massName(id), fx, fy, fz);
-    }
-
-    @Override
-    public String toString() {
-        return valid ? getType() + "(\"" + getName() + "\")" : getClass().getSimpleName() + "(removed)";
     }
 }

@@ -112,12 +112,7 @@ final class ContactGroupKernel implements Kernel {
             double prev = Math.sqrt(ex * ex + ey * ey + ez * ez);
             if (d > 0) {
                 double s = (-kk * (d - t) - zd * (d - prev)) / d;
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                LinkKernels.push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
     }

@@ -36,14 +36,21 @@ final class LinkKernels {
         }
     }
 
-    /** Spring3D: f = -K (d - l0). */
-    static final class Spring implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
+    /** A kernel over the links of one batch. */
+    abstract static class BatchKernel implements Kernel {
+        final LinkBatch b;
+        final StepPlan p;
 
-        Spring(LinkBatch b, StepPlan p) {
+        BatchKernel(LinkBatch b, StepPlan p) {
             this.b = b;
             this.p = p;
+        }
+    }
+
+    /** Spring3D: f = -K (d - l0). */
+    static final class Spring extends BatchKernel {
+        Spring(LinkBatch b, StepPlan p) {
+            super(b, p);
         }
 
         @Override
@@ -56,24 +63,15 @@ final class LinkKernels {
                 double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
                 double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
                 double s = d > 0 ? -k[j] * (d - l0[j]) / d : 0.0;
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
     }
 
     /** Damper3D: f = -Z (d(n) - d(n-1)). */
-    static final class Damper implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class Damper extends BatchKernel {
         Damper(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -87,24 +85,15 @@ final class LinkKernels {
                 double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
                 double s = d > 0 ? -zz[j] * (d - dp[j]) / d : 0.0;
                 dp[j] = d;
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
     }
 
     /** SpringDamper3D: f = -K (d - l0) - Z (d(n) - d(n-1)). */
-    static final class SpringDamper implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class SpringDamper extends BatchKernel {
         SpringDamper(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -119,12 +108,7 @@ final class LinkKernels {
                 double f = -k[j] * (d - l0[j]) - zz[j] * (d - dp[j]);
                 dp[j] = d;
                 double s = d > 0 ? f / d : 0.0;
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
     }
@@ -133,13 +117,9 @@ final class LinkKernels {
      * SpringDamper1D: on the signed difference {@code e = z1 - z2},
      * {@code F = K (e - l0) + Z (e(n) - e(n-1))}; mass 1 receives -F and mass 2 receives +F along z.
      */
-    static final class SpringDamper1D implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class SpringDamper1D extends BatchKernel {
         SpringDamper1D(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -163,13 +143,9 @@ final class LinkKernels {
      * bubble radius). On the first active step the previous distance is re-derived from the
      * masses' previous positions, so the damper sees the true approach speed.
      */
-    static final class Stretched implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class Stretched extends BatchKernel {
         Stretched(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -190,12 +166,7 @@ final class LinkKernels {
                 double prev = dp[j] < 0 ? previousDistance(p, a, c) : dp[j];
                 dp[j] = d;
                 double s = (-k[j] * (d - l) - zz[j] * (d - prev)) / d;
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
     }
@@ -204,13 +175,9 @@ final class LinkKernels {
      * Contact3D: the spring-damper force with the threshold as rest length, only while
      * {@code d < threshold}. The force is not clamped, as in the reference scheme.
      */
-    static final class Proximity implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class Proximity extends BatchKernel {
         Proximity(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -232,12 +199,7 @@ final class LinkKernels {
                 dp[j] = d;
                 if (d > 0) {
                     double s = (-k[j] * (d - t) - zz[j] * (d - prev)) / d;
-                    fx[a] += s * dx;
-                    fy[a] += s * dy;
-                    fz[a] += s * dz;
-                    fx[c] -= s * dx;
-                    fy[c] -= s * dy;
-                    fz[c] -= s * dz;
+                    push(fx, fy, fz, a, c, s, dx, dy, dz);
                 }
             }
         }
@@ -248,13 +210,9 @@ final class LinkKernels {
      * while {@code t < 0} the axis force {@code -K t - Z (q(n) - q(n-1))} pushes the mass back to
      * the positive side. Links are grouped by axis, so the loop has no branch on the axis.
      */
-    static final class Plane implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class Plane extends BatchKernel {
         Plane(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -280,13 +238,9 @@ final class LinkKernels {
     }
 
     /** Attractor3D: f = -A / d^2 while d > the limit distance; no damping. */
-    static final class Attractor implements Kernel {
-        private final LinkBatch b;
-        private final StepPlan p;
-
+    static final class Attractor extends BatchKernel {
         Attractor(LinkBatch b, StepPlan p) {
-            this.b = b;
-            this.p = p;
+            super(b, p);
         }
 
         @Override
@@ -304,14 +258,19 @@ final class LinkKernels {
                 }
                 double d = Math.sqrt(d2);
                 double s = -att[j] / (d2 * d);
-                fx[a] += s * dx;
-                fy[a] += s * dy;
-                fz[a] += s * dz;
-                fx[c] -= s * dx;
-                fy[c] -= s * dy;
-                fz[c] -= s * dz;
+                push(fx, fy, fz, a, c, s, dx, dy, dz);
             }
         }
+    }
+
+    /** Adds {@code s (dx, dy, dz)} to mass a's force and subtracts it from mass c's: one link's action and reaction. */
+    static void push(double[] fx, double[] fy, double[] fz, int a, int c, double s, double dx, double dy, double dz) {
+        fx[a] += s * dx;
+        fy[a] += s * dy;
+        fz[a] += s * dz;
+        fx[c] -= s * dx;
+        fy[c] -= s * dy;
+        fz[c] -= s * dz;
     }
 
     /** Distance between two masses at the previous step, from their previous positions. */

@@ -1,5 +1,7 @@
 package tactus.engine;
 
+import java.util.Arrays;
+
 /**
  * The mass-phase kernels. Each one advances a contiguous range of slots of one kind by one
  * step of the explicit central-difference scheme, using the forces accumulated during the
@@ -9,6 +11,8 @@ package tactus.engine;
  * <p>With velocity retention {@code d}, the update is
  * {@code X(n+1) = X(n) + d (X(n) - X(n-1)) + F/M + g}, which is the scheme
  * {@code X(n+1) = (2 - f/M) X(n) - (1 - f/M) X(n-1) + F/M + g} written in incremental form.
+ * Every slot is independent of the others, so each kernel can be split into chunks of slots and
+ * run on several threads ({@link RangeKernel}).
  */
 final class MassKernels {
     private MassKernels() {
@@ -38,43 +42,65 @@ final class MassKernels {
         }
     }
 
-    /**
-     * Mass3D with neither friction nor gravity: X(n+1) = 2X(n) - X(n-1) + F/M. Each coordinate is a
-     * separate loop whose arrays share one index, the form JDK 17's C2 vectorises.
-     */
-    static final class Free3D implements RangeKernel {
-        private final StepPlan p;
+    /** A mass kernel over the slots [s, e): one stage, any chunk of slots can run on its own. */
+    abstract static class SlotKernel implements RangeKernel {
+        final StepPlan p;
         private final int s;
         private final int e;
 
-        Free3D(StepPlan p, int s, int e) {
+        SlotKernel(StepPlan p, int s, int e) {
             this.p = p;
             this.s = s;
             this.e = e;
         }
 
+        /** Advances the slots [from, to). */
+        abstract void step(int from, int to);
+
         @Override
-        public void run() {
-            run(0, s, e);
+        public final void run() {
+            step(s, e);
         }
 
         @Override
-        public int stages() {
+        public final int stages() {
             return 1;
         }
 
         @Override
-        public int start(int stage) {
+        public final int start(int stage) {
             return s;
         }
 
         @Override
-        public int end(int stage) {
+        public final int end(int stage) {
             return e;
         }
 
         @Override
-        public void run(int stage, int from, int to) {
+        public final void run(int stage, int from, int to) {
+            step(from, to);
+        }
+
+        /** Clears the force buffers of the slots [from, to). */
+        final void clearForces(int from, int to) {
+            Arrays.fill(p.fx, from, to, 0.0);
+            Arrays.fill(p.fy, from, to, 0.0);
+            Arrays.fill(p.fz, from, to, 0.0);
+        }
+    }
+
+    /**
+     * Mass3D with neither friction nor gravity: X(n+1) = 2X(n) - X(n-1) + F/M. Each coordinate is a
+     * separate loop whose arrays share one index, the form JDK 17's C2 vectorises.
+     */
+    static final class Free3D extends SlotKernel {
+        Free3D(StepPlan p, int s, int e) {
+            super(p, s, e);
+        }
+
+        @Override
+        void step(int from, int to) {
             free(p.x, p.px, p.fx, p.invM, from, to);
             free(p.y, p.py, p.fy, p.invM, from, to);
             free(p.z, p.pz, p.fz, p.invM, from, to);
@@ -91,176 +117,100 @@ final class MassKernels {
     }
 
     /** Mass3D with air friction and gravity, one loop per coordinate. */
-    static final class Medium3D implements RangeKernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
-
+    static final class Medium3D extends SlotKernel {
         Medium3D(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            run(0, s, e);
-        }
-
-        @Override
-        public int stages() {
-            return 1;
-        }
-
-        @Override
-        public int start(int stage) {
-            return s;
-        }
-
-        @Override
-        public int end(int stage) {
-            return e;
-        }
-
-        @Override
-        public void run(int stage, int from, int to) {
+        void step(int from, int to) {
             Medium m = p.medium;
             damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, from, to);
             damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, from, to);
             damped(p.z, p.pz, p.fz, p.invM, p.dmp, m.gz, from, to);
         }
+    }
 
-        private static void damped(double[] x, double[] px, double[] f, double[] im, double[] d, double g,
-                                   int s, int e) {
-            for (int i = s; i < e; i++) {
-                double xi = x[i];
-                x[i] = xi + d[i] * (xi - px[i]) + f[i] * im[i] + g;
-                px[i] = xi;
-                f[i] = 0;
-            }
+    /** One coordinate of a damped mass with gravity: X(n+1) = X(n) + d (X(n) - X(n-1)) + F/M + g. */
+    static void damped(double[] x, double[] px, double[] f, double[] im, double[] d, double g, int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + d[i] * (xi - px[i]) + f[i] * im[i] + g;
+            px[i] = xi;
+            f[i] = 0;
         }
     }
 
     /** Mass2DPlane: x and y move as a Mass3D; z stays on its plane. */
-    static final class Plane2D implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
-
+    static final class Plane2D extends SlotKernel {
         Plane2D(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            final double[] x = p.x, y = p.y, px = p.px, py = p.py;
-            final double[] fx = p.fx, fy = p.fy, fz = p.fz, im = p.invM, d = p.dmp;
-            final double gx = p.medium.gx, gy = p.medium.gy;
-            for (int i = s; i < e; i++) {
-                double m = im[i], r = d[i];
-                double xi = x[i], yi = y[i];
-                x[i] = xi + r * (xi - px[i]) + fx[i] * m + gx;
-                y[i] = yi + r * (yi - py[i]) + fy[i] * m + gy;
-                px[i] = xi;
-                py[i] = yi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
-            }
+        void step(int from, int to) {
+            Medium m = p.medium;
+            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, from, to);
+            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, from, to);
+            Arrays.fill(p.fz, from, to, 0.0);
         }
     }
 
     /** Mass1D: only z moves. */
-    static final class Line1D implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
-
+    static final class Line1D extends SlotKernel {
         Line1D(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            final double[] z = p.z, pz = p.pz, fx = p.fx, fy = p.fy, fz = p.fz, im = p.invM, d = p.dmp;
-            final double gz = p.medium.gz;
-            for (int i = s; i < e; i++) {
-                double zi = z[i];
-                z[i] = zi + d[i] * (zi - pz[i]) + fz[i] * im[i] + gz;
-                pz[i] = zi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
-            }
+        void step(int from, int to) {
+            damped(p.z, p.pz, p.fz, p.invM, p.dmp, p.medium.gz, from, to);
+            Arrays.fill(p.fx, from, to, 0.0);
+            Arrays.fill(p.fy, from, to, 0.0);
         }
     }
 
     /**
-     * Osc3D: with Y = X - rest, Y(n+1) = (2 - K/M - (Z+f)/M) Y(n) - (1 - (Z+f)/M) Y(n-1) + F/M + g.
+     * One coordinate of an oscillator, with Y = X - rest:
+     * Y(n+1) = (2 - K/M - (Z+f)/M) Y(n) - (1 - (Z+f)/M) Y(n-1) + F/M + g, written incrementally.
      * The coefficients are read from the plan every step, so parameter changes apply at once.
      */
-    static final class Osc3D implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
+    static void oscillate(double[] x, double[] px, double[] r, double[] f, double[] im, double[] d, double[] k,
+                          double g, int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + d[i] * (xi - px[i]) - k[i] * (xi - r[i]) + f[i] * im[i] + g;
+            px[i] = xi;
+            f[i] = 0;
+        }
+    }
 
+    /** Osc3D: a mass tied to its rest position by its own spring and damper. */
+    static final class Osc3D extends SlotKernel {
         Osc3D(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            final double[] x = p.x, y = p.y, z = p.z, px = p.px, py = p.py, pz = p.pz;
-            final double[] fx = p.fx, fy = p.fy, fz = p.fz, im = p.invM, d = p.dmp, k = p.stf;
-            final double[] rx = p.rx, ry = p.ry, rz = p.rz;
-            final double gx = p.medium.gx, gy = p.medium.gy, gz = p.medium.gz;
-            for (int i = s; i < e; i++) {
-                double m = im[i], r = d[i], c = k[i];
-                double xi = x[i], yi = y[i], zi = z[i];
-                x[i] = xi + r * (xi - px[i]) - c * (xi - rx[i]) + fx[i] * m + gx;
-                y[i] = yi + r * (yi - py[i]) - c * (yi - ry[i]) + fy[i] * m + gy;
-                z[i] = zi + r * (zi - pz[i]) - c * (zi - rz[i]) + fz[i] * m + gz;
-                px[i] = xi;
-                py[i] = yi;
-                pz[i] = zi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
-            }
+        void step(int from, int to) {
+            Medium m = p.medium;
+            oscillate(p.x, p.px, p.rx, p.fx, p.invM, p.dmp, p.stf, m.gx, from, to);
+            oscillate(p.y, p.py, p.ry, p.fy, p.invM, p.dmp, p.stf, m.gy, from, to);
+            oscillate(p.z, p.pz, p.rz, p.fz, p.invM, p.dmp, p.stf, m.gz, from, to);
         }
     }
 
     /** Osc1D: the oscillator along z only. */
-    static final class Osc1D implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
-
+    static final class Osc1D extends SlotKernel {
         Osc1D(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            final double[] z = p.z, pz = p.pz, fx = p.fx, fy = p.fy, fz = p.fz;
-            final double[] im = p.invM, d = p.dmp, k = p.stf, rz = p.rz;
-            final double gz = p.medium.gz;
-            for (int i = s; i < e; i++) {
-                double zi = z[i];
-                z[i] = zi + d[i] * (zi - pz[i]) - k[i] * (zi - rz[i]) + fz[i] * im[i] + gz;
-                pz[i] = zi;
-                fx[i] = 0;
-                fy[i] = 0;
-                fz[i] = 0;
-            }
+        void step(int from, int to) {
+            oscillate(p.z, p.pz, p.rz, p.fz, p.invM, p.dmp, p.stf, p.medium.gz, from, to);
+            Arrays.fill(p.fx, from, to, 0.0);
+            Arrays.fill(p.fy, from, to, 0.0);
         }
     }
 
@@ -270,58 +220,42 @@ final class MassKernels {
      * The haptic avatar keeps its force buffer (an accumulator emptied by whoever reads it);
      * the position driver clears it every step.
      */
-    static final class Input3D implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
+    static final class Input3D extends SlotKernel {
         private final boolean clearForce;
 
         Input3D(StepPlan p, int s, int e, boolean clearForce) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
             this.clearForce = clearForce;
         }
 
         @Override
-        public void run() {
-            final double[] x = p.x, y = p.y, z = p.z, px = p.px, py = p.py, pz = p.pz;
-            final double[] tx = p.tx, ty = p.ty, tz = p.tz, w = p.w;
-            for (int i = s; i < e; i++) {
-                double a = w[i];
-                double xi = x[i], yi = y[i], zi = z[i];
-                x[i] = xi + a * (tx[i] - xi);
-                y[i] = yi + a * (ty[i] - yi);
-                z[i] = zi + a * (tz[i] - zi);
-                px[i] = xi;
-                py[i] = yi;
-                pz[i] = zi;
-            }
+        void step(int from, int to) {
+            follow(p.x, p.px, p.tx, p.w, from, to);
+            follow(p.y, p.py, p.ty, p.w, from, to);
+            follow(p.z, p.pz, p.tz, p.w, from, to);
             if (clearForce) {
-                java.util.Arrays.fill(p.fx, s, e, 0.0);
-                java.util.Arrays.fill(p.fy, s, e, 0.0);
-                java.util.Arrays.fill(p.fz, s, e, 0.0);
+                clearForces(from, to);
+            }
+        }
+
+        private static void follow(double[] x, double[] px, double[] t, double[] w, int s, int e) {
+            for (int i = s; i < e; i++) {
+                double xi = x[i];
+                x[i] = xi + w[i] * (t[i] - xi);
+                px[i] = xi;
             }
         }
     }
 
     /** Ground3D and Ground1D: the position never changes; the force buffer is cleared. */
-    static final class Fixed implements Kernel {
-        private final StepPlan p;
-        private final int s;
-        private final int e;
-
+    static final class Fixed extends SlotKernel {
         Fixed(StepPlan p, int s, int e) {
-            this.p = p;
-            this.s = s;
-            this.e = e;
+            super(p, s, e);
         }
 
         @Override
-        public void run() {
-            java.util.Arrays.fill(p.fx, s, e, 0.0);
-            java.util.Arrays.fill(p.fy, s, e, 0.0);
-            java.util.Arrays.fill(p.fz, s, e, 0.0);
+        void step(int from, int to) {
+            clearForces(from, to);
         }
     }
 }

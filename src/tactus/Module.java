@@ -1,0 +1,44 @@
+package tactus;
+
+/**
+ * A handle on one module (a mass or an interaction) of a {@link PhysicalModel}: a thin view onto its slot
+ * in the engine's arrays. A handle stays valid until its module leaves the model (removed, cleared, or a
+ * mass turned into a fixed point); after that every method throws {@link IllegalStateException}.
+ */
+public abstract class Module {
+    final PhysicalModel model;
+    final int id;
+    private volatile boolean valid = true;
+
+    Module(PhysicalModel model, int id) {
+        this.model = model;
+        this.id = id;
+    }
+
+    void invalidate() {
+        valid = false;
+    }
+
+    void checkValid() {
+        if (!valid) {
+            throw new IllegalStateException("this " + getClass().getSimpleName()
+                    + " handle is no longer part of its model (removed, cleared or made fixed)");
+        }
+    }
+
+    /** @return true while the module is part of its model. */
+    public boolean isValid() {
+        return valid;
+    }
+
+    /** @return the unique name of this module. */
+    public abstract String getName();
+
+    /** @return the module type, for example "Mass3D" or "SpringDamper3D". */
+    public abstract String getType();
+
+    @Override
+    public String toString() {
+        return valid ? getType() + "(\"" + getName() + "\")" : getClass().getSimpleName() + "(removed)";
+    }
+}
