@@ -13,9 +13,11 @@ import java.util.Arrays;
  * order, bit for bit.
  *
  * <p>Broad phase: a Verlet neighbour list of the pairs closer than {@code threshold + skin}, built with
- * a hashed uniform grid (cell size {@code threshold + skin}), and rebuilt only when some member has moved
- * more than {@code skin / 2} since the last build, so a pair that comes within the threshold is always in
- * the list. Steady-state stepping allocates nothing; the list only grows when the pile gets denser.
+ * a uniform grid of cell size {@code threshold + skin} (dense over the members' bounding box when that
+ * box holds few enough cells, hashed otherwise), and rebuilt only when some member has moved more than
+ * {@code skin / 2} since the last build, so a pair that comes within the threshold is always in the list.
+ * Steady-state stepping allocates nothing; the list and the grid only grow when the pile gets denser or
+ * wider than ever before.
  */
 final class ContactGroupKernel implements Kernel {
     private final StepPlan p;
@@ -35,6 +37,11 @@ final class ContactGroupKernel implements Kernel {
     private final int[] bucketStart;
     private final int[] bucketItems;
     private final int[] cellOf;
+    private final long[] cx;
+    private final long[] cy;
+    private final long[] cz;
+    private int[] cellStart = new int[0];
+    private int[] cellCursor = new int[0];
     private final int[] scratch = new int[64];
     int[] pairI = new int[256];
     int[] pairJ = new int[256];
@@ -62,6 +69,9 @@ final class ContactGroupKernel implements Kernel {
         bucketStart = new int[size + 1];
         bucketItems = new int[n];
         cellOf = new int[n];
+        cx = new long[n];
+        cy = new long[n];
+        cz = new long[n];
     }
 
     /** @return the member slots, in member order (the caller must not modify the array). */
@@ -145,13 +155,89 @@ final class ContactGroupKernel implements Kernel {
         rebuilds++;
         built = true;
         final double[] x = p.x, y = p.y, zz = p.z;
-        Arrays.fill(bucketStart, 0);
+        long minX = Long.MAX_VALUE, minY = Long.MAX_VALUE, minZ = Long.MAX_VALUE;
+        long maxX = Long.MIN_VALUE, maxY = Long.MIN_VALUE, maxZ = Long.MIN_VALUE;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
             rx[m] = x[s];
             ry[m] = y[s];
             rz[m] = zz[s];
-            int h = hash(cellIndex(x[s]), cellIndex(y[s]), cellIndex(zz[s]));
+            long a = cellIndex(x[s]), b = cellIndex(y[s]), c = cellIndex(zz[s]);
+            cx[m] = a;
+            cy[m] = b;
+            cz[m] = c;
+            minX = Math.min(minX, a);
+            minY = Math.min(minY, b);
+            minZ = Math.min(minZ, c);
+            maxX = Math.max(maxX, a);
+            maxY = Math.max(maxY, b);
+            maxZ = Math.max(maxZ, c);
+        }
+        pairs = 0;
+        if (n == 0) {
+            return;
+        }
+        long nx = maxX - minX + 1, ny = maxY - minY + 1, nz = maxZ - minZ + 1;
+        if (nx * ny * nz <= Math.max(4096L, 32L * n)) {
+            rebuildDense(minX, minY, minZ, (int) nx, (int) ny, (int) nz);
+        } else {
+            rebuildHashed();
+        }
+    }
+
+    /** Neighbour search on a dense grid over the members' bounding box: each cell's members, in member order. */
+    private void rebuildDense(long minX, long minY, long minZ, int nx, int ny, int nz) {
+        final double[] x = p.x, y = p.y, zz = p.z;
+        int cells = nx * ny * nz;
+        if (cellStart.length < cells + 1) {
+            cellStart = new int[Math.max(cells + 1, 2 * cellStart.length)];
+            cellCursor = new int[cellStart.length];
+        }
+        Arrays.fill(cellStart, 0, cells + 1, 0);
+        for (int m = 0; m < n; m++) {
+            int c = (int) (((cx[m] - minX) * ny + (cy[m] - minY)) * nz + (cz[m] - minZ));
+            cellOf[m] = c;
+            cellStart[c + 1]++;
+        }
+        for (int c = 0; c < cells; c++) {
+            cellStart[c + 1] += cellStart[c];
+        }
+        System.arraycopy(cellStart, 0, cellCursor, 0, cells);
+        for (int m = 0; m < n; m++) {
+            bucketItems[cellCursor[cellOf[m]]++] = m;
+        }
+        for (int m = 0; m < n; m++) {
+            int s = slot[m];
+            int ix = (int) (cx[m] - minX), iy = (int) (cy[m] - minY), iz = (int) (cz[m] - minZ);
+            int found = 0;
+            for (int ox = Math.max(0, ix - 1); ox <= Math.min(nx - 1, ix + 1); ox++) {
+                for (int oy = Math.max(0, iy - 1); oy <= Math.min(ny - 1, iy + 1); oy++) {
+                    int row = (ox * ny + oy) * nz;
+                    int from = cellStart[row + Math.max(0, iz - 1)];
+                    int to = cellStart[row + Math.min(nz - 1, iz + 1) + 1];
+                    for (int q = from; q < to; q++) {
+                        int other = bucketItems[q];
+                        if (other <= m) {
+                            continue;
+                        }
+                        int os = slot[other];
+                        double dx = x[s] - x[os], dy = y[s] - y[os], dz = zz[s] - zz[os];
+                        if (dx * dx + dy * dy + dz * dz < reach2) {
+                            found = insertSorted(found, other);
+                        }
+                    }
+                }
+            }
+            append(s, found);
+        }
+    }
+
+    /** Neighbour search on a hashed grid, for members spread over a large, sparse volume. */
+    private void rebuildHashed() {
+        final double[] x = p.x, y = p.y, zz = p.z;
+        Arrays.fill(bucketStart, 0);
+        for (int m = 0; m < n; m++) {
+            int h = hash(cx[m], cy[m], cz[m]);
             cellOf[m] = h;
             bucketStart[h + 1]++;
         }
@@ -163,15 +249,13 @@ final class ContactGroupKernel implements Kernel {
             int h = cellOf[m];
             bucketItems[bucketStart[h] + fill[h]++] = m;
         }
-        pairs = 0;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
-            long cx = cellIndex(x[s]), cy = cellIndex(y[s]), cz = cellIndex(zz[s]);
             int found = 0;
             for (int ox = -1; ox <= 1; ox++) {
                 for (int oy = -1; oy <= 1; oy++) {
                     for (int oz = -1; oz <= 1; oz++) {
-                        int h = hash(cx + ox, cy + oy, cz + oz);
+                        int h = hash(cx[m] + ox, cy[m] + oy, cz[m] + oz);
                         for (int q = bucketStart[h]; q < bucketStart[h + 1]; q++) {
                             int other = bucketItems[q];
                             if (other <= m) {
@@ -186,12 +270,17 @@ final class ContactGroupKernel implements Kernel {
                     }
                 }
             }
-            ensurePairs(pairs + found);
-            for (int f = 0; f < found; f++) {
-                pairI[pairs] = s;
-                pairJ[pairs] = slot[candidates[f]];
-                pairs++;
-            }
+            append(s, found);
+        }
+    }
+
+    /** Appends the pairs (s, candidate) found for one member, in candidate order. */
+    private void append(int s, int found) {
+        ensurePairs(pairs + found);
+        for (int f = 0; f < found; f++) {
+            pairI[pairs] = s;
+            pairJ[pairs] = slot[candidates[f]];
+            pairs++;
         }
     }
 
