@@ -263,7 +263,9 @@ public final class Engine {
 
     /**
      * Chooses whether dense blocks of spring-family links (chains, mesh rows and columns) are stepped as
-     * vectorisable stencil runs (the default) or all through index arrays. Both give the same physics; the
+     * vectorisable stencil runs (the default, for models of up to 16,384 masses, or any size when several
+     * threads step it; larger single-threaded ones stream from memory, where index arrays are faster) or all
+     * through index arrays. Both give the same physics; the
      * force sums on a mass are added in a different order, so results differ by round-off only.
      */
     public void setStencilRuns(boolean enabled) {
@@ -271,6 +273,23 @@ public final class Engine {
             stencils = enabled;
             topologyDirty = true;
         }
+    }
+
+    /**
+     * Stencil runs pay off while the model is cache-resident, and always when several threads step it (only
+     * runs split across threads; index-array links run on one thread).
+     */
+    private boolean useStencils() {
+        if (!stencils) {
+            return false;
+        }
+        int live = 0;
+        for (int id = 0; id < masses.count; id++) {
+            if (masses.alive[id]) {
+                live++;
+            }
+        }
+        return live <= StencilPlanner.MAX_MASSES || (stepper != null && live >= parallelMinElements / 3);
     }
 
     /** @return the number of stencil runs in the compiled plan (0 when the scene has no dense link block). */
@@ -288,7 +307,7 @@ public final class Engine {
     /** Compiles the scene now if its topology or effects changed since the last compile. */
     public void compile() {
         if (topologyDirty || plan == null) {
-            plan = PlanCompiler.compile(masses, links, medium, plan, stencils, groups);
+            plan = PlanCompiler.compile(masses, links, medium, plan, useStencils(), groups);
             topologyDirty = false;
             effectsDirty = false;
         } else if (effectsDirty) {
@@ -383,6 +402,7 @@ public final class Engine {
         if (threads > 1) {
             stepper = new ParallelStepper(threads);
         }
+        topologyDirty = true;
     }
 
     /** @return the number of threads that may step large models. */
