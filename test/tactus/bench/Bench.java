@@ -163,6 +163,10 @@ public final class Bench {
             finished = System.currentTimeMillis();
             System.out.println("Bench: load at end: " + loadEnd + "; total " + (finished - started) / 1000 + " s");
             String md = new Report(this).markdown();
+            if (only == null || only.contains("parallel")) {
+                System.out.println("== parallel stepping (forked JVM)");
+                md = md + ParallelBench.section();
+            }
             File parent = out.getAbsoluteFile().getParentFile();
             if (parent != null) {
                 parent.mkdirs();
