@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.SplittableRandom;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import tactus.DivergenceException;
@@ -21,20 +20,6 @@ import tactus.Vect3D;
  */
 class DivergenceGuardTest {
 
-    /** A damped 12-mass 1D chain (SpringDamper1D K 0.7, Z 0.001) with every coordinate of order s. */
-    private static PhysicalModel dampedChain(double s) {
-        PhysicalModel pm = new PhysicalModel(1000);
-        SplittableRandom rnd = new SplittableRandom(99);
-        pm.addGround1D("g", new Vect3D());
-        for (int i = 0; i < 12; i++) {
-            pm.addMass1D("m" + i, 1.0 + i % 3, new Vect3D(0, 0, s * (2 * rnd.nextDouble() - 1)), new Vect3D());
-        }
-        for (int i = 0; i <= 12; i++) {
-            pm.addSpringDamper1D("k" + i, 0, 0.7, 0.001, i == 0 ? "g" : "m" + (i - 1), i == 12 ? "g" : "m" + i);
-        }
-        pm.init();
-        return pm;
-    }
 
     // Was: the flush zeroed each coordinate below 1e-150 on its own, X(n) and X(n-1) separately, and left the
     // force buffers (computed from the unflushed positions) in place. The next step turned those stale forces
@@ -44,7 +29,7 @@ class DivergenceGuardTest {
     @Test
     @DisplayName("the subnormal flush never adds energy: a damped chain below 1e-150 ends exactly at rest")
     void flushNeverAddsEnergy() {
-        PhysicalModel pm = dampedChain(Math.scalb(1.0, -500));
+        PhysicalModel pm = StabilityFixtures.dampedChain1D(Math.scalb(1.0, -500));
         double e0 = pm.getTotalEnergy();
         assertTrue(e0 > 0);
         double prev = e0;

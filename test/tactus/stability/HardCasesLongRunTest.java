@@ -336,20 +336,6 @@ class HardCasesLongRunTest {
         assertTrue(worst > 0, "the far twin does feel its coarser grid");
     }
 
-    /** A 12-mass 1D chain at scale s (positions s times a fixed random shape). */
-    private static PhysicalModel scaledChain(double s) {
-        PhysicalModel pm = new PhysicalModel(1000);
-        SplittableRandom rnd = new SplittableRandom(99);
-        pm.addGround1D("g", new Vect3D());
-        for (int i = 0; i < 12; i++) {
-            pm.addMass1D("m" + i, 1.0 + i % 3, new Vect3D(0, 0, s * (2 * rnd.nextDouble() - 1)), new Vect3D());
-        }
-        for (int i = 0; i <= 12; i++) {
-            pm.addSpringDamper1D("k" + i, 0, 0.7, 0.001, i == 0 ? "g" : "m" + (i - 1), i == 12 ? "g" : "m" + i);
-        }
-        pm.init();
-        return pm;
-    }
 
     // Tiny coordinates: a linear scene is scale invariant, and scaling by a power of two is exact in floating
     // point, so the chain at scale 2^-300 (~5e-91) follows its unit-scale twin bit for bit over 10^5 steps.
@@ -359,8 +345,8 @@ class HardCasesLongRunTest {
     @Test
     @DisplayName("tiny coordinates: scale 2^-300 is bit-exact; a scene below 1e-150 is flushed to zero (documented)")
     void tinyCoordinates() {
-        PhysicalModel ref = scaledChain(1);
-        PhysicalModel tiny = scaledChain(Math.scalb(1.0, -300));
+        PhysicalModel ref = StabilityFixtures.dampedChain1D(1);
+        PhysicalModel tiny = StabilityFixtures.dampedChain1D(Math.scalb(1.0, -300));
         for (int b = 0; b < 100; b++) {
             ref.computeNSteps(1000);
             tiny.computeNSteps(1000);
@@ -369,7 +355,7 @@ class HardCasesLongRunTest {
                 assertEquals(want, tiny.getMatPosition("m" + i).z, 0.0, "mass " + i + " at step " + ref.getStepCount());
             }
         }
-        PhysicalModel below = scaledChain(Math.scalb(1.0, -520));
+        PhysicalModel below = StabilityFixtures.dampedChain1D(Math.scalb(1.0, -520));
         below.computeNSteps(63);
         assertTrue(maxAbsZ(below) > 0, "not yet scanned");
         below.computeNSteps(1);

@@ -138,4 +138,22 @@ final class StabilityFixtures {
     static java.util.SplittableRandom rng(long seed) {
         return new java.util.SplittableRandom(seed);
     }
+
+    /**
+     * A damped 12-mass 1D chain between two Ground1D ends (SpringDamper1D K 0.7, Z 0.001, masses 1 to 3) whose
+     * coordinates are {@code scale} times a fixed random shape: a linear scene, so any power-of-two scale is exact.
+     */
+    static PhysicalModel dampedChain1D(double scale) {
+        PhysicalModel pm = new PhysicalModel(1000);
+        java.util.SplittableRandom rnd = new java.util.SplittableRandom(99);
+        pm.addGround1D("g", new Vect3D());
+        for (int i = 0; i < 12; i++) {
+            pm.addMass1D("m" + i, 1.0 + i % 3, new Vect3D(0, 0, scale * (2 * rnd.nextDouble() - 1)), new Vect3D());
+        }
+        for (int i = 0; i <= 12; i++) {
+            pm.addSpringDamper1D("k" + i, 0, 0.7, 0.001, i == 0 ? "g" : "m" + (i - 1), i == 12 ? "g" : "m" + i);
+        }
+        pm.init();
+        return pm;
+    }
 }
