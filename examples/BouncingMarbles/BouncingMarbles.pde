@@ -5,7 +5,8 @@
  * Mass2DPlane (it moves in the x-y plane) with:
  *   - a Bubble3D to a fixed point in the middle, which keeps it inside a circle,
  *   - a PlaneContact3D, the floor, which it cannot go through,
- *   - a Contact3D with every other marble, so that they bounce off each other.
+ *   - a contact with every other marble (a contact group on the subset "marbles"),
+ *     so that they bounce off each other.
  * Gravity pulls them down and air friction slowly calms them.
  *
  * Mouse: click to blow the marbles away from the mouse.
@@ -49,12 +50,13 @@ void setup() {
     // name, offset, stiffness, damping, axis (0 = x, 1 = y, 2 = z), plane position, mass
     mdl.addPlaneContact("floor" + i, marbleRadius, 0.05, 0.01, 1, floorY, name);
   }
-  // One contact per pair of marbles (not two!)
-  for (int i = 0; i < nMarbles; i++) {
-    for (int j = i + 1; j < nMarbles; j++) {
-      mdl.addContact3D("touch" + i + "_" + j, 2 * marbleRadius, 0.05, 0.005, "marble" + i, "marble" + j);
-    }
-  }
+  // Every pair of marbles bounces like a Contact3D. A contact group finds the close pairs
+  // itself, instead of one addContact3D per pair (435 links for 30 marbles, and 19,900 for
+  // the paper's 200): same forces, much less work. The one-link-per-pair version would be:
+  //   for (int i = 0; i < nMarbles; i++)
+  //     for (int j = i + 1; j < nMarbles; j++)
+  //       mdl.addContact3D("touch" + i + "_" + j, 2 * marbleRadius, 0.05, 0.005, "marble" + i, "marble" + j);
+  mdl.addContactGroup("marbles", 2 * marbleRadius, 0.05, 0.005);
   mdl.init();
 }
 
@@ -86,7 +88,7 @@ void draw() {
   fill(30);
   textSize(14);
   text("click: blow the marbles away    G: flip gravity", -width / 2 + 16, -height / 2 + 24);
-  text(String.format("%d marbles, %d interactions", mdl.getNumberOfMats() - 1, mdl.getNumberOfLinks()),
+  text(String.format("%d marbles, %d interactions + a contact group", mdl.getNumberOfMats() - 1, mdl.getNumberOfLinks()),
     -width / 2 + 16, height / 2 - 16);
 }
 
