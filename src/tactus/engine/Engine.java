@@ -352,15 +352,9 @@ public final class Engine {
         }
         for (int i = 0; i < n; i++) {
             p.step();
-            if (--countdown == 0) {
-                countdown = guard.interval();
-                int bad = guard.scan(p);
-                if (bad >= 0) {
-                    divergedMass = p.massId[bad];
-                    divergedAt = steps + i + 1;
-                    steps += i + 1;
-                    return i + 1;
-                }
+            if (guardAfterStep(p, steps + i + 1)) {
+                steps += i + 1;
+                return i + 1;
             }
         }
         steps += n;
@@ -370,16 +364,27 @@ public final class Engine {
     /** The divergence check after one parallel step; runs on the stepping thread while the others wait. */
     private boolean afterParallelStep() {
         hookSteps++;
-        if (--countdown == 0) {
-            countdown = guard.interval();
-            int bad = guard.scan(hookPlan);
-            if (bad >= 0) {
-                divergedMass = hookPlan.massId[bad];
-                divergedAt = steps + hookSteps;
-                return true;
-            }
+        return guardAfterStep(hookPlan, steps + hookSteps);
+    }
+
+    /**
+     * Counts one step down to the next divergence scan and, when it is due, scans the plan.
+     *
+     * @param stepNumber the step count just reached, recorded if the scan finds a diverged mass
+     * @return true when the plan has diverged and stepping must stop
+     */
+    private boolean guardAfterStep(StepPlan p, long stepNumber) {
+        if (--countdown != 0) {
+            return false;
         }
-        return false;
+        countdown = guard.interval();
+        int bad = guard.scan(p);
+        if (bad < 0) {
+            return false;
+        }
+        divergedMass = p.massId[bad];
+        divergedAt = stepNumber;
+        return true;
     }
 
     /**
