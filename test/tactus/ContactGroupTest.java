@@ -74,6 +74,39 @@ class ContactGroupTest {
         assertEquals(explicit.getTotalEnergy(), grouped.getTotalEnergy(), 1e-12 * Math.abs(explicit.getTotalEnergy()));
     }
 
+    /** Two piles 1,000 units apart: the bounding box is too sparse for a dense grid, so the hashed grid runs. */
+    @Test
+    void sparseSpreadUsesTheHashedGridWithTheSameForces() {
+        PhysicalModel[] m = new PhysicalModel[2];
+        for (int v = 0; v < 2; v++) {
+            m[v] = new PhysicalModel(1000, 60);
+            m[v].setStabilityPolicy(StabilityPolicy.OFF);
+            m[v].createMatSubset("s");
+            Random r = new Random(11);
+            for (int i = 0; i < 40; i++) {
+                double off = i < 20 ? 0 : 1000;
+                m[v].addMass3D("m" + i, 1, new Vect3D(off + 0.5 * r.nextDouble(), 0.5 * r.nextDouble(),
+                        0.5 * r.nextDouble()), new Vect3D(r.nextDouble() - 0.5, r.nextDouble() - 0.5, 0));
+                m[v].addMatToSubset("m" + i, "s");
+            }
+        }
+        m[0].addContactGroup("s", THR, K, Z);
+        for (int i = 0; i < 40; i++) {
+            for (int j = i + 1; j < 40; j++) {
+                m[1].addContact3D("c" + i + "_" + j, THR, K, Z, "m" + i, "m" + j);
+            }
+        }
+        m[0].computeNSteps(3000);
+        m[1].computeNSteps(3000);
+        for (int i = 0; i < 40; i++) {
+            Vect3D a = m[0].getMatPosition("m" + i);
+            Vect3D b = m[1].getMatPosition("m" + i);
+            assertEquals(b.x, a.x, 0.0, "m" + i);
+            assertEquals(b.y, a.y, 0.0, "m" + i);
+            assertEquals(b.z, a.z, 0.0, "m" + i);
+        }
+    }
+
     @Test
     void groupFollowsItsSubset() {
         PhysicalModel m = marbles(60, true, 3);

@@ -42,7 +42,7 @@ final class ContactGroupKernel implements Kernel {
     private final long[] cz;
     private int[] cellStart = new int[0];
     private int[] cellCursor = new int[0];
-    private final int[] scratch = new int[64];
+    private int[] candidates = new int[64];
     int[] pairI = new int[256];
     int[] pairJ = new int[256];
     int pairs;
@@ -187,7 +187,6 @@ final class ContactGroupKernel implements Kernel {
 
     /** Neighbour search on a dense grid over the members' bounding box: each cell's members, in member order. */
     private void rebuildDense(long minX, long minY, long minZ, int nx, int ny, int nz) {
-        final double[] x = p.x, y = p.y, zz = p.z;
         int cells = nx * ny * nz;
         if (cellStart.length < cells + 1) {
             cellStart = new int[Math.max(cells + 1, 2 * cellStart.length)];
@@ -215,17 +214,7 @@ final class ContactGroupKernel implements Kernel {
                     int row = (ox * ny + oy) * nz;
                     int from = cellStart[row + Math.max(0, iz - 1)];
                     int to = cellStart[row + Math.min(nz - 1, iz + 1) + 1];
-                    for (int q = from; q < to; q++) {
-                        int other = bucketItems[q];
-                        if (other <= m) {
-                            continue;
-                        }
-                        int os = slot[other];
-                        double dx = x[s] - x[os], dy = y[s] - y[os], dz = zz[s] - zz[os];
-                        if (dx * dx + dy * dy + dz * dz < reach2) {
-                            found = insertSorted(found, other);
-                        }
-                    }
+                    found = collect(m, from, to, found);
                 }
             }
             append(s, found);
@@ -234,7 +223,6 @@ final class ContactGroupKernel implements Kernel {
 
     /** Neighbour search on a hashed grid, for members spread over a large, sparse volume. */
     private void rebuildHashed() {
-        final double[] x = p.x, y = p.y, zz = p.z;
         Arrays.fill(bucketStart, 0);
         for (int m = 0; m < n; m++) {
             int h = hash(cx[m], cy[m], cz[m]);
@@ -244,10 +232,12 @@ final class ContactGroupKernel implements Kernel {
         for (int h = 0; h < mask + 1; h++) {
             bucketStart[h + 1] += bucketStart[h];
         }
-        int[] fill = scratchFill();
+        if (cellCursor.length < mask + 1) {
+            cellCursor = new int[mask + 1];
+        }
+        System.arraycopy(bucketStart, 0, cellCursor, 0, mask + 1);
         for (int m = 0; m < n; m++) {
-            int h = cellOf[m];
-            bucketItems[bucketStart[h] + fill[h]++] = m;
+            bucketItems[cellCursor[cellOf[m]]++] = m;
         }
         for (int m = 0; m < n; m++) {
             int s = slot[m];
@@ -256,22 +246,35 @@ final class ContactGroupKernel implements Kernel {
                 for (int oy = -1; oy <= 1; oy++) {
                     for (int oz = -1; oz <= 1; oz++) {
                         int h = hash(cx[m] + ox, cy[m] + oy, cz[m] + oz);
-                        for (int q = bucketStart[h]; q < bucketStart[h + 1]; q++) {
-                            int other = bucketItems[q];
-                            if (other <= m) {
-                                continue;
-                            }
-                            int os = slot[other];
-                            double dx = x[s] - x[os], dy = y[s] - y[os], dz = zz[s] - zz[os];
-                            if (dx * dx + dy * dy + dz * dz < reach2) {
-                                found = insertSorted(found, other);
-                            }
-                        }
+                        found = collect(m, bucketStart[h], bucketStart[h + 1], found);
                     }
                 }
             }
             append(s, found);
         }
+    }
+
+    /**
+     * Adds to member m's sorted candidate list every later member listed in bucketItems[from, to) that lies
+     * closer than threshold + skin.
+     *
+     * @return the new number of candidates
+     */
+    private int collect(int m, int from, int to, int found) {
+        final double[] x = p.x, y = p.y, zz = p.z;
+        int s = slot[m];
+        for (int q = from; q < to; q++) {
+            int other = bucketItems[q];
+            if (other <= m) {
+                continue;
+            }
+            int os = slot[other];
+            double dx = x[s] - x[os], dy = y[s] - y[os], dz = zz[s] - zz[os];
+            if (dx * dx + dy * dy + dz * dz < reach2) {
+                found = insertSorted(found, other);
+            }
+        }
+        return found;
     }
 
     /** Appends the pairs (s, candidate) found for one member, in candidate order. */
@@ -282,18 +285,6 @@ final class ContactGroupKernel implements Kernel {
             pairJ[pairs] = slot[candidates[f]];
             pairs++;
         }
-    }
-
-    private int[] candidates = scratch;
-    private int[] fillCounts;
-
-    private int[] scratchFill() {
-        if (fillCounts == null) {
-            fillCounts = new int[mask + 1];
-        } else {
-            Arrays.fill(fillCounts, 0);
-        }
-        return fillCounts;
     }
 
     /** Inserts a member index into the sorted candidate list, skipping duplicates; returns the new count. */
