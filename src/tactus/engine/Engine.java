@@ -526,11 +526,6 @@ public final class Engine {
         return links.b[id];
     }
 
-    /** @return the number of mass ids issued so far, live or not. */
-    public int massIdCount() {
-        return masses.count;
-    }
-
     /** @return the number of link ids issued so far, live or not. */
     public int linkIdCount() {
         return links.count;

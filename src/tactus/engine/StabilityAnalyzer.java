@@ -65,16 +65,14 @@ public final class StabilityAnalyzer {
         double[] contacts = contactBound(p, maxContacts);
         int culpritLink = net.culpritLink;
         int culpritMass = net.culpritMass;
-        double share = net.culpritShare;
         int culpritGroup = -1;
         if (contacts[0] > lambda) {
             culpritLink = (int) contacts[1];
             culpritMass = (int) contacts[2];
             culpritGroup = (int) contacts[4];
-            share = 1.0;
         }
         int negative = net.negativeLink >= 0 ? net.negativeLink : (int) contacts[3];
-        return new StabilityReport(lambda, contacts[0], gersh, method, culpritLink, culpritMass, share, negative,
+        return new StabilityReport(lambda, contacts[0], gersh, method, culpritLink, culpritMass, negative,
                 net.negativeMass, culpritGroup);
     }
 
@@ -173,7 +171,6 @@ public final class StabilityAnalyzer {
         int[] eid = new int[64];
         int culpritLink = -1;
         int culpritMass = -1;
-        double culpritShare;
         int negativeLink = -1;
         int negativeMass = -1;
 
@@ -281,14 +278,12 @@ public final class StabilityAnalyzer {
             if (at >= 0) {
                 culpritMass = p.massId[at];
                 double best = diag[at];
-                culpritShare = best / row[at];
                 for (int e = 0; e < edges; e++) {
                     if (ea[e] == at || eb[e] == at) {
                         double share = (eb[e] < 0 ? 1 : 2) * ec[e];
                         if (share > best) {
                             best = share;
                             culpritLink = eid[e];
-                            culpritShare = share / row[at];
                         }
                     }
                 }

@@ -33,13 +33,12 @@ public final class StabilityReport {
     private final Method method;
     private final int culpritLink;
     private final int culpritMass;
-    private final double culpritShare;
     private final int negativeDampingLink;
     private final int negativeDampingMass;
     private final int culpritGroup;
 
     StabilityReport(double lambdaLinks, double lambdaContacts, double gershgorinLinks, Method method,
-                    int culpritLink, int culpritMass, double culpritShare, int negativeDampingLink,
+                    int culpritLink, int culpritMass, int negativeDampingLink,
                     int negativeDampingMass, int culpritGroup) {
         this.culpritGroup = culpritGroup;
         this.lambda = lambdaLinks + lambdaContacts;
@@ -49,7 +48,6 @@ public final class StabilityReport {
         this.method = method;
         this.culpritLink = culpritLink;
         this.culpritMass = culpritMass;
-        this.culpritShare = culpritShare;
         this.negativeDampingLink = negativeDampingLink;
         this.negativeDampingMass = negativeDampingMass;
     }
@@ -100,14 +98,6 @@ public final class StabilityReport {
     /** @return the id of the mass where the bound is tightest (an oscillator may itself be the culprit), or -1. */
     public int culpritMass() {
         return culpritMass;
-    }
-
-    /**
-     * @return the fraction of the tight mass's Gershgorin row contributed by the culprit (0..1); 1 when
-     *     the culprit is the oscillator's own spring or the only link.
-     */
-    public double culpritShare() {
-        return culpritShare;
     }
 
     /**

@@ -114,11 +114,6 @@ public final class StepPlan {
         return nMass;
     }
 
-    /** @return the number of kernels this plan runs per step: one per kind present in the scene. */
-    public int kernelCount() {
-        return kernels.length;
-    }
-
     /** @return the names of the kernels this plan runs per step, in order, for diagnostics. */
     public String[] kernelNames() {
         String[] names = new String[kernels.length];
