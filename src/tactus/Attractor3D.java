@@ -8,14 +8,22 @@ public final class Attractor3D extends Interaction {
 
     /** @return the attraction factor A (REAL_UNITS: N·m^2); negative values repel. */
     public double getAttraction() {
-        checkValid();
-        return model.linkAuxOut(id);
+        model.enter(this);
+        try {
+            return model.core.params.attraction("getAttraction", id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Sets the attraction factor A (REAL_UNITS: N·m^2). */
     public void setAttraction(double a) {
-        checkValid();
-        model.setLinkAuxOf("setAttraction", id, a);
+        model.enter(this);
+        try {
+            model.core.params.setAttraction("setAttraction", id, a);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the limit distance below which no force acts. */
@@ -23,8 +31,8 @@ public final class Attractor3D extends Interaction {
         return length();
     }
 
-    /** Sets the limit distance, &ge; 0. */
+    /** Sets the limit distance, &gt; 0. */
     public void setLimit(double d) {
-        length(d);
+        length("setLimit", d);
     }
 }

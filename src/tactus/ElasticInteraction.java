@@ -37,6 +37,6 @@ public abstract class ElasticInteraction extends Interaction {
 
     /** Sets the length parameter: rest length, threshold or radius, &ge; 0. */
     public void setLength(double d) {
-        length(d);
+        length("setLength", d);
     }
 }

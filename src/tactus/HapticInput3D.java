@@ -12,13 +12,30 @@ public final class HapticInput3D extends Mass {
 
     /** Sets the device position the avatar follows, in model units. */
     public void setDevicePosition(Vect3D pos) {
-        checkValid();
-        model.setHapticPosition(model.massName(id), pos);
+        Check.vector("setDevicePosition", toString(), "pos", pos);
+        model.enter(this);
+        try {
+            model.core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the force accumulated since the last call (REAL_UNITS: N), and resets the accumulator. */
     public Vect3D takeForce() {
-        checkValid();
-        return model.getHapticForce(model.massName(id));
+        return takeForce(new Vect3D());
+    }
+
+    /**
+     * Writes the force accumulated since the last call (REAL_UNITS: N) into {@code out} without allocating,
+     * resets the accumulator, and returns {@code out}.
+     */
+    public Vect3D takeForce(Vect3D out) {
+        model.enter(this);
+        try {
+            return model.core.state.takeForce(id, out);
+        } finally {
+            model.exit();
+        }
     }
 }

@@ -8,19 +8,32 @@ public abstract class InertialMass extends Mass {
 
     /** @return the inertia (REAL_UNITS: kg). */
     public double getMass() {
-        checkValid();
-        return model.getMatMass(model.massName(id));
+        model.enter(this);
+        try {
+            return model.core.params.mass("getMass", id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Sets the inertia, finite and &gt; 0 (REAL_UNITS: kg). */
     public void setMass(double mass) {
-        checkValid();
-        model.setMassOf("setMass", id, mass);
+        model.enter(this);
+        try {
+            model.core.params.setMass("setMass", id, mass);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Sets the velocity in units per second, keeping the position. */
     public void setVelocity(Vect3D vel) {
-        checkValid();
-        model.setMatVelocity(model.massName(id), vel);
+        Check.vector("setVelocity", toString(), "vel", vel);
+        model.enter(this);
+        try {
+            model.core.state.setVelocity("setVelocity", id, vel);
+        } finally {
+            model.exit();
+        }
     }
 }

@@ -39,8 +39,12 @@ public abstract class Interaction extends Module {
 
     @Override
     public String getName() {
-        checkValid();
-        return model.linkName(id);
+        model.enter(this);
+        try {
+            return model.core.dir.linkName(id);
+        } finally {
+            model.exit();
+        }
     }
 
     @Override
@@ -51,55 +55,98 @@ public abstract class Interaction extends Module {
 
     /** @return the handle of the first mass. */
     public Mass getMass1() {
-        checkValid();
-        return model.massHandle(model.engineLinkMass(id, true));
+        model.enter(this);
+        try {
+            return model.core.dir.massHandle(model.core.engine.linkMassA(id));
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the handle of the second mass (the same as the first for a plane contact). */
     public Mass getMass2() {
-        checkValid();
-        return model.massHandle(model.engineLinkMass(id, false));
+        model.enter(this);
+        try {
+            return model.core.dir.massHandle(model.core.engine.linkMassB(id));
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the current distance between the two masses (for a plane contact, the gap to the plane). */
     public double getDistance() {
-        checkValid();
-        return model.getLinkDistance(model.linkName(id));
+        model.enter(this);
+        try {
+            return model.core.params.linkDistance(id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the distance minus the length parameter (rest length, threshold, radius, offset or limit). */
     public double getElongation() {
-        checkValid();
-        return model.getLinkElongation(model.linkName(id));
+        model.enter(this);
+        try {
+            return model.core.params.linkElongation(id);
+        } finally {
+            model.exit();
+        }
     }
 
     double stiffness() {
-        checkValid();
-        return model.getLinkStiffness(model.linkName(id));
+        model.enter(this);
+        try {
+            return model.core.params.linkStiffness(id);
+        } finally {
+            model.exit();
+        }
     }
 
     void stiffness(double K) {
-        checkValid();
-        model.setLinkStiffness(model.linkName(id), K);
+        Check.finite("setStiffness", toString(), "K", K);
+        model.enter(this);
+        try {
+            model.core.params.setLink("setStiffness", id, K, Double.NaN, Double.NaN);
+        } finally {
+            model.exit();
+        }
     }
 
     double damping() {
-        checkValid();
-        return model.getLinkDamping(model.linkName(id));
+        model.enter(this);
+        try {
+            return model.core.params.linkDamping(id);
+        } finally {
+            model.exit();
+        }
     }
 
     void damping(double Z) {
-        checkValid();
-        model.setLinkDamping(model.linkName(id), Z);
+        Check.finite("setDamping", toString(), "Z", Z);
+        model.enter(this);
+        try {
+            model.core.params.setLink("setDamping", id, Double.NaN, Z, Double.NaN);
+        } finally {
+            model.exit();
+        }
     }
 
     double length() {
-        checkValid();
-        return model.getLinkDRest(model.linkName(id));
+        model.enter(this);
+        try {
+            return model.core.params.linkLength(id);
+        } finally {
+            model.exit();
+        }
     }
 
-    void length(double d) {
-        checkValid();
-        model.setLinkDRest(model.linkName(id), d);
+    void length(String op, double d) {
+        Check.finite(op, toString(), "d", d);
+        model.enter(this);
+        try {
+            model.core.params.setLink(op, id, Double.NaN, Double.NaN, d);
+        } finally {
+            model.exit();
+        }
     }
 }

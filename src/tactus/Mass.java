@@ -39,49 +39,78 @@ public abstract class Mass extends Module {
 
     @Override
     public String getName() {
-        checkValid();
-        return model.massName(id);
+        model.enter(this);
+        try {
+            return model.core.dir.massName(id);
+        } finally {
+            model.exit();
+        }
     }
 
     @Override
     public String getType() {
-        checkValid();
-        return model.massKindOf(id).label();
+        model.enter(this);
+        try {
+            return model.core.dir.massKind(id).label();
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return a copy of the current position, in model units. */
     public Vect3D getPosition() {
-        checkValid();
-        return model.position(id, new Vect3D());
+        return getPosition(new Vect3D());
     }
 
     /** Writes the current position into {@code out} without allocating, and returns it. */
     public Vect3D getPosition(Vect3D out) {
-        checkValid();
-        return model.position(id, out);
+        model.enter(this);
+        try {
+            return model.core.state.position(id, out);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the velocity over the last step, in units per second. */
     public Vect3D getVelocity() {
-        checkValid();
-        return model.velocity(id, new Vect3D());
+        model.enter(this);
+        try {
+            return model.core.state.velocity(id, new Vect3D());
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N). */
     public Vect3D getForce() {
-        checkValid();
-        return model.force(id, new Vect3D());
+        model.enter(this);
+        try {
+            return model.core.state.force(id, new Vect3D());
+        } finally {
+            model.exit();
+        }
     }
 
-    /** Moves this mass to a position with zero velocity. */
+    /** Moves this mass to a position with zero velocity (see {@link PhysicalModel#setMatPosition}). */
     public void setPosition(Vect3D pos) {
-        checkValid();
-        model.setMatPosition(model.massName(id), pos);
+        Check.vector("setPosition", toString(), "pos", pos);
+        model.enter(this);
+        try {
+            model.core.state.setPosition(id, pos);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Adds a force for the next step only (REAL_UNITS: N). */
     public void applyForce(double fx, double fy, double fz) {
-        checkValid();
-        model.triggerForceImpulse(model.massName(id), fx, fy, fz);
+        PhysicalModel.checkForce("applyForce", toString(), fx, fy, fz);
+        model.enter(this);
+        try {
+            model.core.state.addImpulse(id, fx, fy, fz);
+        } finally {
+            model.exit();
+        }
     }
 }

@@ -11,25 +11,43 @@ public abstract class Oscillator extends InertialMass {
 
     /** @return the internal stiffness (REAL_UNITS: N/m). */
     public double getStiffness() {
-        checkValid();
-        return model.getMatStiffness(model.massName(id));
+        model.enter(this);
+        try {
+            return model.core.params.oscStiffness("getStiffness", id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Sets the internal stiffness (REAL_UNITS: N/m). */
     public void setStiffness(double K) {
-        checkValid();
-        model.setMatStiffness(model.massName(id), K);
+        Check.finite("setStiffness", toString(), "K", K);
+        model.enter(this);
+        try {
+            model.core.params.setOsc("setStiffness", id, K, Double.NaN);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the internal damping (REAL_UNITS: N·s/m). */
     public double getDamping() {
-        checkValid();
-        return model.getMatDamping(model.massName(id));
+        model.enter(this);
+        try {
+            return model.core.params.oscDamping("getDamping", id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Sets the internal damping (REAL_UNITS: N·s/m). */
     public void setDamping(double Z) {
-        checkValid();
-        model.setMatDamping(model.massName(id), Z);
+        Check.finite("setDamping", toString(), "Z", Z);
+        model.enter(this);
+        try {
+            model.core.params.setOsc("setDamping", id, Double.NaN, Z);
+        } finally {
+            model.exit();
+        }
     }
 }

@@ -12,19 +12,31 @@ public final class PlaneContact3D extends ElasticInteraction {
 
     /** @return the plane's coordinate on its axis. */
     public double getPlanePosition() {
-        checkValid();
-        return model.linkAuxOut(id);
+        model.enter(this);
+        try {
+            return model.core.params.planePosition("getPlanePosition", id);
+        } finally {
+            model.exit();
+        }
     }
 
     /** Moves the plane along its axis. */
     public void setPlanePosition(double pos) {
-        checkValid();
-        model.setLinkAuxOf("setPlanePosition", id, pos);
+        model.enter(this);
+        try {
+            model.core.params.setPlanePosition("setPlanePosition", id, pos);
+        } finally {
+            model.exit();
+        }
     }
 
     /** @return the plane's axis: 0 (x), 1 (y) or 2 (z). */
     public int getOrientation() {
-        checkValid();
-        return model.linkAxisOf(id);
+        model.enter(this);
+        try {
+            return model.core.params.planeAxis("getOrientation", id);
+        } finally {
+            model.exit();
+        }
     }
 }

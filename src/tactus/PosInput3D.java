@@ -11,7 +11,12 @@ public final class PosInput3D extends Mass {
 
     /** Sets the target position the driver follows, in model units. */
     public void drivePosition(Vect3D pos) {
-        checkValid();
-        model.setHapticPosition(model.massName(id), pos);
+        Check.vector("drivePosition", toString(), "pos", pos);
+        model.enter(this);
+        try {
+            model.core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+        } finally {
+            model.exit();
+        }
     }
 }

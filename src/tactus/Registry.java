@@ -4,18 +4,36 @@ import java.util.Arrays;
 import java.util.HashMap;
 
 /**
- * Names and insertion order of the live modules of one family (masses or interactions):
- * name to id, id to name, and the index of each live module in insertion order.
+ * Names and insertion order of the live modules of one family (masses or interactions): name to id, id to
+ * name, and the index of each live module in insertion order.
+ *
+ * <p>A registry either keeps names unique (masses) or lets several modules share one name (interactions, as
+ * the paper's sketches do: seventy contacts all called "col"). With shared names, {@link #id(String)} is the
+ * first live module of that name in insertion order, which is how the paper's engine resolves them.
  */
 final class Registry {
-    private final HashMap<String, Integer> byName = new HashMap<>();
+    private final boolean uniqueNames;
+    /** Name to the ids that carry it, in insertion order (almost always one). */
+    private final HashMap<String, int[]> byName = new HashMap<>();
     private String[] names = new String[16];
     private int[] order = new int[16];
     private int size;
     private int[] indexOfId = new int[0];
     private boolean indexStale = true;
 
+    Registry(boolean uniqueNames) {
+        this.uniqueNames = uniqueNames;
+    }
+
+    /** @return true when names must be unique in this registry. */
+    boolean uniqueNames() {
+        return uniqueNames;
+    }
+
     void add(String name, int id) {
+        if (uniqueNames && byName.containsKey(name)) {
+            throw new IllegalStateException("duplicate name \"" + name + "\" in a unique registry");
+        }
         if (id >= names.length) {
             names = Arrays.copyOf(names, Math.max(id + 1, names.length * 2));
         }
@@ -23,13 +41,35 @@ final class Registry {
             order = Arrays.copyOf(order, order.length * 2);
         }
         names[id] = name;
-        byName.put(name, id);
+        int[] ids = byName.get(name);
+        if (ids == null) {
+            byName.put(name, new int[] {id});
+        } else {
+            int[] grown = Arrays.copyOf(ids, ids.length + 1);
+            grown[ids.length] = id;
+            byName.put(name, grown);
+        }
         order[size++] = id;
         indexStale = true;
     }
 
     void remove(int id) {
-        byName.remove(names[id]);
+        String name = names[id];
+        int[] ids = byName.get(name);
+        if (ids != null) {
+            int[] kept = new int[ids.length];
+            int n = 0;
+            for (int other : ids) {
+                if (other != id) {
+                    kept[n++] = other;
+                }
+            }
+            if (n == 0) {
+                byName.remove(name);
+            } else {
+                byName.put(name, Arrays.copyOf(kept, n));
+            }
+        }
         int w = 0;
         for (int r = 0; r < size; r++) {
             if (order[r] != id) {
@@ -46,10 +86,16 @@ final class Registry {
         indexStale = true;
     }
 
-    /** @return the id of a live module, or -1 when no module has that name. */
+    /** @return the id of the first live module with this name in insertion order, or -1 when there is none. */
     int id(String name) {
-        Integer id = name == null ? null : byName.get(name);
-        return id == null ? -1 : id;
+        int[] ids = name == null ? null : byName.get(name);
+        return ids == null ? -1 : ids[0];
+    }
+
+    /** @return how many live modules carry this name (0, 1, or more for shared interaction names). */
+    int count(String name) {
+        int[] ids = name == null ? null : byName.get(name);
+        return ids == null ? 0 : ids.length;
     }
 
     String name(int id) {
@@ -65,7 +111,7 @@ final class Registry {
         return index >= 0 && index < size ? order[index] : -1;
     }
 
-    /** @return the insertion-order index of a live id. */
+    /** @return the insertion-order index of a live id, or -1. */
     int indexOf(int id) {
         if (indexStale) {
             indexOfId = new int[names.length];
@@ -75,9 +121,10 @@ final class Registry {
             }
             indexStale = false;
         }
-        return id < indexOfId.length ? indexOfId[id] : -1;
+        return id >= 0 && id < indexOfId.length ? indexOfId[id] : -1;
     }
 
+    /** @return a copy of the live ids in insertion order. */
     int[] ids() {
         return Arrays.copyOf(order, size);
     }

@@ -23,6 +23,6 @@ public final class Spring3D extends Interaction {
 
     /** Sets the rest length, &ge; 0. */
     public void setLength(double d) {
-        length(d);
+        length("setLength", d);
     }
 }

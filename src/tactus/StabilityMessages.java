@@ -10,8 +10,10 @@ final class StabilityMessages {
     }
 
     /** @return a one-line description of an unstable report, or null if it is stable without negative damping. */
-    static String describe(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u, int contacts,
+    static String describe(StabilityReport r, Engine e, Directory dir, UnitScale u, int contacts,
                            String[] groupNames) {
+        Registry mats = dir.mats;
+        Registry links = dir.links;
         if (r.isStable()) {
             if (r.hasNegativeDamping()) {
                 return negativeDamping(r, e, mats, links, u);
@@ -56,7 +58,8 @@ final class StabilityMessages {
                 double k = u.stiffnessOut(kk);
                 double limit = u.stiffnessOut(linearLimit(r, e, contacts, kk, v -> e.setOscillator(id, v, zz)));
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": K = " + fmt(k)
-                        + " is above its limit of about " + fmt(limit);
+                        + (limit > 0 ? " is above its limit of about " + fmt(limit)
+                        : " is too high, and lowering it alone cannot make the model stable (lower its damping Z)");
             } else {
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": mass = " + fmt(e.mass(id))
                         + " is below its limit of about " + fmt(e.mass(id) / scale) + " (air friction)";
@@ -85,6 +88,31 @@ final class StabilityMessages {
         }
         double slope = (l2 - r.lambda()) / (probe - value);
         return slope > 0 ? value + (StabilityReport.LIMIT - r.lambda()) / slope : value * StabilityReport.LIMIT / r.lambda();
+    }
+
+    /** @return the module where the bound is tightest, as {@code Type "name"}, or null. */
+    static String culprit(StabilityReport r, Engine e, Directory dir, String[] groupNames) {
+        if (r.culpritLink() >= 0 && e.isLink(r.culpritLink())) {
+            return e.linkKind(r.culpritLink()).label() + " \"" + dir.linkName(r.culpritLink()) + "\"";
+        }
+        if (r.culpritGroup() >= 0 && r.culpritGroup() < groupNames.length) {
+            return "the contact group of subset \"" + groupNames[r.culpritGroup()] + "\"";
+        }
+        if (r.culpritMass() >= 0 && e.isMass(r.culpritMass())) {
+            return dir.describeMass(r.culpritMass());
+        }
+        return null;
+    }
+
+    /** @return the first module with negative damping, as {@code Type "name"}, or null. */
+    static String negativeDampingModule(StabilityReport r, Engine e, Directory dir) {
+        if (r.negativeDampingLink() >= 0 && e.isLink(r.negativeDampingLink())) {
+            return e.linkKind(r.negativeDampingLink()).label() + " \"" + dir.linkName(r.negativeDampingLink()) + "\"";
+        }
+        if (r.negativeDampingMass() >= 0 && e.isMass(r.negativeDampingMass())) {
+            return dir.describeMass(r.negativeDampingMass());
+        }
+        return null;
     }
 
     private static String negativeDamping(StabilityReport r, Engine e, Registry mats, Registry links, UnitScale u) {

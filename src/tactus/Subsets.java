@@ -44,10 +44,6 @@ final class Subsets {
         return groups.get(group);
     }
 
-    Set<String> names() {
-        return groups.keySet();
-    }
-
     void clear() {
         groups.clear();
     }

@@ -1,7 +1,5 @@
 package tactus;
 
-import tactus.engine.StabilityReport;
-
 /**
  * Thrown under {@link StabilityPolicy#THROW} when a model, as built or as changed, is outside the
  * stable region of the explicit scheme. The message names the module, the parameter, its value and

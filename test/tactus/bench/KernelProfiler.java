@@ -38,9 +38,12 @@ final class KernelProfiler {
         if (model instanceof Engine) {
             engine = (Engine) model;
         } else if (model instanceof PhysicalModel) {
-            Field f = PhysicalModel.class.getDeclaredField("engine");
+            Field f = PhysicalModel.class.getDeclaredField("core");
             f.setAccessible(true);
-            engine = (Engine) f.get(model);
+            Object core = f.get(model);
+            Field e = core.getClass().getDeclaredField("engine");
+            e.setAccessible(true);
+            engine = (Engine) e.get(core);
         } else {
             return "";
         }

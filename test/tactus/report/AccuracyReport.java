@@ -20,7 +20,7 @@ import tactus.Mass;
 import tactus.PhysicalModel;
 import tactus.StabilityPolicy;
 import tactus.Vect3D;
-import tactus.engine.StabilityReport;
+import tactus.StabilityReport;
 import tactus.engine.Tuning;
 import tactus.paramSystem;
 import tactus.render.LinePlot;
@@ -1008,9 +1008,9 @@ public final class AccuracyReport {
             int nl = pm.getNumberOfLinks();
             String name = isMesh ? fmt("mesh %d×%d", meshes[v], meshes[v]) : fmt("string of %d", chains[v - 3]);
             s.append(fmt("| %s | %d | %d | %d | %s | %s | %.4f | %s | %s |\n", name, nm, nl, nm + nl, analysis.ms(),
-                    r.method(), r.lambda(), change.ms(), changeOff.ms()));
+                    (r.isConverged() ? "converged" : "not converged"), r.lambda(), change.ms(), changeOff.ms()));
             log(fmt("   %-16s %6d elements: analysis %s ms (%s), change %s ms (WARN) / %s ms (OFF)", name,
-                    nm + nl, analysis.ms(), r.method(), change.ms(), changeOff.ms()));
+                    nm + nl, analysis.ms(), (r.isConverged() ? "converged" : "not converged"), change.ms(), changeOff.ms()));
             if (v == 2) {
                 analysis100k = analysis.cpu / 1e6;
                 change100k = change.cpu / 1e6;

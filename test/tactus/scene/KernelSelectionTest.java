@@ -27,7 +27,7 @@ class KernelSelectionTest {
 
     @Test
     void springsOnlySceneRunsThreeKernels() {
-        assertArrayEquals(new String[] {"Free3D", "Fixed", "Spring"}, springsOnly().getPlanKernels());
+        assertArrayEquals(new String[] {"free 3D masses", "fixed points", "springs"}, springsOnly().getSimulatedEffects());
     }
 
     @Test
@@ -35,21 +35,21 @@ class KernelSelectionTest {
         PhysicalModel pm = springsOnly();
         pm.computeNSteps(10);
         pm.setGravity(1e-6);
-        assertArrayEquals(new String[] {"Medium3D", "Fixed", "Spring"}, pm.getPlanKernels());
+        assertArrayEquals(new String[] {"3D masses with gravity or friction", "fixed points", "springs"}, pm.getSimulatedEffects());
         pm.setGravity(0);
-        assertArrayEquals(new String[] {"Free3D", "Fixed", "Spring"}, pm.getPlanKernels());
+        assertArrayEquals(new String[] {"free 3D masses", "fixed points", "springs"}, pm.getSimulatedEffects());
         pm.setFriction(0.01);
-        assertArrayEquals(new String[] {"Medium3D", "Fixed", "Spring"}, pm.getPlanKernels());
+        assertArrayEquals(new String[] {"3D masses with gravity or friction", "fixed points", "springs"}, pm.getSimulatedEffects());
     }
 
     @Test
     void contactKernelComesAndGoesWithContacts() {
         PhysicalModel pm = springsOnly();
         pm.addContact3D("c", 0.5, 0.1, 0, "g", "b");
-        assertArrayEquals(new String[] {"Free3D", "Fixed", "Spring", "Proximity"}, pm.getPlanKernels());
+        assertArrayEquals(new String[] {"free 3D masses", "fixed points", "springs", "contacts"}, pm.getSimulatedEffects());
         pm.computeNSteps(10);
         pm.removeLink("c");
-        assertArrayEquals(new String[] {"Free3D", "Fixed", "Spring"}, pm.getPlanKernels());
+        assertArrayEquals(new String[] {"free 3D masses", "fixed points", "springs"}, pm.getSimulatedEffects());
     }
 
     // One module of every kind: one kernel each, masses first, in kind order.
@@ -77,10 +77,10 @@ class KernelSelectionTest {
         pm.addDamper3D("da", 0.1, "m3b", "m2");
         pm.addSpring3D("sp", 1, 0.1, "m3b", "pi");
         pm.init();
-        String[] expected = {"Free3D", "Plane2D", "Line1D", "Osc3D", "Osc1D", "Input3D", "Input3D", "Fixed", "Fixed",
-                             "Spring", "Damper", "SpringDamper", "SpringDamper1D", "Stretched", "Proximity",
-                             "Stretched", "Plane", "Attractor"};
-        assertArrayEquals(expected, pm.getPlanKernels());
+        String[] expected = {"free 3D masses", "masses in a plane", "1D masses", "3D oscillators", "1D oscillators", "input modules", "input modules", "fixed points", "fixed points",
+                             "springs", "dampers", "spring-dampers", "1D spring-dampers", "ropes and bubbles", "contacts",
+                             "ropes and bubbles", "plane contacts", "attractors"};
+        assertArrayEquals(expected, pm.getSimulatedEffects());
         // 10 masses of 9 kinds and 9 links of 9 kinds: 18 kernels, the two Mass3D share one
         assertEquals(10, pm.getNumberOfMats());
         assertEquals(9, pm.getNumberOfLinks());

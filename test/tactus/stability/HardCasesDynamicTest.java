@@ -17,7 +17,7 @@ import tactus.PhysicalModel;
 import tactus.StabilityPolicy;
 import tactus.UnstableModelException;
 import tactus.Vect3D;
-import tactus.engine.StabilityReport;
+import tactus.StabilityReport;
 
 /**
  * Hard cases that change while they run: negative damping feeding energy in, topology edits on an oscillating

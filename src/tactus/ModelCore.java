@@ -1,0 +1,40 @@
+package tactus;
+
+import tactus.engine.Engine;
+
+/**
+ * The package-private rooms behind one {@link PhysicalModel}, wired together: the engine, the directory of
+ * names and handles, the clock and medium, subsets and contact groups, the stability guard, the divergence
+ * watch, the module builder and editor, and state access. {@code PhysicalModel} only takes the lock and
+ * delegates here; every method of these rooms assumes the caller holds the model's lock.
+ */
+final class ModelCore {
+    final PhysicalModel model;
+    final Engine engine = new Engine();
+    final Directory dir = new Directory(engine);
+    final Timebase time;
+    final SubsetBook subsets;
+    final StabilityGuard guard;
+    final DivergenceWatch watch = new DivergenceWatch(engine, dir);
+    final ParamEditor params;
+    final ModuleBuilder builder;
+    final TopologyEditor topology;
+    final StateAccess state;
+    /** True once init() has run: from then on topology edits compile at once, on the editing thread. */
+    boolean initialized;
+
+    ModelCore(PhysicalModel model, paramSystem system, int simRate, int displayRate) {
+        this.model = model;
+        this.time = new Timebase(engine, dir, system, simRate, displayRate);
+        this.subsets = new SubsetBook(this);
+        this.guard = new StabilityGuard(engine, dir, time, subsets);
+        this.params = new ParamEditor(this);
+        this.builder = new ModuleBuilder(this);
+        this.topology = new TopologyEditor(this);
+        this.state = new StateAccess(this);
+    }
+
+    UnitScale units() {
+        return time.units;
+    }
+}

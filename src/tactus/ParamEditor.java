@@ -1,0 +1,183 @@
+package tactus;
+
+import tactus.engine.Engine;
+import tactus.engine.LinkKind;
+import tactus.engine.MassKind;
+
+/**
+ * Reads and changes module parameters in the model's units: inertia, oscillator stiffness and damping, link
+ * stiffness, damping and length, plane positions and attraction factors. Every change is validated before
+ * anything is written, then checked by the stability guard with an undo. The caller holds the model's lock.
+ */
+final class ParamEditor {
+    private final ModelCore c;
+    private final Engine engine;
+
+    ParamEditor(ModelCore core) {
+        this.c = core;
+        this.engine = core.engine;
+    }
+
+    // ---------------------------------------------------------------- masses
+
+    void requireInertial(String op, int id) {
+        MassKind k = engine.massKind(id);
+        if (!k.isInertial()) {
+            throw Check.fail(op, c.dir.massName(id), "a " + k.label() + " has no mass parameter");
+        }
+    }
+
+    void requireOsc(String op, int id) {
+        MassKind k = engine.massKind(id);
+        if (!k.isOscillator()) {
+            throw Check.fail(op, c.dir.massName(id), "only Osc3D and Osc1D have stiffness and damping, this is a "
+                    + k.label());
+        }
+    }
+
+    double mass(String op, int id) {
+        requireInertial(op, id);
+        return engine.mass(id);
+    }
+
+    void setMass(String op, int id, double mass) {
+        requireInertial(op, id);
+        Check.positive(op, c.dir.massName(id), "mass", mass);
+        double old = engine.mass(id);
+        engine.setMass(id, mass);
+        c.guard.afterChange(() -> engine.setMass(id, old));
+    }
+
+    double oscStiffness(String op, int id) {
+        requireOsc(op, id);
+        return c.units().stiffnessOut(engine.oscStiffness(id));
+    }
+
+    double oscDamping(String op, int id) {
+        requireOsc(op, id);
+        return c.units().dampingOut(engine.oscDamping(id));
+    }
+
+    /** Sets an oscillator's stiffness and/or damping in model units; NaN keeps the current value. */
+    void setOsc(String op, int id, double K, double Z) {
+        requireOsc(op, id);
+        String n = c.dir.massName(id);
+        if (!Double.isNaN(K)) {
+            Check.finite(op, n, "K", K);
+        }
+        if (!Double.isNaN(Z)) {
+            Check.finite(op, n, "Z", Z);
+        }
+        double oldK = engine.oscStiffness(id), oldZ = engine.oscDamping(id);
+        engine.setOscillator(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z));
+        c.guard.afterChange(() -> engine.setOscillator(id, oldK, oldZ));
+    }
+
+    // ---------------------------------------------------------------- interactions
+
+    double linkStiffness(int id) {
+        return c.units().stiffnessOut(engine.linkStiffness(id));
+    }
+
+    double linkDamping(int id) {
+        return c.units().dampingOut(engine.linkDamping(id));
+    }
+
+    double linkLength(int id) {
+        return engine.linkLength(id);
+    }
+
+    /** @return the current distance between the link's masses (the gap to the plane for a plane contact). */
+    double linkDistance(int id) {
+        return engine.linkDistance(id);
+    }
+
+    /** @return the distance minus the length parameter. */
+    double linkElongation(int id) {
+        return engine.linkDistance(id) - engine.linkLength(id);
+    }
+
+    /** @return true when the kind has a length parameter that the user may set (every kind but the damper). */
+    static boolean hasLengthParam(LinkKind k) {
+        return k.hasLength() || k == LinkKind.ATTRACTOR3D;
+    }
+
+    /**
+     * Sets any of stiffness, damping, length of one link in model units; NaN means "leave unchanged" (public
+     * callers reject NaN first). Validates everything before changing anything.
+     */
+    void setLink(String op, int id, double K, double Z, double len) {
+        LinkKind kind = engine.linkKind(id);
+        String n = c.dir.linkName(id);
+        if (!Double.isNaN(K) && !kind.hasStiffness()) {
+            throw Check.fail(op, n, "a " + kind.label() + " has no stiffness");
+        }
+        if (!Double.isNaN(Z) && !kind.hasDamping()) {
+            throw Check.fail(op, n, "a " + kind.label() + " has no damping");
+        }
+        if (!Double.isNaN(len)) {
+            if (!hasLengthParam(kind)) {
+                throw Check.fail(op, n, "a " + kind.label() + " has no length parameter");
+            }
+            checkLength(op, n, kind, len);
+        }
+        double oldK = engine.linkStiffness(id), oldZ = engine.linkDamping(id), oldL = engine.linkLength(id);
+        engine.setLinkParams(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z), Double.isNaN(len) ? oldL : len);
+        c.guard.afterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
+    }
+
+    /** Validates a length parameter for a link kind: any finite offset for planes, &gt; 0 for attractors, else &ge; 0. */
+    static void checkLength(String op, String element, LinkKind kind, double len) {
+        if (kind == LinkKind.PLANE_CONTACT3D) {
+            Check.finite(op, element, "l0", len);
+        } else if (kind == LinkKind.ATTRACTOR3D) {
+            Check.positive(op, element, "dLim", len);
+        } else {
+            Check.nonNegative(op, element, "dist", len);
+        }
+    }
+
+    /** @return the plane position of a plane contact, in length units. */
+    double planePosition(String op, int id) {
+        requireKind(op, id, LinkKind.PLANE_CONTACT3D);
+        return engine.linkAux(id);
+    }
+
+    void setPlanePosition(String op, int id, double pos) {
+        requireKind(op, id, LinkKind.PLANE_CONTACT3D);
+        Check.finite(op, c.dir.linkName(id), "pos", pos);
+        double old = engine.linkAux(id);
+        engine.setLinkAux(id, pos);
+        c.guard.afterChange(() -> engine.setLinkAux(id, old));
+    }
+
+    /** @return the attraction factor of an attractor (REAL_UNITS: N·m²). */
+    double attraction(String op, int id) {
+        requireKind(op, id, LinkKind.ATTRACTOR3D);
+        return c.units().forceOut(engine.linkAux(id));
+    }
+
+    void setAttraction(String op, int id, double attr) {
+        requireKind(op, id, LinkKind.ATTRACTOR3D);
+        Check.finite(op, c.dir.linkName(id), "attr", attr);
+        double old = engine.linkAux(id);
+        engine.setLinkAux(id, c.units().forceIn(attr));
+        c.guard.afterChange(() -> engine.setLinkAux(id, old));
+    }
+
+    /** @return the axis (0 = x, 1 = y, 2 = z) of a plane contact. */
+    int planeAxis(String op, int id) {
+        requireKind(op, id, LinkKind.PLANE_CONTACT3D);
+        return engine.linkAxis(id);
+    }
+
+    private void requireKind(String op, int id, LinkKind kind) {
+        LinkKind k = engine.linkKind(id);
+        if (k != kind) {
+            throw Check.fail(op, c.dir.linkName(id), "only a " + kind.label() + " has this parameter, this is a "
+                    + k.label());
+        }
+    }
+}

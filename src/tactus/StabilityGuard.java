@@ -1,0 +1,116 @@
+package tactus;
+
+import tactus.engine.Engine;
+import tactus.engine.StabilityAnalyzer;
+
+/**
+ * The automatic stability check of a model: after {@link PhysicalModel#init()}, every parameter or topology
+ * change is followed by an analysis of the whole network; under {@link StabilityPolicy#WARN} an unstable
+ * result prints one line (once per distinct message), under {@link StabilityPolicy#THROW} the change is undone
+ * and an {@link UnstableModelException} is thrown. Changes made in a batch (a subset, a rate change) are
+ * analysed once, at the end. The caller holds the model's lock.
+ */
+final class StabilityGuard {
+    private final Engine engine;
+    private final Directory dir;
+    private final Timebase time;
+    private final SubsetBook subsets;
+    private StabilityPolicy policy = StabilityPolicy.WARN;
+    private int maxContacts = StabilityAnalyzer.DEFAULT_MAX_CONTACTS;
+    private boolean armed;
+    private int deferred;
+    private String lastWarning;
+
+    StabilityGuard(Engine engine, Directory dir, Timebase time, SubsetBook subsets) {
+        this.engine = engine;
+        this.dir = dir;
+        this.time = time;
+        this.subsets = subsets;
+    }
+
+    /** Starts checking every later change (called by init()); the model as it is now is checked at once. */
+    void arm() {
+        armed = true;
+        lastWarning = null;
+        afterChange(null);
+    }
+
+    StabilityPolicy policy() {
+        return policy;
+    }
+
+    void setPolicy(StabilityPolicy p) {
+        policy = p;
+        lastWarning = null;
+    }
+
+    int maxContacts() {
+        return maxContacts;
+    }
+
+    void setMaxContacts(int n) {
+        maxContacts = n;
+    }
+
+    /** Suspends the check until the matching {@link #resume()}: for changes made as one batch. */
+    void defer() {
+        deferred++;
+    }
+
+    void resume() {
+        deferred--;
+    }
+
+    /**
+     * Checks the model after a change. Under THROW an unstable model is restored with {@code undo} (which may be
+     * null for a check of the model as built) and an exception is thrown.
+     */
+    void afterChange(Runnable undo) {
+        if (!armed || policy == StabilityPolicy.OFF || deferred > 0) {
+            return;
+        }
+        tactus.engine.StabilityReport r = analyze();
+        String msg = message(r);
+        if (msg == null) {
+            lastWarning = null;
+            return;
+        }
+        if (!r.isStable() && policy == StabilityPolicy.THROW) {
+            if (undo != null) {
+                undo.run();
+            }
+            throw new UnstableModelException(msg, facadeReport(r));
+        }
+        if (!msg.equals(lastWarning)) {
+            System.err.println(msg);
+            lastWarning = msg;
+        }
+    }
+
+    /** @return the report of the model as it is now, in facade terms. */
+    StabilityReport report() {
+        return facadeReport(analyze());
+    }
+
+    /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
+    String describe() {
+        tactus.engine.StabilityReport r = analyze();
+        String msg = message(r);
+        return msg != null ? msg : String.format(java.util.Locale.ROOT,
+                "Tactus: stable (lambda max = %.4g < 4, every stiffness could grow %.3gx)", r.lambda(), r.headroom());
+    }
+
+    private tactus.engine.StabilityReport analyze() {
+        return StabilityAnalyzer.analyze(engine.plan(), maxContacts);
+    }
+
+    private String message(tactus.engine.StabilityReport r) {
+        return StabilityMessages.describe(r, engine, dir, time.units, maxContacts, subsets.groupNames());
+    }
+
+    private StabilityReport facadeReport(tactus.engine.StabilityReport r) {
+        String[] groups = subsets.groupNames();
+        return new StabilityReport(r, StabilityMessages.culprit(r, engine, dir, groups),
+                StabilityMessages.negativeDampingModule(r, engine, dir));
+    }
+}

@@ -1,0 +1,98 @@
+package tactus;
+
+import tactus.engine.EnergyMeter;
+import tactus.engine.Engine;
+import tactus.engine.MassKind;
+import tactus.engine.StepPlan;
+
+/**
+ * Reads and writes the simulated state in the model's units: positions, velocities (always in units per
+ * second), forces, hand-set positions and velocities, force impulses, the haptic avatar's target and
+ * accumulated force, and the energies. Nothing here allocates except the facade getters that return a new
+ * {@link Vect3D}. The caller holds the model's lock.
+ */
+final class StateAccess {
+    private final ModelCore c;
+    private final Engine engine;
+    private final double[] tmp = new double[3];
+
+    StateAccess(ModelCore core) {
+        this.c = core;
+        this.engine = core.engine;
+    }
+
+    Vect3D position(int id, Vect3D out) {
+        engine.position(id, tmp);
+        return out.set(tmp[0], tmp[1], tmp[2]);
+    }
+
+    Vect3D velocity(int id, Vect3D out) {
+        engine.displacement(id, tmp);
+        UnitScale u = c.units();
+        return out.set(u.velocityOut(tmp[0]), u.velocityOut(tmp[1]), u.velocityOut(tmp[2]));
+    }
+
+    Vect3D force(int id, Vect3D out) {
+        engine.force(id, tmp);
+        UnitScale u = c.units();
+        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
+    }
+
+    /** Moves a mass to a validated position with zero velocity; its links forget their previous distance. */
+    void setPosition(int id, Vect3D pos) {
+        engine.setPosition(id, pos.x, pos.y, pos.z);
+    }
+
+    /** Sets the velocity (units per second) of an inertial mass, keeping its position. */
+    void setVelocity(String op, int id, Vect3D vel) {
+        c.params.requireInertial(op, id);
+        engine.position(id, tmp);
+        UnitScale u = c.units();
+        engine.setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - u.velocityIn(vel.x),
+                tmp[1] - u.velocityIn(vel.y), tmp[2] - u.velocityIn(vel.z));
+    }
+
+    /** Adds a force (model units) to a mass for the next step only. */
+    void addImpulse(int id, double fx, double fy, double fz) {
+        UnitScale u = c.units();
+        engine.addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
+    }
+
+    void requireInput(String op, int id) {
+        MassKind k = engine.massKind(id);
+        if (!k.isInput()) {
+            throw Check.fail(op, c.dir.massName(id), "not an input module, this is a " + k.label());
+        }
+    }
+
+    /** Sets the target that an input module follows through its EWMA. */
+    void setInputTarget(int id, double x, double y, double z) {
+        engine.setInputTarget(id, x, y, z);
+    }
+
+    /**
+     * Writes the force accumulated on an input module since the last call (summed over the steps in between,
+     * model units) into {@code out} and resets it; a PosInput3D drops its forces and reads zero.
+     */
+    Vect3D takeForce(int id, Vect3D out) {
+        engine.takeForce(id, tmp);
+        if (engine.massKind(id) == MassKind.POS_INPUT3D) {
+            return out.set(0, 0, 0);
+        }
+        UnitScale u = c.units();
+        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
+    }
+
+    double kineticEnergy() {
+        return c.units().forceOut(EnergyMeter.kinetic(engine.plan()));
+    }
+
+    double potentialEnergy() {
+        return c.units().forceOut(EnergyMeter.potential(engine.plan()));
+    }
+
+    double totalEnergy() {
+        StepPlan p = engine.plan();
+        return c.units().forceOut(EnergyMeter.kinetic(p) + EnergyMeter.potential(p));
+    }
+}

@@ -1,0 +1,70 @@
+package tactus;
+
+import tactus.engine.Engine;
+import tactus.engine.MassKind;
+
+/**
+ * Removes modules, turns masses into fixed points and clears the model, keeping the directory, the subsets,
+ * the contact groups and the divergence state consistent with the engine. Once the model is initialised,
+ * every topology edit recompiles the step plan at once, on the editing thread, so that the threads that step
+ * the model or exchange with it (audio, haptics) never compile. The caller holds the model's lock.
+ */
+final class TopologyEditor {
+    private final ModelCore c;
+    private final Engine engine;
+
+    TopologyEditor(ModelCore core) {
+        this.c = core;
+        this.engine = core.engine;
+    }
+
+    /** Compiles the step plan now if the model is initialised (the edit is then paid for by its caller). */
+    void compileIfRunning() {
+        if (c.initialized) {
+            engine.compile();
+        }
+    }
+
+    void removeLink(int id) {
+        engine.removeLink(id);
+        c.subsets.forgetLink(id);
+        c.dir.forgetLink(id);
+        compileIfRunning();
+    }
+
+    void removeMass(int id) {
+        boolean wasDiverged = engine.divergedMass() == id;
+        for (int l : c.dir.links.ids()) {
+            if (engine.linkMassA(l) == id || engine.linkMassB(l) == id) {
+                engine.removeLink(l);
+                c.subsets.forgetLink(l);
+                c.dir.forgetLink(l);
+            }
+        }
+        engine.removeMass(id);
+        c.dir.forgetMass(id);
+        c.subsets.forgetMass(id);
+        if (wasDiverged) {
+            c.watch.clear();
+        }
+        compileIfRunning();
+    }
+
+    /** Turns a mass into a fixed point at its current position; its interactions stay attached. */
+    Ground3D makeFixed(int id) {
+        engine.makeFixed(id);
+        Ground3D h = (Ground3D) c.dir.storeMassHandle(c.model, id, MassKind.GROUND3D);
+        c.guard.afterChange(null);
+        compileIfRunning();
+        return h;
+    }
+
+    /** Removes every mass, interaction, subset and contact group; lets a diverged model run again. */
+    void clear() {
+        c.dir.clear();
+        engine.clear();
+        c.subsets.clear();
+        c.watch.clear();
+        compileIfRunning();
+    }
+}
