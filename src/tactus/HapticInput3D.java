@@ -12,7 +12,7 @@ public final class HapticInput3D extends Mass {
 
     /** Sets the device position the avatar follows, in model units. */
     public void setDevicePosition(Vect3D pos) {
-        Check.vector("setDevicePosition", toString(), "pos", pos);
+        checkVector("setDevicePosition", "pos", pos);
         model.enter(this);
         try {
             model.core.state.setInputTarget(id, pos.x, pos.y, pos.z);

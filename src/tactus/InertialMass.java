@@ -28,7 +28,7 @@ public abstract class InertialMass extends Mass {
 
     /** Sets the velocity in units per second, keeping the position. */
     public void setVelocity(Vect3D vel) {
-        Check.vector("setVelocity", toString(), "vel", vel);
+        checkVector("setVelocity", "vel", vel);
         model.enter(this);
         try {
             model.core.state.setVelocity("setVelocity", id, vel);

@@ -103,7 +103,7 @@ public abstract class Interaction extends Module {
     }
 
     void stiffness(double K) {
-        Check.finite("setStiffness", toString(), "K", K);
+        checkFinite("setStiffness", "K", K);
         model.enter(this);
         try {
             model.core.params.setLink("setStiffness", id, K, Double.NaN, Double.NaN);
@@ -122,7 +122,7 @@ public abstract class Interaction extends Module {
     }
 
     void damping(double Z) {
-        Check.finite("setDamping", toString(), "Z", Z);
+        checkFinite("setDamping", "Z", Z);
         model.enter(this);
         try {
             model.core.params.setLink("setDamping", id, Double.NaN, Z, Double.NaN);
@@ -141,7 +141,7 @@ public abstract class Interaction extends Module {
     }
 
     void length(String op, double d) {
-        Check.finite(op, toString(), "d", d);
+        checkFinite(op, "d", d);
         model.enter(this);
         try {
             model.core.params.setLink(op, id, Double.NaN, Double.NaN, d);

@@ -94,7 +94,7 @@ public abstract class Mass extends Module {
 
     /** Moves this mass to a position with zero velocity (see {@link PhysicalModel#setMatPosition}). */
     public void setPosition(Vect3D pos) {
-        Check.vector("setPosition", toString(), "pos", pos);
+        checkVector("setPosition", "pos", pos);
         model.enter(this);
         try {
             model.core.state.setPosition(id, pos);
@@ -105,7 +105,9 @@ public abstract class Mass extends Module {
 
     /** Adds a force for the next step only (REAL_UNITS: N). */
     public void applyForce(double fx, double fy, double fz) {
-        PhysicalModel.checkForce("applyForce", toString(), fx, fy, fz);
+        checkFinite("applyForce", "fx", fx);
+        checkFinite("applyForce", "fy", fy);
+        checkFinite("applyForce", "fz", fz);
         model.enter(this);
         try {
             model.core.state.addImpulse(id, fx, fy, fz);

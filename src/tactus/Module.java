@@ -26,6 +26,20 @@ public abstract class Module {
         }
     }
 
+    /** Validates a vector argument, building the error message (which names this module) only on failure. */
+    void checkVector(String op, String param, Vect3D v) {
+        if (v == null || !v.isFinite()) {
+            Check.vector(op, toString(), param, v);
+        }
+    }
+
+    /** Validates a number argument, building the error message only on failure. */
+    void checkFinite(String op, String param, double v) {
+        if (!Double.isFinite(v)) {
+            Check.finite(op, toString(), param, v);
+        }
+    }
+
     /** @return true while the module is part of its model. */
     public boolean isValid() {
         return valid;

@@ -21,7 +21,7 @@ public abstract class Oscillator extends InertialMass {
 
     /** Sets the internal stiffness (REAL_UNITS: N/m). */
     public void setStiffness(double K) {
-        Check.finite("setStiffness", toString(), "K", K);
+        checkFinite("setStiffness", "K", K);
         model.enter(this);
         try {
             model.core.params.setOsc("setStiffness", id, K, Double.NaN);
@@ -42,7 +42,7 @@ public abstract class Oscillator extends InertialMass {
 
     /** Sets the internal damping (REAL_UNITS: N·s/m). */
     public void setDamping(double Z) {
-        Check.finite("setDamping", toString(), "Z", Z);
+        checkFinite("setDamping", "Z", Z);
         model.enter(this);
         try {
             model.core.params.setOsc("setDamping", id, Double.NaN, Z);

@@ -134,9 +134,7 @@ public class PhysicalModel {
         }
         enter();
         try {
-            int old = core.time.simRate();
-            core.time.setSimRate(rate, core.subsets.groupIds());
-            core.guard.afterChange(() -> core.time.setSimRate(old, core.subsets.groupIds()));
+            core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
         } finally {
             exit();
         }

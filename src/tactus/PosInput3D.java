@@ -11,7 +11,7 @@ public final class PosInput3D extends Mass {
 
     /** Sets the target position the driver follows, in model units. */
     public void drivePosition(Vect3D pos) {
-        Check.vector("drivePosition", toString(), "pos", pos);
+        checkVector("drivePosition", "pos", pos);
         model.enter(this);
         try {
             model.core.state.setInputTarget(id, pos.x, pos.y, pos.z);

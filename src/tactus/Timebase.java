@@ -50,30 +50,50 @@ final class Timebase {
     }
 
     /**
-     * Moves the model to a new simulation rate; in REAL_UNITS rescales every coefficient and the state's
-     * per-step velocities and pending forces.
+     * Moves the model to a new simulation rate. In REAL_UNITS every per-step coefficient is re-derived first and
+     * checked by the stability guard (under THROW a refused rate restores every coefficient bit for bit); only
+     * then are the state's per-step velocities and pending forces rescaled.
      *
      * @param groupIds the engine ids of the live contact groups
      */
-    void setSimRate(int rate, int[] groupIds) {
-        double ratio = (double) simRate / rate;
-        simRate = rate;
+    void setSimRate(int rate, int[] groupIds, StabilityGuard guard) {
+        int old = simRate;
+        double ratio = (double) old / rate;
+        boolean rescale = units.isReal() && ratio != 1.0;
+        Runnable restore = rescale ? rescaleCoefficients(ratio, groupIds) : () -> { };
+        applyRate(rate);
+        guard.afterChange(() -> {
+            restore.run();
+            applyRate(old);
+        });
         residue = 0;
-        if (units.isReal() && ratio != 1.0) {
-            rescaleCoefficients(ratio, groupIds);
+        if (rescale) {
+            engine.rescaleTime(ratio);
         }
+    }
+
+    private void applyRate(int rate) {
+        simRate = rate;
         units.setRate(rate);
         applyMedium();
     }
 
-    private void rescaleCoefficients(double ratio, int[] groupIds) {
+    /** Rescales every per-step coefficient for a rate change; returns the exact undo. */
+    private Runnable rescaleCoefficients(double ratio, int[] groupIds) {
         double r2 = ratio * ratio;
-        for (int id : dir.mats.ids()) {
-            if (engine.massKind(id).isOscillator()) {
-                engine.setOscillator(id, engine.oscStiffness(id) * r2, engine.oscDamping(id) * ratio);
-            }
+        int[] oscs = java.util.Arrays.stream(dir.mats.ids()).filter(id -> engine.massKind(id).isOscillator()).toArray();
+        int[] links = dir.links.ids();
+        double[] saved = new double[2 * oscs.length + 3 * links.length + 3 * groupIds.length];
+        int w = 0;
+        for (int id : oscs) {
+            saved[w++] = engine.oscStiffness(id);
+            saved[w++] = engine.oscDamping(id);
+            engine.setOscillator(id, engine.oscStiffness(id) * r2, engine.oscDamping(id) * ratio);
         }
-        for (int id : dir.links.ids()) {
+        for (int id : links) {
+            saved[w++] = engine.linkStiffness(id);
+            saved[w++] = engine.linkDamping(id);
+            saved[w++] = engine.linkKind(id) == LinkKind.ATTRACTOR3D ? engine.linkAux(id) : 0;
             engine.setLinkParams(id, engine.linkStiffness(id) * r2, engine.linkDamping(id) * ratio,
                     engine.linkLength(id));
             if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) {
@@ -82,9 +102,29 @@ final class Timebase {
         }
         for (int gid : groupIds) {
             double[] p = engine.contactGroupParams(gid);
+            saved[w++] = p[0];
+            saved[w++] = p[1];
+            saved[w++] = p[2];
             engine.setContactGroupParams(gid, p[0], p[1] * r2, p[2] * ratio);
         }
-        engine.rescaleTime(ratio);
+        return () -> {
+            int r = 0;
+            for (int id : oscs) {
+                engine.setOscillator(id, saved[r], saved[r + 1]);
+                r += 2;
+            }
+            for (int id : links) {
+                engine.setLinkParams(id, saved[r], saved[r + 1], engine.linkLength(id));
+                if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) {
+                    engine.setLinkAux(id, saved[r + 2]);
+                }
+                r += 3;
+            }
+            for (int gid : groupIds) {
+                engine.setContactGroupParams(gid, saved[r], saved[r + 1], saved[r + 2]);
+                r += 3;
+            }
+        };
     }
 
     // ---------------------------------------------------------------- medium
