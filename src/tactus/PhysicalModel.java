@@ -746,21 +746,21 @@ public class PhysicalModel {
         }
     }
 
-    /** @return the module type of the mass at an index, for example "Mass3D". */
-    public String getMatTypeAt(int i) {
+    /** @return the module type of the mass at an index, for example {@code matModuleType.Mass3D}. */
+    public matModuleType getMatTypeAt(int i) {
         enter();
         try {
-            return core.dir.massKind(core.dir.massAt("getMatTypeAt", i)).label();
+            return ModuleTypes.of(core.dir.massKind(core.dir.massAt("getMatTypeAt", i)));
         } finally {
             exit();
         }
     }
 
-    /** @return the module type of the interaction at an index, for example "SpringDamper3D". */
-    public String getLinkTypeAt(int i) {
+    /** @return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}. */
+    public linkModuleType getLinkTypeAt(int i) {
         enter();
         try {
-            return core.dir.linkKind(core.dir.linkAt("getLinkTypeAt", i)).label();
+            return ModuleTypes.of(core.dir.linkKind(core.dir.linkAt("getLinkTypeAt", i)));
         } finally {
             exit();
         }

@@ -20,10 +20,6 @@ final class UnitScale {
         return real;
     }
 
-    double rate() {
-        return fs;
-    }
-
     void setRate(double fs) {
         this.fs = fs;
     }
@@ -46,10 +42,6 @@ final class UnitScale {
 
     double accelerationIn(double g) {
         return real ? Units.accelerationToAlgo(g, fs) : g;
-    }
-
-    double accelerationOut(double g) {
-        return real ? Units.accelerationToReal(g, fs) : g;
     }
 
     /** Forces, attraction factors and energies share the fs^2 scale. */

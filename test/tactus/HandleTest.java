@@ -56,7 +56,7 @@ class HandleTest {
             "PlaneContact3D", "Attractor3D"};
         for (int i = 0; i < links.length; i++) {
             assertEquals(lt[i], links[i].getType());
-            assertEquals(m.getLinkTypeAt(i), links[i].getType());
+            assertEquals(m.getLinkTypeAt(i).name(), links[i].getType());
             assertEquals(m.getLinkNameAt(i), links[i].getName());
             assertSame(links[i], m.getInteraction(links[i].getName()));
         }
@@ -291,7 +291,7 @@ class HandleTest {
         assertEquals("a", ga.getName());
         assertEquals("Ground3D", ga.getType());
         assertSame(ga, m.getMass("a"));
-        assertEquals("Ground3D", m.getMatTypeAt(0));
+        assertEquals("Ground3D", m.getMatTypeAt(0).name());
         assertVectSame(at, ga.getPosition());
         assertVectSame(v(0, 0, 0), ga.getVelocity());
         assertThrows(IllegalArgumentException.class, () -> m.getMatMass("a"));

@@ -56,13 +56,13 @@ class IndexApiTest {
         for (int i = 0; i < MAT_NAMES.length; i++) {
             assertEquals(i, m.getMatIndex(MAT_NAMES[i]));
             assertEquals(MAT_NAMES[i], m.getMatNameAt(i));
-            assertEquals(MAT_TYPES[i], m.getMatTypeAt(i), MAT_NAMES[i]);
+            assertEquals(MAT_TYPES[i], m.getMatTypeAt(i).name(), MAT_NAMES[i]);
             assertEquals(MAT_TYPES[i], m.getMass(MAT_NAMES[i]).getType());
         }
         for (int i = 0; i < LINK_NAMES.length; i++) {
             assertEquals(i, m.getLinkIndex(LINK_NAMES[i]));
             assertEquals(LINK_NAMES[i], m.getLinkNameAt(i));
-            assertEquals(LINK_TYPES[i], m.getLinkTypeAt(i), LINK_NAMES[i]);
+            assertEquals(LINK_TYPES[i], m.getLinkTypeAt(i).name(), LINK_NAMES[i]);
             assertEquals(LINK_TYPES[i], m.getInteraction(LINK_NAMES[i]).getType());
         }
         assertEquals(-1, m.getMatIndex("h_tmp"));
@@ -167,16 +167,16 @@ class IndexApiTest {
             }
             assertEquals(j, m.getLinkIndex(LINK_NAMES[i]));
             assertEquals(LINK_NAMES[i], m.getLinkNameAt(j));
-            assertEquals(LINK_TYPES[i], m.getLinkTypeAt(j));
+            assertEquals(LINK_TYPES[i], m.getLinkTypeAt(j).name());
             j++;
         }
         // remove mass "m3" by index: it takes sp, co, pl and at with it
         m.removeMatAndConnectedLinks(m.getMatIndex("m3"));
         assertArrayEquals(new String[] {"m2p", "m1", "o3", "o1", "g3", "g1", "h", "pi"}, matNames(m));
         assertArrayEquals(new String[] {"sd", "sd1", "ro", "bu"}, linkNames(m));
-        assertEquals("Mass2DPlane", m.getMatTypeAt(0));
-        assertEquals("PosInput3D", m.getMatTypeAt(7));
-        assertEquals("Bubble3D", m.getLinkTypeAt(3));
+        assertEquals("Mass2DPlane", m.getMatTypeAt(0).name());
+        assertEquals("PosInput3D", m.getMatTypeAt(7).name());
+        assertEquals("Bubble3D", m.getLinkTypeAt(3).name());
         assertThrows(IllegalArgumentException.class, () -> m.getMatNameAt(8));
         assertThrows(IllegalArgumentException.class, () -> m.getLinkNameAt(4));
         // index setters now reach the shifted modules
@@ -202,7 +202,7 @@ class IndexApiTest {
         int i = m.getMatIndex("o3");
         m.changeToFixedPoint("o3");
         assertEquals(i, m.getMatIndex("o3"));
-        assertEquals("Ground3D", m.getMatTypeAt(i));
+        assertEquals("Ground3D", m.getMatTypeAt(i).name());
         assertEquals("o3", m.getMatNameAt(i));
     }
 

@@ -25,7 +25,7 @@ final class ModelState {
         sb.append("mats ").append(nm).append('\n');
         for (int i = 0; i < nm; i++) {
             String name = m.getMatNameAt(i);
-            String type = m.getMatTypeAt(i);
+            String type = m.getMatTypeAt(i).name();
             sb.append("  [").append(i).append("] ").append(name).append(' ').append(type)
                     .append(" idx=").append(m.getMatIndex(name))
                     .append(" pos=").append(m.getMatPosAt(i))
@@ -44,7 +44,7 @@ final class ModelState {
         for (int i = 0; i < nl; i++) {
             String name = m.getLinkNameAt(i);
             String[] ends = m.getLinkMatNames(name);
-            sb.append("  [").append(i).append("] ").append(name).append(' ').append(m.getLinkTypeAt(i))
+            sb.append("  [").append(i).append("] ").append(name).append(' ').append(m.getLinkTypeAt(i).name())
                     .append(" idx=").append(m.getLinkIndex(name))
                     .append(" ends=").append(ends[0]).append(',').append(ends[1])
                     .append(" K=").append(m.getLinkStiffness(name))

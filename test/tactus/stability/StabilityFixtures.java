@@ -97,7 +97,7 @@ final class StabilityFixtures {
         double g = 0;
         for (int i = 0; i < nm; i++) {
             String name = pm.getMatNameAt(i);
-            String type = pm.getMatTypeAt(i);
+            String type = pm.getMatTypeAt(i).name();
             double z = pm.getMatPosAt(i).z;
             double v = pm.getMatVelAt(i).z / fs;
             state.put(name, new double[] {z, v});
@@ -119,8 +119,8 @@ final class StabilityFixtures {
         }
         for (int j = 0, nl = pm.getNumberOfLinks(); j < nl; j++) {
             String name = pm.getLinkNameAt(j);
-            if (!pm.getLinkTypeAt(j).equals("SpringDamper1D")) {
-                throw new IllegalArgumentException("lyapunov1D: unsupported link " + pm.getLinkTypeAt(j));
+            if (!pm.getLinkTypeAt(j).name().equals("SpringDamper1D")) {
+                throw new IllegalArgumentException("lyapunov1D: unsupported link " + pm.getLinkTypeAt(j).name());
             }
             String[] ends = pm.getLinkMatNames(name);
             double[] a = state.get(ends[0]);
