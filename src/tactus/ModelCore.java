@@ -20,6 +20,7 @@ final class ModelCore {
     final ModuleBuilder builder;
     final TopologyEditor topology;
     final StateAccess state;
+    final SnapshotWriter snapshots;
     /** True once init() has run: from then on topology edits compile at once, on the editing thread. */
     boolean initialized;
 
@@ -32,6 +33,7 @@ final class ModelCore {
         this.builder = new ModuleBuilder(this);
         this.topology = new TopologyEditor(this);
         this.state = new StateAccess(this);
+        this.snapshots = new SnapshotWriter(this);
     }
 
     UnitScale units() {

@@ -173,6 +173,7 @@ public class PhysicalModel {
             core.engine.compile();
             core.initialized = true;
             core.guard.arm();
+            core.snapshots.publish();
         } finally {
             exit();
         }
@@ -189,6 +190,7 @@ public class PhysicalModel {
         try {
             int n = core.time.stepsForFrame();
             runSteps(n);
+            core.snapshots.publish();
             return n;
         } finally {
             exit();
@@ -199,7 +201,7 @@ public class PhysicalModel {
     public void computeStep() {
         enter();
         try {
-            core.engine.step(1);
+            core.snapshots.afterSteps(core.engine.step(1));
             core.watch.check();
         } finally {
             exit();
@@ -230,6 +232,7 @@ public class PhysicalModel {
         while (done < n) {
             int chunk = Math.min(slice, n - done);
             int ran = core.engine.step(chunk);
+            core.snapshots.afterSteps(ran);
             done += ran;
             if (ran < chunk) {
                 break;
@@ -306,6 +309,20 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    /**
+     * Returns the newest consistent copy of the model's positions, for drawing from a thread that does not step
+     * the model: it never takes the lock, so it never delays an audio or haptic thread, and the copy is never
+     * torn. The model publishes one at {@link #init()}, at the end of every {@link #draw_physics()}, after every
+     * topology edit, and every half display frame of simulated time while it is stepped by {@link #computeStep()}
+     * or {@link #computeNSteps(int)}. Call it from one thread only (the sketch's animation thread); the returned
+     * object stays valid until that thread's next call.
+     *
+     * @return the newest snapshot (empty, with step -1, before {@link #init()})
+     */
+    public ModelSnapshot getSnapshot() {
+        return core.snapshots.exchange.latest();
     }
 
     // =================================================================== global medium

@@ -18,10 +18,14 @@ final class TopologyEditor {
         this.engine = core.engine;
     }
 
-    /** Compiles the step plan now if the model is initialised (the edit is then paid for by its caller). */
+    /**
+     * Compiles the step plan now if the model is initialised, and publishes a snapshot of the new topology (the
+     * edit is paid for by its caller).
+     */
     void compileIfRunning() {
         if (c.initialized) {
             engine.compile();
+            c.snapshots.publish();
         }
     }
 

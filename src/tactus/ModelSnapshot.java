@@ -1,0 +1,115 @@
+package tactus;
+
+/**
+ * A consistent copy of a model's positions at one step, for drawing: every mass's position, type and name
+ * index, and every interaction's two mass indices, type and elongation, all taken at the same step. Read it with
+ * {@link PhysicalModel#getSnapshot()} from the drawing thread: it never blocks the thread that steps the model
+ * (audio or haptics) and is never torn.
+ *
+ * <p>A snapshot object belongs to the reading thread until its next call to {@code getSnapshot()}; it is then
+ * recycled. Copy what you need to keep. Indices are insertion-order indices as in
+ * {@link PhysicalModel#getMatPosAt(int)}.
+ */
+public final class ModelSnapshot {
+    long step = -1;
+    int masses;
+    int links;
+    double[] pos = new double[0];
+    matModuleType[] massTypes = new matModuleType[0];
+    int[] ends = new int[0];
+    double[] elongation = new double[0];
+    linkModuleType[] linkTypes = new linkModuleType[0];
+
+    ModelSnapshot() {
+    }
+
+    /** @return the step count at which the copy was taken, or -1 before the first publication. */
+    public long getStep() {
+        return step;
+    }
+
+    /** @return the number of masses in the copy. */
+    public int getNumberOfMats() {
+        return masses;
+    }
+
+    /** @return the number of interactions in the copy. */
+    public int getNumberOfLinks() {
+        return links;
+    }
+
+    /** @return the x coordinate of mass {@code i}, in model length units. */
+    public double x(int i) {
+        return pos[3 * checkMass(i)];
+    }
+
+    /** @return the y coordinate of mass {@code i}. */
+    public double y(int i) {
+        return pos[3 * checkMass(i) + 1];
+    }
+
+    /** @return the z coordinate of mass {@code i}. */
+    public double z(int i) {
+        return pos[3 * checkMass(i) + 2];
+    }
+
+    /** Writes the position of mass {@code i} into {@code out} and returns it. */
+    public Vect3D getMatPos(int i, Vect3D out) {
+        int q = 3 * checkMass(i);
+        return out.set(pos[q], pos[q + 1], pos[q + 2]);
+    }
+
+    /** @return the type of mass {@code i}. */
+    public matModuleType getMatType(int i) {
+        return massTypes[checkMass(i)];
+    }
+
+    /** @return the index of the first mass of interaction {@code l}. */
+    public int getLinkMat1Idx(int l) {
+        return ends[2 * checkLink(l)];
+    }
+
+    /** @return the index of the second mass of interaction {@code l} (the first again for a plane contact). */
+    public int getLinkMat2Idx(int l) {
+        return ends[2 * checkLink(l) + 1];
+    }
+
+    /** @return the elongation of interaction {@code l}: its distance minus its length parameter. */
+    public double getLinkElongation(int l) {
+        return elongation[checkLink(l)];
+    }
+
+    /** @return the type of interaction {@code l}. */
+    public linkModuleType getLinkType(int l) {
+        return linkTypes[checkLink(l)];
+    }
+
+    private int checkMass(int i) {
+        if (i < 0 || i >= masses) {
+            throw new IndexOutOfBoundsException("snapshot mass index " + i + " out of range 0.." + (masses - 1));
+        }
+        return i;
+    }
+
+    private int checkLink(int l) {
+        if (l < 0 || l >= links) {
+            throw new IndexOutOfBoundsException("snapshot link index " + l + " out of range 0.." + (links - 1));
+        }
+        return l;
+    }
+
+    /** Makes room for a model of this size; allocates only when the model grew. */
+    void ensure(int nMass, int nLink) {
+        if (massTypes.length < nMass) {
+            int cap = Math.max(nMass, massTypes.length * 3 / 2 + 8);
+            pos = new double[3 * cap];
+            massTypes = new matModuleType[cap];
+        }
+        if (linkTypes.length < nLink) {
+            int cap = Math.max(nLink, linkTypes.length * 3 / 2 + 8);
+            ends = new int[2 * cap];
+            elongation = new double[cap];
+            linkTypes = new linkModuleType[cap];
+        }
+    }
+}
