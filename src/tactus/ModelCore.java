@@ -21,6 +21,9 @@ final class ModelCore {
     final TopologyEditor topology;
     final StateAccess state;
     final SnapshotWriter snapshots;
+    final PaperQueries paper;
+    /** Parameter controllers by name, in creation order (see {@link ParamController}). */
+    final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
     /** True once init() has run: from then on topology edits compile at once, on the editing thread. */
     boolean initialized;
 
@@ -34,6 +37,29 @@ final class ModelCore {
         this.topology = new TopologyEditor(this);
         this.state = new StateAccess(this);
         this.snapshots = new SnapshotWriter(this);
+        this.paper = new PaperQueries(this);
+    }
+
+    /** @return true when some parameter controller is in the middle of a ramp. */
+    boolean ramping() {
+        for (ParamController pc : controllers.values()) {
+            if (pc.isRamping()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Advances every running ramp by one step, with the stability check deferred to the end of the batch. */
+    void advanceRamps() {
+        guard.defer();
+        try {
+            for (ParamController pc : controllers.values()) {
+                pc.updateParams();
+            }
+        } finally {
+            guard.resume();
+        }
     }
 
     UnitScale units() {

@@ -86,7 +86,28 @@ public class PhysicalModel {
 
     /** @return the unit system of this model. */
     public paramSystem getParamSystem() {
-        return core.units().isReal() ? paramSystem.REAL_UNITS : paramSystem.ALGO_UNITS;
+        enter();
+        try {
+            return core.units().isReal() ? paramSystem.REAL_UNITS : paramSystem.ALGO_UNITS;
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Switches the unit system in which every later call takes and returns parameters. The model itself does not
+     * change: a spring of 1000 N/m read back in ALGO_UNITS gives its per-step stiffness, 1000 / fs².
+     */
+    public void setParamSystem(paramSystem system) {
+        if (system == null) {
+            throw new IllegalArgumentException("setParamSystem: the unit system must not be null");
+        }
+        enter();
+        try {
+            core.time.setParamSystem(system);
+        } finally {
+            exit();
+        }
     }
 
     // =================================================================== locking, for the facade and its handles
@@ -201,6 +222,10 @@ public class PhysicalModel {
     public void computeStep() {
         enter();
         try {
+            if (core.ramping()) {
+                runRampedSteps(1);
+                return;
+            }
             core.snapshots.afterSteps(core.engine.step(1));
             core.watch.check();
         } finally {
@@ -226,6 +251,10 @@ public class PhysicalModel {
      * the batch and is reported.
      */
     private void runSteps(int n) {
+        if (core.ramping()) {
+            runRampedSteps(n);
+            return;
+        }
         int elements = Math.max(1, core.dir.mats.size() + core.dir.links.size());
         int slice = Math.max(core.engine.threads() > 1 ? 8 : 1, SLICE_ELEMENTS / elements);
         int done = 0;
@@ -242,6 +271,30 @@ public class PhysicalModel {
                 lock.lock();
             }
         }
+        core.watch.check();
+    }
+
+    /** Runs n steps one at a time while parameter controllers ramp, then checks stability once. */
+    private void runRampedSteps(int n) {
+        int done = 0;
+        while (done < n) {
+            boolean ramping = core.ramping();
+            if (ramping) {
+                core.advanceRamps();
+            }
+            int ran = core.engine.step(1);
+            core.snapshots.afterSteps(ran);
+            done += ran;
+            if (ran == 0) {
+                break;
+            }
+            if (!ramping) {
+                core.guard.afterChange(null);
+                runSteps(n - done);
+                return;
+            }
+        }
+        core.guard.afterChange(null);
         core.watch.check();
     }
 
@@ -363,6 +416,14 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    /** Sets the gravity direction ("up") from a Processing vector; see {@link #setGravityDirection(Vect3D)}. */
+    public void setGravityDirection(PVector direction) {
+        if (direction == null) {
+            throw Check.fail("setGravityDirection", "gravity", "direction must not be null");
+        }
+        setGravityDirection(new Vect3D(direction.x, direction.y, direction.z));
     }
 
     /** @return a copy of the normalised gravity direction. */
@@ -936,6 +997,263 @@ public class PhysicalModel {
         Check.finite(op, element, "fx", fx);
         Check.finite(op, element, "fy", fy);
         Check.finite(op, element, "fz", fz);
+    }
+
+    // =================================================================== the paper engine's index queries
+
+    /** @return the position of the first mass of the interaction at an index (a copy). */
+    public Vect3D getLinkPos1At(int i) {
+        enter();
+        try {
+            return core.paper.linkEnd(core.dir.linkAt("getLinkPos1At", i), true, new Vect3D());
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * @return the position of the second mass of the interaction at an index (a copy); for a plane contact, the
+     *     foot of its mass on the plane
+     */
+    public Vect3D getLinkPos2At(int i) {
+        enter();
+        try {
+            return core.paper.linkEnd(core.dir.linkAt("getLinkPos2At", i), false, new Vect3D());
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the index of the first mass of the interaction at an index. */
+    public int getLinkMat1IdxAt(int i) {
+        enter();
+        try {
+            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat1IdxAt", i), true);
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the index of the second mass of the interaction at an index, or -1 for a plane contact. */
+    public int getLinkMat2IdxAt(int i) {
+        enter();
+        try {
+            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat2IdxAt", i), false);
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the name of the first mass of the interaction at an index. */
+    public String getLinkMat1NameAt(int i) {
+        enter();
+        try {
+            return core.paper.linkEndName(core.dir.linkAt("getLinkMat1NameAt", i), true);
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the name of the second mass of the interaction at an index, or "" for a plane contact. */
+    public String getLinkMat2NameAt(int i) {
+        enter();
+        try {
+            return core.paper.linkEndName(core.dir.linkAt("getLinkMat2NameAt", i), false);
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the position the mass at an index had one step before (a copy). */
+    public Vect3D getMatDelayedPosAt(int i) {
+        enter();
+        try {
+            return core.paper.delayedPosition(core.dir.massAt("getMatDelayedPosAt", i), new Vect3D());
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N). */
+    public PVector getMatForcePVector(int i) {
+        enter();
+        try {
+            return core.state.force(core.dir.massAt("getMatForcePVector", i), new Vect3D()).toPVector();
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the distance (length units) of the oscillator at an index from its rest point. */
+    public double getOsc3DDeltaPos(int i) {
+        enter();
+        try {
+            return core.paper.oscDisplacement("getOsc3DDeltaPos", core.dir.massAt("getOsc3DDeltaPos", i));
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index. */
+    public int getPlaneOrientationAt(int i) {
+        enter();
+        try {
+            return core.params.planeAxis("getPlaneOrientationAt", core.dir.linkAt("getPlaneOrientationAt", i));
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the coordinate, on its axis, of the plane of the plane contact at an index. */
+    public double getPlanePositionAt(int i) {
+        enter();
+        try {
+            return core.params.planePosition("getPlanePositionAt", core.dir.linkAt("getPlanePositionAt", i));
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Replaces the content of {@code out} with the positions of every mass of one type, in index order, as float
+     * {@code PVector}s (new objects).
+     */
+    public void getAllMatsOfType(java.util.ArrayList<PVector> out, matModuleType type) {
+        enter();
+        try {
+            core.paper.massesOfType("getAllMatsOfType", out, null, type, true);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Replaces the content of {@code pos} and {@code vel} with the positions and the displacements over the last
+     * step (X - X⁻, length units per step, as in the paper's engine) of every mass of one type, in index order.
+     */
+    public void createPosSpeedArraysForModType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
+                                               matModuleType type) {
+        enter();
+        try {
+            core.paper.massesOfType("createPosSpeedArraysForModType", pos, vel, type, true);
+        } finally {
+            exit();
+        }
+    }
+
+    /** The same as {@link #createPosSpeedArraysForModType}, under its older name. */
+    public void getAllMatSpeedsOfType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
+                                      matModuleType type) {
+        enter();
+        try {
+            core.paper.massesOfType("getAllMatSpeedsOfType", pos, vel, type, true);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Overwrites the first entries of lists made by {@link #createPosSpeedArraysForModType} with the current
+     * positions and displacements; the lists must be long enough.
+     */
+    public void updatePosSpeedArraysForModType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
+                                               matModuleType type) {
+        enter();
+        try {
+            core.paper.massesOfType("updatePosSpeedArraysForModType", pos, vel, type, false);
+        } finally {
+            exit();
+        }
+    }
+
+    /** Sets the inertia of every mass whose name contains {@code tag} (a substring match). */
+    public void setMatParamsForName(String tag, double mass) {
+        Check.name("setMatParamsForName", tag);
+        enter();
+        try {
+            core.paper.setMassForName("setMatParamsForName", tag, mass);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Sets stiffness, damping and length parameter (in the model's units) of every interaction whose name
+     * contains {@code tag} (a substring match), each where the kind has it.
+     */
+    public void setLinkParamsForName(String tag, double K, double Z, double dist) {
+        Check.name("setLinkParamsForName", tag);
+        Check.finite("setLinkParamsForName", tag, "K", K);
+        Check.finite("setLinkParamsForName", tag, "Z", Z);
+        Check.finite("setLinkParamsForName", tag, "dist", dist);
+        enter();
+        try {
+            core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Lines the masses of a mass subset up along x, {@code dist} apart and centred on {@code center} (their y and
+     * z taken from it), at rest, in subset order.
+     */
+    public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
+        Check.vector("changeDistXBetweenSubset", subset, "center", center);
+        Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
+        enter();
+        try {
+            core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Creates (or replaces) a named {@link ParamController} that ramps one parameter of a subset over
+     * {@code rampTime} seconds.
+     *
+     * @param paramName "mass", "stiffness", "damping", "dist" or "distX"
+     */
+    public void addParamController(String name, String subsetName, String paramName, float rampTime) {
+        Check.name("addParamController", name);
+        ParamController pc = new ParamController(this, rampTime, subsetName, paramName);
+        enter();
+        try {
+            core.controllers.put(name, pc);
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the named parameter controller, or null when there is none. */
+    public ParamController getParamController(String name) {
+        enter();
+        try {
+            return core.controllers.get(name);
+        } finally {
+            exit();
+        }
+    }
+
+    /** The spelling of {@link #addParamController} used by the paper-era example sketches. */
+    public void addParamControler(String name, String subsetName, String paramName, float rampTime) {
+        addParamController(name, subsetName, paramName, rampTime);
+    }
+
+    /** The spelling of {@link #getParamController} used by the paper-era example sketches. */
+    public ParamController getParamControler(String name) {
+        return getParamController(name);
+    }
+
+    /** @return true when a mass or link subset with this name exists. */
+    boolean subsetExists(String subset) {
+        enter();
+        try {
+            return core.subsets.isMatSubset(subset) || core.subsets.isLinkSubset(subset);
+        } finally {
+            exit();
+        }
     }
 
     // =================================================================== mass parameters

@@ -127,6 +127,18 @@ final class Timebase {
         };
     }
 
+    /**
+     * Switches the unit system of every later call. The model itself is unchanged: gravity and friction, kept
+     * here in the user's units, are re-expressed in the new system.
+     */
+    void setParamSystem(paramSystem system) {
+        double g = units.accelerationIn(gravity);
+        double f = units.dampingIn(friction);
+        units.setSystem(system);
+        gravity = units.accelerationOut(g);
+        friction = units.dampingOut(f);
+    }
+
     // ---------------------------------------------------------------- medium
 
     double gravity() {

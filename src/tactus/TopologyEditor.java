@@ -63,11 +63,12 @@ final class TopologyEditor {
         return h;
     }
 
-    /** Removes every mass, interaction, subset and contact group; lets a diverged model run again. */
+    /** Removes every mass, interaction, subset, contact group and controller; lets a diverged model run again. */
     void clear() {
         c.dir.clear();
         engine.clear();
         c.subsets.clear();
+        c.controllers.clear();
         c.watch.clear();
         compileIfRunning();
     }

@@ -8,7 +8,7 @@ import tactus.engine.Units;
  * identity except velocities, which are always given in units per second.
  */
 final class UnitScale {
-    private final boolean real;
+    private boolean real;
     private double fs;
 
     UnitScale(paramSystem system, double fs) {
@@ -18,6 +18,10 @@ final class UnitScale {
 
     boolean isReal() {
         return real;
+    }
+
+    void setSystem(paramSystem system) {
+        real = system == paramSystem.REAL_UNITS;
     }
 
     void setRate(double fs) {
@@ -42,6 +46,10 @@ final class UnitScale {
 
     double accelerationIn(double g) {
         return real ? Units.accelerationToAlgo(g, fs) : g;
+    }
+
+    double accelerationOut(double g) {
+        return real ? Units.accelerationToReal(g, fs) : g;
     }
 
     /** Forces, attraction factors and energies share the fs^2 scale. */

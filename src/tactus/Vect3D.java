@@ -29,6 +29,28 @@ public final class Vect3D {
         this(v.x, v.y, v.z);
     }
 
+    /** @return the x component. */
+    public double x() {
+        return x;
+    }
+
+    /** @return the y component. */
+    public double y() {
+        return y;
+    }
+
+    /** @return the z component. */
+    public double z() {
+        return z;
+    }
+
+    /** Sets this vector to zero. */
+    public void reset() {
+        x = 0;
+        y = 0;
+        z = 0;
+    }
+
     /** Sets the components and returns this vector. */
     public Vect3D set(double x, double y, double z) {
         this.x = x;

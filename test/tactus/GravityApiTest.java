@@ -58,7 +58,7 @@ class GravityApiTest {
         assertThrows(IllegalArgumentException.class, () -> m.setGravityDirection(v(0, 0, 0)));
         assertThrows(IllegalArgumentException.class, () -> m.setGravityDirection(v(Double.NaN, 0, 1)));
         assertThrows(IllegalArgumentException.class, () -> m.setGravityDirection(v(0, Double.POSITIVE_INFINITY, 0)));
-        assertThrows(IllegalArgumentException.class, () -> m.setGravityDirection(null));
+        assertThrows(IllegalArgumentException.class, () -> m.setGravityDirection((Vect3D) null));
         assertThrows(IllegalArgumentException.class, () -> m.setGravity(Double.NaN));
         assertThrows(IllegalArgumentException.class, () -> m.setFriction(Double.NEGATIVE_INFINITY));
         assertEquals(1.0, m.getGravityDirection().y, 0.0);

@@ -197,7 +197,7 @@ class ValidationTest {
         c.add(new Case("setFriction infinite", m -> m.setFriction(INF), "Infinity"));
         c.add(new Case("setGravityDirection zero", m -> m.setGravityDirection(v(0, 0, 0)), "zero"));
         c.add(new Case("setGravityDirection NaN", m -> m.setGravityDirection(v(0, NAN, 1)), "NaN"));
-        c.add(new Case("setGravityDirection null", m -> m.setGravityDirection(null), "null"));
+        c.add(new Case("setGravityDirection null", m -> m.setGravityDirection((Vect3D) null), "null"));
         c.add(new Case("setSimRate 0", m -> m.setSimRate(0), "0"));
         c.add(new Case("setDisplayRate -5", m -> m.setDisplayRate(-5), "-5"));
         c.add(new Case("computeNSteps -1", m -> m.computeNSteps(-1), "-1"));

@@ -1,0 +1,219 @@
+package tactus;
+
+import java.util.ArrayList;
+import java.util.List;
+import processing.core.PVector;
+import tactus.engine.Engine;
+import tactus.engine.LinkKind;
+
+/**
+ * The index-based queries and name-pattern edits of the paper's engine, for sketches written against it: link
+ * ends, delayed positions, oscillator displacement, plane parameters, arrays of positions per module type, and
+ * parameter changes by name pattern or along x. The caller holds the model's lock.
+ */
+final class PaperQueries {
+    private final ModelCore c;
+    private final Engine engine;
+    private final double[] tmp = new double[3];
+
+    PaperQueries(ModelCore core) {
+        this.c = core;
+        this.engine = core.engine;
+    }
+
+    /** @return true when the link's second end is the plane, not a mass. */
+    private boolean isPlane(int linkId) {
+        return engine.linkKind(linkId) == LinkKind.PLANE_CONTACT3D;
+    }
+
+    /**
+     * Writes the position of one end of a link into {@code out}. The second end of a plane contact is the foot of
+     * the mass on the plane.
+     */
+    Vect3D linkEnd(int linkId, boolean first, Vect3D out) {
+        engine.position(engine.linkMassA(linkId), tmp);
+        if (!first) {
+            if (isPlane(linkId)) {
+                tmp[engine.linkAxis(linkId)] = engine.linkAux(linkId);
+            } else {
+                engine.position(engine.linkMassB(linkId), tmp);
+            }
+        }
+        return out.set(tmp[0], tmp[1], tmp[2]);
+    }
+
+    /** @return the mass index of one end of a link, or -1 for the plane end of a plane contact. */
+    int linkEndIndex(int linkId, boolean first) {
+        if (!first && isPlane(linkId)) {
+            return -1;
+        }
+        return c.dir.mats.indexOf(first ? engine.linkMassA(linkId) : engine.linkMassB(linkId));
+    }
+
+    /** @return the mass name of one end of a link, or "" for the plane end of a plane contact. */
+    String linkEndName(int linkId, boolean first) {
+        if (!first && isPlane(linkId)) {
+            return "";
+        }
+        return c.dir.massName(first ? engine.linkMassA(linkId) : engine.linkMassB(linkId));
+    }
+
+    /** Writes the position a mass had one step before into {@code out}. */
+    Vect3D delayedPosition(int massId, Vect3D out) {
+        engine.position(massId, tmp);
+        double x = tmp[0], y = tmp[1], z = tmp[2];
+        engine.displacement(massId, tmp);
+        return out.set(x - tmp[0], y - tmp[1], z - tmp[2]);
+    }
+
+    /** @return the distance of an oscillator from its rest point, in length units. */
+    double oscDisplacement(String op, int massId) {
+        c.params.requireOsc(op, massId);
+        engine.position(massId, tmp);
+        double dx = tmp[0] - engine.rest(massId, 0);
+        double dy = tmp[1] - engine.rest(massId, 1);
+        double dz = tmp[2] - engine.rest(massId, 2);
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /**
+     * Fills {@code pos} (and {@code vel} unless null) with the positions (and per-step displacements, X - X⁻) of
+     * every mass of one type, in index order; {@code clear} empties the lists first, otherwise their first
+     * entries are overwritten.
+     */
+    void massesOfType(String op, List<PVector> pos, List<PVector> vel, matModuleType type, boolean clear) {
+        if (pos == null || (vel == null && !op.equals("getAllMatsOfType")) || type == null) {
+            throw new IllegalArgumentException(op + ": the lists and the type must not be null");
+        }
+        int n = c.dir.mats.size();
+        if (!clear) {
+            int matches = 0;
+            for (int i = 0; i < n; i++) {
+                if (ModuleTypes.of(engine.massKind(c.dir.mats.idAt(i))) == type) {
+                    matches++;
+                }
+            }
+            if (pos.size() < matches || (vel != null && vel.size() < matches)) {
+                throw new IllegalArgumentException(op + "(" + type + "): the lists hold " + pos.size()
+                        + (vel != null ? " and " + vel.size() : "") + " entries for " + matches
+                        + " masses; create them with createPosSpeedArraysForModType first");
+            }
+        } else {
+            pos.clear();
+            if (vel != null) {
+                vel.clear();
+            }
+        }
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            int id = c.dir.mats.idAt(i);
+            if (ModuleTypes.of(engine.massKind(id)) != type) {
+                continue;
+            }
+            engine.position(id, tmp);
+            PVector p = new PVector((float) tmp[0], (float) tmp[1], (float) tmp[2]);
+            PVector d = null;
+            if (vel != null) {
+                engine.displacement(id, tmp);
+                d = new PVector((float) tmp[0], (float) tmp[1], (float) tmp[2]);
+            }
+            if (clear) {
+                pos.add(p);
+                if (vel != null) {
+                    vel.add(d);
+                }
+            } else {
+                pos.set(k, p);
+                if (vel != null) {
+                    vel.set(k, d);
+                }
+            }
+            k++;
+        }
+    }
+
+    /** @return the ids of the live modules whose name contains {@code tag}, in index order. */
+    private static int[] matching(Registry r, String tag) {
+        List<Integer> ids = new ArrayList<>();
+        for (int i = 0; i < r.size(); i++) {
+            int id = r.idAt(i);
+            if (r.name(id).contains(tag)) {
+                ids.add(id);
+            }
+        }
+        return ids.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** Sets the inertia of every mass whose name contains {@code tag}; checked first, analysed once. */
+    void setMassForName(String op, String tag, double mass) {
+        int[] ids = matching(c.dir.mats, tag);
+        for (int id : ids) {
+            c.params.requireInertial(op, id);
+            Check.positive(op, c.dir.massName(id), "mass", mass);
+        }
+        double[] old = new double[ids.length];
+        c.guard.defer();
+        try {
+            for (int k = 0; k < ids.length; k++) {
+                old[k] = engine.mass(ids[k]);
+                engine.setMass(ids[k], mass);
+            }
+        } finally {
+            c.guard.resume();
+        }
+        c.guard.afterChange(() -> {
+            for (int k = 0; k < ids.length; k++) {
+                engine.setMass(ids[k], old[k]);
+            }
+        });
+    }
+
+    /**
+     * Sets K, Z and the length of every interaction whose name contains {@code tag}, each where the kind has it (a
+     * spring takes no damping, a damper no stiffness or length); checked first, analysed once.
+     */
+    void setLinkParamsForName(String op, String tag, double K, double Z, double dist) {
+        int[] ids = matching(c.dir.links, tag);
+        for (int id : ids) {
+            LinkKind k = engine.linkKind(id);
+            if (ParamEditor.hasLengthParam(k)) {
+                ParamEditor.checkLength(op, c.dir.linkName(id), k, dist);
+            }
+        }
+        double[] old = new double[3 * ids.length];
+        UnitScale u = c.units();
+        c.guard.defer();
+        try {
+            for (int k = 0; k < ids.length; k++) {
+                int id = ids[k];
+                LinkKind kind = engine.linkKind(id);
+                old[3 * k] = engine.linkStiffness(id);
+                old[3 * k + 1] = engine.linkDamping(id);
+                old[3 * k + 2] = engine.linkLength(id);
+                engine.setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : old[3 * k],
+                        kind.hasDamping() ? u.dampingIn(Z) : old[3 * k + 1],
+                        ParamEditor.hasLengthParam(kind) ? dist : old[3 * k + 2]);
+            }
+        } finally {
+            c.guard.resume();
+        }
+        c.guard.afterChange(() -> {
+            for (int k = 0; k < ids.length; k++) {
+                engine.setLinkParams(ids[k], old[3 * k], old[3 * k + 1], old[3 * k + 2]);
+            }
+        });
+    }
+
+    /**
+     * Lines the masses of a mass subset up along x, {@code d} apart and centred on {@code center} (y and z taken
+     * from it), at rest, in subset order.
+     */
+    void spaceAlongX(String op, Vect3D center, double d, String subset) {
+        int[] ids = c.subsets.members(op, c.subsets.requireMatSubset(op, subset)).stream()
+                .mapToInt(Integer::intValue).toArray();
+        int n = ids.length;
+        for (int k = 0; k < n; k++) {
+            engine.setPosition(ids[k], center.x + d * (k - (n - 1) / 2.0), center.y, center.z);
+        }
+    }
+}

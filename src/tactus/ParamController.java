@@ -1,0 +1,90 @@
+package tactus;
+
+/**
+ * Ramps one parameter of a subset to a target over a set time, one simulation step at a time, as the paper's
+ * engine does for parameter changes driven by MIDI or the GUI. Create it with
+ * {@link PhysicalModel#addParamController(String, String, String, float)}; the model advances its ramp at every
+ * step, whichever way the model is stepped.
+ *
+ * <p>The parameter is "mass", "stiffness", "damping" or "dist" (applied with
+ * {@link PhysicalModel#changeParamOfSubset(double, String, String)}, in the model's units), or "distX" (the spacing
+ * of a mass subset along x, around its barycenter at {@link #init(float)}, with
+ * {@link PhysicalModel#changeDistXBetweenSubset(Vect3D, double, String)}). During a ramp the stability analysis runs
+ * once per stepping call, not once per step.
+ */
+public class ParamController extends AbstractController {
+    private final float rampTime;
+    private float previous;
+    private boolean ramping;
+    private long step;
+    private long rampSteps;
+    private Vect3D center;
+
+    /**
+     * Creates a controller; the model normally does this ({@link PhysicalModel#addParamController}).
+     *
+     * @param rampTime the duration of a ramp, in seconds (&ge; 0; 0 jumps at the next step)
+     */
+    public ParamController(PhysicalModel pm, float rampTime, String subsetName, String param) {
+        super(pm, subsetName, param);
+        if (!(rampTime >= 0) || !Float.isFinite(rampTime)) {
+            throw new IllegalArgumentException("controller of \"" + subsetName + "\": rampTime must be a finite "
+                    + "number of seconds >= 0, got " + rampTime);
+        }
+        this.rampTime = rampTime;
+    }
+
+    /** Sets the parameter to {@code value} at once, and makes it the start of the next ramp. */
+    public void init(float value) {
+        previous = value;
+        ramping = false;
+        if ("distX".equals(param)) {
+            center = pm.getBarycenterOfSubset(subsetName);
+        }
+        apply(value);
+    }
+
+    /** Starts a linear ramp from the last target (or initial value) to {@code target}, over the ramp time. */
+    public void triggerRamp(float target) {
+        if (!Float.isFinite(target)) {
+            throw new IllegalArgumentException("triggerRamp(\"" + subsetName + "\"): the target must be finite, got "
+                    + target);
+        }
+        rampSteps = Math.max(1, Math.round((double) rampTime * pm.getSimRate()));
+        setParam("vmin", 0);
+        setParam("vmax", rampSteps);
+        setParam("min", previous);
+        setParam("max", target);
+        previous = target;
+        step = 0;
+        ramping = true;
+    }
+
+    /** @return true while a ramp is running. */
+    public boolean isRamping() {
+        return ramping;
+    }
+
+    /** Advances the ramp by one simulation step; the model calls it before each step while the ramp runs. */
+    public void updateParams() {
+        if (!ramping) {
+            return;
+        }
+        step++;
+        apply(linearScale(step));
+        if (step >= rampSteps) {
+            ramping = false;
+        }
+    }
+
+    private void apply(float value) {
+        if ("distX".equals(param)) {
+            if (center == null) {
+                center = pm.getBarycenterOfSubset(subsetName);
+            }
+            pm.changeDistXBetweenSubset(center, value, subsetName);
+        } else {
+            pm.changeParamOfSubset(value, subsetName, param);
+        }
+    }
+}
