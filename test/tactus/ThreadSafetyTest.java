@@ -122,7 +122,8 @@ class ThreadSafetyTest {
         sim.start();
         try {
             for (int i = 0; i < 200; i++) {
-                synchronized (m.getLock()) {
+                m.getLock().lock();
+                try {
                     long before = m.getStepCount();
                     Vect3D a = m.getMatPosition("m19");
                     Thread.onSpinWait();
@@ -130,6 +131,8 @@ class ThreadSafetyTest {
                     assertEquals(before, m.getStepCount(), "no step may run while the lock is held");
                     assertEquals(a.x, b.x, 0.0);
                     assertEquals(a.z, b.z, 0.0);
+                } finally {
+                    m.getLock().unlock();
                 }
             }
         } finally {
