@@ -14,7 +14,7 @@ import java.util.Locale;
 
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.axis.LogAxis;
+import org.jfree.chart.axis.LogarithmicAxis;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
 import org.jfree.chart.plot.XYPlot;
@@ -62,7 +62,7 @@ public final class LineChart {
         new Color(0x495057), // slate
     };
     private static final Color TEXT = new Color(0x212529);
-    private static final Color GRID = new Color(0xDEE2E6);
+    private static final Color GRID = new Color(0xE9ECEF);
 
     private final String title;
     private final String xLabel;
@@ -279,10 +279,11 @@ public final class LineChart {
     private static ValueAxis axis(String label, boolean log, boolean vertical) {
         ValueAxis a;
         if (log) {
-            LogAxis l = new LogAxis(label.isEmpty() ? null : label);
-            l.setBase(10);
-            l.setSmallestValue(Double.MIN_NORMAL);
-            l.setMinorTickMarksVisible(true);
+            // Ticks at 1..9 x 10^n, labelled like 2e6; over many decades only the powers of ten are labelled.
+            LogarithmicAxis l = new LogarithmicAxis(label.isEmpty() ? null : label);
+            l.setStrictValuesFlag(false);
+            l.setExpTickLabelsFlag(true);
+            l.setAutoRangeNextLogFlag(false);
             a = l;
         } else {
             NumberAxis n = new NumberAxis(label.isEmpty() ? null : label);
