@@ -283,7 +283,8 @@ public final class LineChart {
             LogarithmicAxis l = new LogarithmicAxis(label.isEmpty() ? null : label);
             l.setStrictValuesFlag(false);
             l.setExpTickLabelsFlag(true);
-            l.setAutoRangeNextLogFlag(false);
+            // The vertical range is widened to whole decades, so that no point sits on the frame.
+            l.setAutoRangeNextLogFlag(vertical);
             a = l;
         } else {
             NumberAxis n = new NumberAxis(label.isEmpty() ? null : label);
