@@ -307,19 +307,29 @@ public final class SketchHarness {
      * @throws AssertionError naming the missing program and its Debian package
      */
     public static Path requireXvfb() {
-        Path xvfbRun = onPath("xvfb-run");
+        return requireXvfb(System.getenv("PATH"));
+    }
+
+    /**
+     * Fails unless {@code xvfb-run} and {@code xauth} are in one of the folders of a search path.
+     *
+     * @param searchPath folders separated by {@link File#pathSeparator}, like {@code PATH}
+     * @return the path of {@code xvfb-run}
+     * @throws AssertionError naming the missing program and its Debian package
+     */
+    static Path requireXvfb(String searchPath) {
+        Path xvfbRun = onPath("xvfb-run", searchPath);
         if (xvfbRun == null) {
             throw new AssertionError("xvfb-run is not on the PATH; the sketch tests run sketches under Xvfb and do "
                     + "not skip without it (Debian: apt-get install xvfb xauth; .ci/run installs them)");
         }
-        if (onPath("xauth") == null) {
+        if (onPath("xauth", searchPath) == null) {
             throw new AssertionError("xauth is not on the PATH; xvfb-run needs it (Debian: apt-get install xauth)");
         }
         return xvfbRun;
     }
 
-    private static Path onPath(String program) {
-        String path = System.getenv("PATH");
+    private static Path onPath(String program, String path) {
         if (path == null) {
             return null;
         }

@@ -75,6 +75,20 @@ class SketchHarnessTest {
     }
 
     @Test
+    void aMissingXvfbIsAFailureThatSaysWhatToInstall() throws Exception {
+        AssertionError e = assertThrows(AssertionError.class, () -> SketchHarness.requireXvfb(tmp.toString()));
+        assertTrue(e.getMessage().contains("xvfb-run") && e.getMessage().contains("apt-get install"), e.getMessage());
+        // xvfb-run alone is not enough: it needs xauth.
+        Path fake = tmp.resolve("xvfb-run");
+        Files.write(fake, "#!/bin/sh\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        assertTrue(fake.toFile().setExecutable(true));
+        e = assertThrows(AssertionError.class, () -> SketchHarness.requireXvfb(tmp.toString()));
+        assertTrue(e.getMessage().contains("xauth"), e.getMessage());
+        // This machine (and CI) has both.
+        assertTrue(Files.isExecutable(SketchHarness.requireXvfb()));
+    }
+
+    @Test
     void blankImagesHaveNoSpreadAndDrawnOnesDo() {
         BufferedImage img = new BufferedImage(50, 40, BufferedImage.TYPE_INT_RGB);
         assertEquals(0.0, SketchHarness.luminanceSpread(img), 1e-9);
