@@ -55,6 +55,8 @@ public final class SketchHarness {
     public static final String OUTPUT_PROPERTY = "tactus.sketch.output";
     /** What {@link SketchRunner} prints on standard output when the last frame has been saved. */
     static final String DONE_MARKER = "tactus-sketch-runner: frames=";
+    /** What {@link SketchRunner} prints on standard output just before it ends the JVM with that status. */
+    static final String STATUS_MARKER = "tactus-sketch-runner: status=";
 
     private static final String PREPROCESSOR = "processing.mode.java.preproc.PdePreprocessor";
     private static final Pattern PROBLEM = Pattern.compile("(?m)^.*(Exception|Error\\b).*$|^\\s+at \\S+\\(.*\\)$");
@@ -269,8 +271,14 @@ public final class SketchHarness {
     public static final class Run {
         /** The sketch's class name. */
         public final String sketch;
-        /** The exit code of the child process ({@code xvfb-run} passes on the JVM's). */
+        /**
+         * The exit status of the sketch's JVM, as {@link SketchRunner} reported it; if it reported none, the exit
+         * code of {@code xvfb-run} (which passes on the JVM's, or gives its own errors, such as 5 when it cannot
+         * remove its temporary folder).
+         */
         public final int exitCode;
+        /** The exit code of the {@code xvfb-run} process itself. */
+        public final int processExitCode;
         /** The number of frames the runner reported, or -1 if it reported none. */
         public final int frames;
         /** The saved frame, or {@code null} if none was saved. */
@@ -282,10 +290,11 @@ public final class SketchHarness {
         /** Wall-clock time of the run, in seconds. */
         public final double seconds;
 
-        Run(String sketch, int exitCode, int frames, BufferedImage image, String stdout, String stderr,
-                double seconds) {
+        Run(String sketch, int exitCode, int processExitCode, int frames, BufferedImage image, String stdout,
+                String stderr, double seconds) {
             this.sketch = sketch;
             this.exitCode = exitCode;
+            this.processExitCode = processExitCode;
             this.frames = frames;
             this.image = image;
             this.stdout = stdout;
@@ -295,7 +304,8 @@ public final class SketchHarness {
 
         /** @return the standard error and output, for failure messages */
         public String logs() {
-            return "--- stderr of " + sketch + " ---\n" + stderr + "\n--- stdout of " + sketch + " ---\n"
+            return "--- status " + exitCode + " (xvfb-run exit code " + processExitCode + "), stderr of " + sketch
+                    + " ---\n" + stderr + "\n--- stdout of " + sketch + " ---\n"
                     + (stdout.length() > 4000 ? stdout.substring(stdout.length() - 4000) : stdout);
         }
     }
@@ -382,7 +392,11 @@ public final class SketchHarness {
     private static Run runOnce(String className, List<String> cmd, Path png, double timeoutSeconds)
             throws IOException {
         long start = System.nanoTime();
-        Process p = new ProcessBuilder(cmd).start();
+        ProcessBuilder pb = new ProcessBuilder(cmd);
+        // xvfb-run keeps its X authority file in a folder of its own under TMPDIR: put it beside the frame, away
+        // from whatever else cleans /tmp.
+        pb.environment().put("TMPDIR", png.toAbsolutePath().getParent().toString());
+        Process p = pb.start();
         p.getOutputStream().close();
         Drain out = new Drain(p.getInputStream());
         Drain err = new Drain(p.getErrorStream());
@@ -401,16 +415,18 @@ public final class SketchHarness {
         double seconds = (System.nanoTime() - start) * 1e-9;
         if (!finished) {
             throw new AssertionError(String.format(Locale.ROOT, "%s did not finish within %.0f s and was killed",
-                    className, timeoutSeconds) + "\n" + new Run(className, -1, -1, null, stdout, stderr, seconds)
+                    className, timeoutSeconds) + "\n" + new Run(className, -1, -1, -1, null, stdout, stderr, seconds)
                     .logs());
         }
-        int frames = -1;
-        Matcher m = Pattern.compile(Pattern.quote(DONE_MARKER) + "(\\d+)").matcher(stdout);
-        if (m.find()) {
-            frames = Integer.parseInt(m.group(1));
-        }
+        int frames = marker(stdout, DONE_MARKER, -1);
+        int status = marker(stdout, STATUS_MARKER, p.exitValue());
         BufferedImage image = Files.isRegularFile(png) ? ImageIO.read(png.toFile()) : null;
-        return new Run(className, p.exitValue(), frames, image, stdout, stderr, seconds);
+        return new Run(className, status, p.exitValue(), frames, image, stdout, stderr, seconds);
+    }
+
+    private static int marker(String stdout, String marker, int otherwise) {
+        Matcher m = Pattern.compile(Pattern.quote(marker) + "(\\d+)").matcher(stdout);
+        return m.find() ? Integer.parseInt(m.group(1)) : otherwise;
     }
 
     /** Kills a process and everything it started (xvfb-run starts Xvfb and the JVM). */

@@ -41,10 +41,8 @@ public final class SketchRunner {
         }
         sketch.save(png.getAbsolutePath());
         System.out.println(SketchHarness.DONE_MARKER + sketch.frameCount);
-        System.out.flush();
-        System.err.flush();
         // halt, not exit: nothing may wait here for the animation thread that is calling us.
-        Runtime.getRuntime().halt(png.isFile() ? 0 : 4);
+        halt(png.isFile() ? 0 : 4);
     }
 
     /**
@@ -86,8 +84,14 @@ public final class SketchRunner {
 
     private static void stopOnException(String where) {
         System.err.println("tactus-sketch-runner: an exception escaped the sketch in " + where + "; stopping");
+        halt(EXCEPTION_STATUS);
+    }
+
+    /** Prints the status (xvfb-run may replace the JVM's own with one of its own errors) and ends the JVM. */
+    private static void halt(int status) {
+        System.out.println(SketchHarness.STATUS_MARKER + status);
         System.out.flush();
         System.err.flush();
-        Runtime.getRuntime().halt(EXCEPTION_STATUS);
+        Runtime.getRuntime().halt(status);
     }
 }
