@@ -10,6 +10,7 @@ import tactus.Mass;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.engine.Tuning;
+import tactus.report.Measure;
 import tactus.paramSystem;
 
 /**

@@ -16,7 +16,7 @@ import tactus.Mass;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.paramSystem;
-import tactus.render.LinePlot;
+import tactus.report.LineChart;
 
 /**
  * The headless demo behind {@code gradle demo}: two small models from the paper, simulated for two
@@ -321,7 +321,7 @@ public final class Demo {
                 xEq, measuredX, theoryX, cents(measuredX, theoryX));
 
         writeCsv(dir.resolve("figure4.csv"), "t_s,mass_x,mass_y,mass_z", t, pos, "%.7f");
-        new LinePlot("Figure 4: position of \"mass\" (simRate 300 Hz, ALGO_UNITS)", "time (s)",
+        new LineChart("Figure 4: position of \"mass\" (simRate 300 Hz, ALGO_UNITS)", "time (s)",
                 "position (model units)")
                 .series("x", t, pos[0])
                 .series("z", t, pos[2])
@@ -501,7 +501,7 @@ public final class Demo {
         for (int s = 0; s <= shown; s++) {
             tMs[s] = t[s] * 1e3;
         }
-        LinePlot plot = new LinePlot(String.format(Locale.ROOT,
+        LineChart plot = new LineChart(String.format(Locale.ROOT,
                 "Plucked string: sideways displacement of three beads (first 20 ms of %s s)", num(SECONDS)),
                 "time (ms)", "displacement y (mm)");
         for (int j = 0; j < listened.length; j++) {
@@ -513,7 +513,7 @@ public final class Demo {
         }
         plot.save(r.stringPng.toFile(), PLOT_WIDTH, PLOT_HEIGHT);
 
-        LinePlot shape = new LinePlot("Plucked string: its shape during the first half period",
+        LineChart shape = new LineChart("Plucked string: its shape during the first half period",
                 "position along the string x (cm)", "displacement y (mm)");
         for (int k = 0; k < shapes; k++) {
             double[] cm = new double[n + 2];

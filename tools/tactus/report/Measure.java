@@ -1,8 +1,9 @@
-package tactus.tuning;
+package tactus.report;
 
 /**
- * Model-free estimators for recorded signals, shared by {@link TuningTest} and the accuracy report. None of them
- * uses the scheme's recurrence: they only assume that the signal is a (possibly decaying) sinusoid.
+ * Model-free estimators for recorded signals, shared by the accuracy report and the tuning tests
+ * ({@code tactus.tuning.TuningTest}). None of them uses the scheme's recurrence: they only assume that the signal
+ * is a (possibly decaying) sinusoid.
  *
  * <ul>
  *   <li>{@link #crossingFrequency}: mean spacing of upward zero crossings (a coarse, robust first guess);</li>

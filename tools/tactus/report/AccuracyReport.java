@@ -23,8 +23,6 @@ import tactus.Vect3D;
 import tactus.StabilityReport;
 import tactus.engine.Tuning;
 import tactus.paramSystem;
-import tactus.render.LinePlot;
-import tactus.tuning.Measure;
 
 /**
  * "What accuracy costs in time": measures the error of reference problems with known answers against the CPU time
@@ -107,7 +105,7 @@ public final class AccuracyReport {
                 .append("ratios and orders of magnitude; the work counts (force or link evaluations per output ")
                 .append("sample) carry over to any machine.\n");
         md.append("- **Errors** are measured on the simulated output (44.1 kHz unless stated) with model-free ")
-                .append("estimators (`test/tactus/tuning/Measure.java`): frequency from the peak of the Hann-windowed ")
+                .append("estimators (`tools/tactus/report/Measure.java`): frequency from the peak of the Hann-windowed ")
                 .append("spectrum refined by golden-section search, T60 from the exact envelope ")
                 .append("y(n)² - y(n+1)·y(n-1) = C² sin²θ ρ^(2n) of a decaying sinusoid, phase and amplitude from a ")
                 .append("least-squares sine fit, string partials by projecting the masses' displacements on the ")
@@ -118,7 +116,7 @@ public final class AccuracyReport {
                 .append("simulation rate.\n\n");
         md.append(body);
         md.append("## Reproduce\n\n");
-        md.append("`gradle accuracyReport` runs `tactus.report.AccuracyReport` with the argument `docs` on the test ")
+        md.append("`gradle accuracyReport` runs `tactus.report.AccuracyReport` with the argument `docs` on the tools ")
                 .append("runtime classpath and rewrites this file and the `accuracy-*.png` plots. It takes a few ")
                 .append("minutes. The exactness claims for the tuning helpers are also checked by ")
                 .append("`test/tactus/tuning/TuningTest.java` on every `gradle test`.\n");
@@ -179,9 +177,9 @@ public final class AccuracyReport {
                 .append("after 1 s (rad) | amplitude error | CPU ms per simulated s (wall) |\n");
         s.append("|---|---|---|---|---|---|---|---|---|\n");
         double[] freqs = {100, 1000, 5000};
-        LinePlot pitch = new LinePlot("Oscillator pitch error vs cost (44.1 kHz output, k = 1, 2, 4, 8)",
+        LineChart pitch = new LineChart("Oscillator pitch error vs cost (44.1 kHz output, k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "|frequency error| (cents)").logX(true).logY(true).markers(true);
-        LinePlot phase = new LinePlot("Oscillator phase error after 1 s vs cost (k = 1, 2, 4, 8)",
+        LineChart phase = new LineChart("Oscillator phase error after 1 s vs cost (k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "|phase error| after 1 s (rad)").logX(true).logY(true).markers(true);
         double[] matchedWorst = new double[KS.length];
         double[] matchedCost = new double[KS.length];
@@ -310,7 +308,7 @@ public final class AccuracyReport {
         s.append("| f | T60 | mapping | k | frequency error (cents) | T60 error | CPU ms per simulated s (wall) |\n");
         s.append("|---|---|---|---|---|---|---|\n");
         double[][] cases = {{100, 1.0}, {1000, 0.2}, {5000, 0.02}};
-        LinePlot plot = new LinePlot("Damped oscillator: T60 error vs cost (k = 1, 2, 4, 8)",
+        LineChart plot = new LineChart("Damped oscillator: T60 error vs cost (k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "|T60 error| (%)").logX(true).logY(true).markers(true);
         double worstNaive = 0;
         double worstMatched = 0;
@@ -529,9 +527,9 @@ public final class AccuracyReport {
         double[] f1s = {110, 440, 1000};
         int timedSamples = FS / 20;
         double worstModelVsFormula = 0;
-        LinePlot plot = new LinePlot("String at f1 = 440 Hz: worst error of partials 1-10 vs cost (k = 1, 2, 4, 8)",
+        LineChart plot = new LineChart("String at f1 = 440 Hz: worst error of partials 1-10 vs cost (k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "max |partial error| (cents)").logX(true).logY(true).markers(true);
-        LinePlot plot110 = new LinePlot("String at f1 = 110 Hz: worst error of partials 1-10 vs cost (k = 1, 2, 4, 8)",
+        LineChart plot110 = new LineChart("String at f1 = 110 Hz: worst error of partials 1-10 vs cost (k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "max |partial error| (cents)").logX(true).logY(true).markers(true);
         double[][] cost440 = new double[Strategy.values().length][KS.length];
         double[][] err440 = new double[Strategy.values().length][KS.length];
@@ -688,7 +686,7 @@ public final class AccuracyReport {
                 .append("the scheme starting from X(-1) = X(0) - v/fs.\n\n");
         s.append("| output rate | start | k | position error after 1 s (m) | CPU ms per simulated s (wall) |\n");
         s.append("|---|---|---|---|---|\n");
-        LinePlot plot = new LinePlot("Free fall: position error after 1 s vs cost (k = 1, 2, 4, 8)",
+        LineChart plot = new LineChart("Free fall: position error after 1 s vs cost (k = 1, 2, 4, 8)",
                 "CPU ns per simulated second", "|position error| after 1 s (m)").logX(true).logY(true).markers(true);
         double plain44 = 0;
         double corrected44 = 0;
@@ -1122,7 +1120,7 @@ public final class AccuracyReport {
         return a;
     }
 
-    private void savePlot(LinePlot plot, String file, StringBuilder s, String alt) {
+    private void savePlot(LineChart plot, String file, StringBuilder s, String alt) {
         File f = plot.save(new File(out, file), 960, 600);
         log("   wrote " + f);
         s.append("![").append(alt).append("](").append(file).append(")\n\n");
