@@ -12,7 +12,10 @@ package tactus.engine;
  * <p>This class does no name handling, unit conversion or locking: the {@code tactus} facade
  * does that. Ids passed in must be live, or an {@link IllegalArgumentException} is thrown.
  */
-public final class Engine {
+public final class Engine implements AutoCloseable {
+    /** Closes the parallel stepper of an engine that became unreachable without {@link #close()}. */
+    private static final java.lang.ref.Cleaner CLEANER = java.lang.ref.Cleaner.create();
+
     private final MassTable masses = new MassTable();
     private final LinkTable links = new LinkTable();
     private final Medium medium = new Medium();
@@ -23,6 +26,7 @@ public final class Engine {
     private long steps;
     private boolean stencils = true;
     private ParallelStepper stepper;
+    private java.lang.ref.Cleaner.Cleanable stepperCleanup;
     private int parallelMinElements = 20_000;
     private StepPlan hookPlan;
     private long hookSteps;
@@ -232,6 +236,9 @@ public final class Engine {
             }
         }
         masses.alive[id] = false;
+        if (id == divergedMass) {
+            forgetDivergence();
+        }
         topologyDirty = true;
     }
 
@@ -245,8 +252,9 @@ public final class Engine {
         topologyDirty = true;
     }
 
-    /** Removes every mass and link. Ids already issued stay invalid. */
+    /** Removes every mass, link and contact group, and forgets a divergence. Ids already issued stay invalid. */
     public void clear() {
+        forgetDivergence();
         for (int id = 0; id < masses.count; id++) {
             masses.alive[id] = false;
         }
@@ -336,7 +344,10 @@ public final class Engine {
      * @return the number of steps actually run
      */
     public int step(int n) {
-        if (divergedMass >= 0) {
+        if (n < 0) {
+            throw new IllegalArgumentException("step count must be >= 0, got " + n);
+        }
+        if (divergedMass >= 0 || n == 0) {
             return 0;
         }
         if (topologyDirty || effectsDirty) {
@@ -346,19 +357,26 @@ public final class Engine {
         if (stepper != null && n > 1 && p.elementCount() >= parallelMinElements) {
             hookPlan = p;
             hookSteps = 0;
-            int ran = stepper.run(p, n, guardHook);
-            steps += ran;
-            return ran;
-        }
-        for (int i = 0; i < n; i++) {
-            p.step();
-            if (guardAfterStep(p, steps + i + 1)) {
-                steps += i + 1;
-                return i + 1;
+            try {
+                return stepper.run(p, n, guardHook);
+            } finally {
+                steps += hookSteps;
+                hookPlan = null;
             }
         }
-        steps += n;
-        return n;
+        int ran = 0;
+        try {
+            while (ran < n) {
+                p.step();
+                ran++;
+                if (guardAfterStep(p, steps + ran)) {
+                    break;
+                }
+            }
+        } finally {
+            steps += ran;
+        }
+        return ran;
     }
 
     /** The divergence check after one parallel step; runs on the stepping thread while the others wait. */
@@ -390,8 +408,10 @@ public final class Engine {
     /**
      * Sets how many threads may step large models (1, the default, is single-threaded). With more, a model
      * of at least {@link #parallelThreshold()} elements is stepped in parallel when {@link #step(int)} runs
-     * more than one step; results are bit-identical to single-threaded stepping. Threads beyond the number
-     * of cores only slow things down.
+     * more than one step; results are bit-identical to single-threaded stepping (tested with batch sizes
+     * 1 to 5 and 2 to 4 threads). Threads beyond the number of cores only slow things down. The worker
+     * threads are daemon threads; {@link #close()} stops them, and they are stopped as well once the engine
+     * has become unreachable.
      */
     public void setThreads(int threads) {
         if (threads < 1) {
@@ -401,13 +421,38 @@ public final class Engine {
             if (stepper.threads() == threads) {
                 return;
             }
-            stepper.shutdown();
-            stepper = null;
+            closeStepper();
         }
         if (threads > 1) {
-            stepper = new ParallelStepper(threads);
+            ParallelStepper s = new ParallelStepper(threads);
+            stepper = s;
+            stepperCleanup = CLEANER.register(this, s::close);
         }
         topologyDirty = true;
+    }
+
+    /**
+     * Stops the worker threads of parallel stepping and releases them; idempotent. The engine stays usable
+     * and steps on the calling thread from then on ({@link #threads()} is 1) until {@link #setThreads} asks
+     * for more threads again.
+     */
+    @Override
+    public void close() {
+        if (stepper != null) {
+            closeStepper();
+            topologyDirty = true;
+        }
+    }
+
+    private void closeStepper() {
+        stepperCleanup.clean();
+        stepperCleanup = null;
+        stepper = null;
+    }
+
+    /** @return the worker threads of the parallel stepper (empty when stepping on one thread), for tests. */
+    Thread[] stepperThreads() {
+        return stepper == null ? new Thread[0] : stepper.workers();
     }
 
     /** @return the number of threads that may step large models. */
@@ -460,23 +505,25 @@ public final class Engine {
      * previous distance, so the next step starts from the repaired positions at rest.
      */
     public void clearDivergence() {
-        divergedMass = -1;
-        divergedAt = -1;
-        countdown = guard.interval();
+        forgetDivergence();
         if (plan != null) {
             StepPlan p = plan;
             java.util.Arrays.fill(p.fx, 0.0);
             java.util.Arrays.fill(p.fy, 0.0);
             java.util.Arrays.fill(p.fz, 0.0);
-            for (LinkBatch b : p.batches) {
-                if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
-                    continue;
-                }
-                for (int j = 0; j < b.n; j++) {
-                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, p));
-                }
-            }
+            PlanCompiler.resetLinkHistory(p, -1);
         }
+    }
+
+    /**
+     * Lets stepping resume without touching the state: used when the diverged mass is removed or the model
+     * cleared, so that no dead id stays recorded. A state that is still diverged is found again by the next
+     * scan.
+     */
+    private void forgetDivergence() {
+        divergedMass = -1;
+        divergedAt = -1;
+        countdown = guard.interval();
     }
 
     /** Sets the number of steps between two divergence scans; the next scan comes at most that many steps away. */
@@ -659,9 +706,10 @@ public final class Engine {
             out[1] = plan.fy[s];
             out[2] = plan.fz[s];
         } else {
-            out[0] = 0;
-            out[1] = 0;
-            out[2] = 0;
+            int q = 3 * id;
+            out[0] = masses.pendingForce[q];
+            out[1] = masses.pendingForce[q + 1];
+            out[2] = masses.pendingForce[q + 2];
         }
     }
 
@@ -686,9 +734,10 @@ public final class Engine {
             plan.tz[s] = z;
         } else {
             masses.setPending(id, x, y, z, prevX, prevY, prevZ);
+            masses.pendingTarget[3 * id] = Double.NaN;
         }
         if (s >= 0) {
-            resetLinkHistory(s);
+            PlanCompiler.resetLinkHistory(plan, s);
         }
         if (masses.kind[id].isFixed()) {
             masses.setRest(id, x, y, z);
@@ -697,58 +746,69 @@ public final class Engine {
     }
 
     /**
-     * After a mass was moved by hand, makes its links forget the distance they saw before, so that their
-     * dampers do not mistake the jump for a velocity: tracked links take the current distance as their
-     * previous one, and conditional links (contacts, ropes, bubbles) start again as inactive.
+     * Adds a force to a mass's buffer; it acts once, in the next step. Never compiles: a mass added since the
+     * last compile keeps the force in a pending buffer that the next compile moves into the plan.
      */
-    private void resetLinkHistory(int slot) {
-        for (LinkBatch b : plan.batches) {
-            if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
-                continue;
-            }
-            for (int j = 0; j < b.n; j++) {
-                if (b.a[j] == slot || b.b[j] == slot) {
-                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, plan));
-                }
-            }
+    public void addForce(int id, double fx, double fy, double fz) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            plan.fx[s] += fx;
+            plan.fy[s] += fy;
+            plan.fz[s] += fz;
+        } else {
+            int q = 3 * id;
+            masses.pendingForce[q] += fx;
+            masses.pendingForce[q + 1] += fy;
+            masses.pendingForce[q + 2] += fz;
         }
     }
 
-    /** Adds a force to a mass's buffer; it acts once, in the next step. */
-    public void addForce(int id, double fx, double fy, double fz) {
-        checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        plan.fx[s] += fx;
-        plan.fy[s] += fy;
-        plan.fz[s] += fz;
-    }
-
-    /** Sets the target position that an input module (haptic avatar or position driver) follows. */
+    /**
+     * Sets the target position that an input module (haptic avatar or position driver) follows. Never
+     * compiles: the target of a mass added since the last compile is kept until the next compile.
+     */
     public void setInputTarget(int id, double x, double y, double z) {
         checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        plan.tx[s] = x;
-        plan.ty[s] = y;
-        plan.tz[s] = z;
+        int s = liveSlot(id);
+        if (s >= 0) {
+            plan.tx[s] = x;
+            plan.ty[s] = y;
+            plan.tz[s] = z;
+        } else {
+            int q = 3 * id;
+            masses.pendingTarget[q] = x;
+            masses.pendingTarget[q + 1] = y;
+            masses.pendingTarget[q + 2] = z;
+        }
     }
 
     /**
-     * Copies the force accumulated on a mass since the last call into {@code out[0..2]} and clears it.
+     * Copies the force accumulated on a mass since the last call into {@code out[0..2]} and clears it. Never
+     * compiles and allocates nothing.
      *
      * @return the number of steps over which the force was accumulated
      */
     public long takeForce(int id, double[] out) {
         checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        out[0] = plan.fx[s];
-        out[1] = plan.fy[s];
-        out[2] = plan.fz[s];
-        plan.fx[s] = 0;
-        plan.fy[s] = 0;
-        plan.fz[s] = 0;
+        int s = liveSlot(id);
+        if (s >= 0) {
+            out[0] = plan.fx[s];
+            out[1] = plan.fy[s];
+            out[2] = plan.fz[s];
+            plan.fx[s] = 0;
+            plan.fy[s] = 0;
+            plan.fz[s] = 0;
+        } else {
+            double[] f = masses.pendingForce;
+            int q = 3 * id;
+            out[0] = f[q];
+            out[1] = f[q + 1];
+            out[2] = f[q + 2];
+            f[q] = 0;
+            f[q + 1] = 0;
+            f[q + 2] = 0;
+        }
         long n = steps - masses.lastTake[id];
         masses.lastTake[id] = steps;
         return n;

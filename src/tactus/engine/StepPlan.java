@@ -82,8 +82,11 @@ public final class StepPlan {
         this.medium = medium;
     }
 
-    /** Runs one simulation step: every mass kernel, then every interaction kernel. */
-    public void step() {
+    /**
+     * Runs one simulation step: every mass kernel, then every interaction kernel. Package-private: stepping
+     * goes through {@link Engine#step(int)}, which counts steps and runs the divergence guard.
+     */
+    void step() {
         Kernel[] ks = kernels;
         for (int i = 0; i < ks.length; i++) {
             ks[i].run();
