@@ -324,6 +324,11 @@ public final class Engine implements AutoCloseable {
         }
     }
 
+    /** @return true when the next step will compile the plan first (the topology or an effect changed). */
+    boolean needsCompile() {
+        return plan == null || topologyDirty || effectsDirty;
+    }
+
     /** @return the current compiled plan, compiling first if needed. */
     public StepPlan plan() {
         compile();
