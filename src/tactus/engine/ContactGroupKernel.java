@@ -79,9 +79,14 @@ final class ContactGroupKernel implements Kernel {
         return slot;
     }
 
-    /** @return the potential energy ½K(threshold - d)² of the currently engaged pairs, per-step units. */
+    /**
+     * @return the potential energy ½K(d - threshold)² of the pairs closer than the threshold, per-step units,
+     *     summed in the same order and with the same operations as {@link EnergyMeter} sums the equivalent
+     *     explicit Contact3D links, so both agree exactly. The neighbour list is rebuilt first when a member
+     *     was moved (by a step or by hand) beyond the reach of the current list.
+     */
     double energy() {
-        if (!built) {
+        if (!built || movedTooFar()) {
             rebuild();
         }
         double e = 0;
@@ -90,13 +95,14 @@ final class ContactGroupKernel implements Kernel {
             double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
             double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (d < threshold) {
-                e += 0.5 * k * (threshold - d) * (threshold - d);
+                double stretch = d - threshold;
+                e += 0.5 * k * stretch * stretch;
             }
         }
         return e;
     }
 
-    /** @return how many times the neighbour list has been rebuilt. */
+    /** @return how many times the neighbour list has been rebuilt (for tests of the rebuild rate). */
     long rebuilds() {
         return rebuilds;
     }
@@ -121,8 +127,7 @@ final class ContactGroupKernel implements Kernel {
             double ex = px[a] - px[c], ey = py[a] - py[c], ez = pz[a] - pz[c];
             double prev = Math.sqrt(ex * ex + ey * ey + ez * ez);
             if (d > 0) {
-                double s = (-kk * (d - t) - zd * (d - prev)) / d;
-                LinkKernels.push(fx, fy, fz, a, c, s, dx, dy, dz);
+                LinkKernels.push(fx, fy, fz, a, c, LinkKernels.springDamperOverDistance(kk, zd, t, d, prev), dx, dy, dz);
             }
         }
     }
@@ -178,7 +183,8 @@ final class ContactGroupKernel implements Kernel {
             return;
         }
         long nx = maxX - minX + 1, ny = maxY - minY + 1, nz = maxZ - minZ + 1;
-        if (nx * ny * nz <= Math.max(4096L, 32L * n)) {
+        // the cell count in double: nx * ny * nz can overflow a long (cell indices reach +-1e15)
+        if ((double) nx * (double) ny * (double) nz <= Math.max(4096L, 32L * n)) {
             rebuildDense(minX, minY, minZ, (int) nx, (int) ny, (int) nz);
         } else {
             rebuildHashed();

@@ -203,8 +203,8 @@ public final class Engine implements AutoCloseable {
         topologyDirty = true;
     }
 
-    /** @return the number of times the neighbour lists of all contact groups have been rebuilt. */
-    public long contactGroupRebuilds() {
+    /** @return the number of times the neighbour lists of all contact groups have been rebuilt (for tests). */
+    long contactGroupRebuilds() {
         compile();
         long n = 0;
         for (ContactGroupKernel g : plan.groups) {
