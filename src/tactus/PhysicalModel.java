@@ -158,7 +158,7 @@ public class PhysicalModel {
             engine.setLinkParams(id, engine.linkStiffness(id) * r2, engine.linkDamping(id) * ratio,
                     engine.linkLength(id));
             if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) {
-                engine.setLinkAux(id, engine.linkAux(id) * r2);
+                engine.setAttraction(id, engine.attraction(id) * r2);
             }
         }
         engine.rescaleTime(ratio);
@@ -1253,7 +1253,7 @@ public class PhysicalModel {
 
     double linkAuxOut(int id) {
         synchronized (lock) {
-            double v = engine.linkAux(id);
+            double v = engine.linkKind(id) == LinkKind.ATTRACTOR3D ? engine.attraction(id) : engine.planePosition(id);
             return engine.linkKind(id) == LinkKind.ATTRACTOR3D ? units.forceOut(v) : v;
         }
     }
@@ -1261,9 +1261,9 @@ public class PhysicalModel {
     void setLinkAuxOf(String op, int id, double v) {
         synchronized (lock) {
             Check.finite(op, links.name(id), "value", v);
-            double old = engine.linkAux(id);
-            engine.setLinkAux(id, engine.linkKind(id) == LinkKind.ATTRACTOR3D ? units.forceIn(v) : v);
-            analyzeAfterChange(() -> engine.setLinkAux(id, old));
+            double old = engine.linkKind(id) == LinkKind.ATTRACTOR3D ? engine.attraction(id) : engine.planePosition(id);
+            if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) { engine.setAttraction(id, units.forceIn(v)); } else { engine.setPlanePosition(id, v); }
+            analyzeAfterChange(() -> { if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) { engine.setAttraction(id, old); } else { engine.setPlanePosition(id, old); } });
         }
     }
 

@@ -30,9 +30,10 @@ final class ContactGroupKernel implements Kernel {
     private final double reach2;
     private final double halfSkin2;
     private final double cell;
-    private final double[] rx;
-    private final double[] ry;
-    private final double[] rz;
+    /** Member positions at the last build of the neighbour list (to detect a move beyond half the skin). */
+    private final double[] builtX;
+    private final double[] builtY;
+    private final double[] builtZ;
     private final int mask;
     private final int[] bucketStart;
     private final int[] bucketItems;
@@ -61,9 +62,9 @@ final class ContactGroupKernel implements Kernel {
         this.reach2 = reach * reach;
         this.halfSkin2 = 0.25 * skin * skin;
         this.cell = reach > 0 ? reach : 1.0;
-        rx = new double[n];
-        ry = new double[n];
-        rz = new double[n];
+        builtX = new double[n];
+        builtY = new double[n];
+        builtZ = new double[n];
         int size = Integer.highestOneBit(Math.max(4, 2 * n - 1)) << 1;
         mask = size - 1;
         bucketStart = new int[size + 1];
@@ -137,7 +138,7 @@ final class ContactGroupKernel implements Kernel {
         final double lim = halfSkin2;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
-            double dx = x[s] - rx[m], dy = y[s] - ry[m], dz = zz[s] - rz[m];
+            double dx = x[s] - builtX[m], dy = y[s] - builtY[m], dz = zz[s] - builtZ[m];
             if (!(dx * dx + dy * dy + dz * dz <= lim)) {
                 return true;
             }
@@ -164,9 +165,9 @@ final class ContactGroupKernel implements Kernel {
         long maxX = Long.MIN_VALUE, maxY = Long.MIN_VALUE, maxZ = Long.MIN_VALUE;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
-            rx[m] = x[s];
-            ry[m] = y[s];
-            rz[m] = zz[s];
+            builtX[m] = x[s];
+            builtY[m] = y[s];
+            builtZ[m] = zz[s];
             long a = cellIndex(x[s]), b = cellIndex(y[s]), c = cellIndex(zz[s]);
             cx[m] = a;
             cy[m] = b;

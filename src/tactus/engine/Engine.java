@@ -142,7 +142,7 @@ public final class Engine implements AutoCloseable {
             throw new IllegalArgumentException("plane axis must be 0, 1 or 2, got " + axis);
         }
         int id = addLink(LinkKind.PLANE_CONTACT3D, mass, mass, stiffness, damping, l0);
-        links.aux[id] = position;
+        links.planePosition[id] = position;
         links.axis[id] = axis;
         return id;
     }
@@ -150,7 +150,7 @@ public final class Engine implements AutoCloseable {
     /** Adds an inverse-square attractor: force {@code -attraction / d^2} while d exceeds {@code limit}. */
     public int addAttractor(int massA, int massB, double limit, double attraction) {
         int id = addLink(LinkKind.ATTRACTOR3D, massA, massB, 0, 0, limit);
-        links.aux[id] = attraction;
+        links.attraction[id] = attraction;
         return id;
     }
 
@@ -610,18 +610,6 @@ public final class Engine implements AutoCloseable {
         return masses.damping[id];
     }
 
-    /** @return the EWMA weight of an input module. */
-    public double inputWeight(int id) {
-        checkMass(id);
-        return masses.weight[id];
-    }
-
-    /** @return the rest position of an oscillator along axis 0, 1 or 2. */
-    public double rest(int id, int axis) {
-        checkMass(id);
-        return masses.rest[3 * id + axis];
-    }
-
     /** @return the stiffness K of a link, per step. */
     public double linkStiffness(int id) {
         checkLink(id);
@@ -640,10 +628,16 @@ public final class Engine implements AutoCloseable {
         return links.length[id];
     }
 
-    /** @return the plane position of a plane contact, or the attraction factor of an attractor. */
-    public double linkAux(int id) {
-        checkLink(id);
-        return links.aux[id];
+    /** @return the plane coordinate of a plane contact, in units (the plane lies across its axis there). */
+    public double planePosition(int id) {
+        checkLink(id, LinkKind.PLANE_CONTACT3D);
+        return links.planePosition[id];
+    }
+
+    /** @return the attraction factor A of an attractor (force {@code -A / d^2}), per-step force units times d^2. */
+    public double attraction(int id) {
+        checkLink(id, LinkKind.ATTRACTOR3D);
+        return links.attraction[id];
     }
 
     /** @return the axis (0, 1, 2) of a plane contact. */
@@ -661,10 +655,17 @@ public final class Engine implements AutoCloseable {
         refreshLink(id);
     }
 
-    /** Sets the plane position of a plane contact, or the attraction factor of an attractor. */
-    public void setLinkAux(int id, double value) {
-        checkLink(id);
-        links.aux[id] = value;
+    /** Sets the plane coordinate of a plane contact. */
+    public void setPlanePosition(int id, double position) {
+        checkLink(id, LinkKind.PLANE_CONTACT3D);
+        links.planePosition[id] = position;
+        refreshLink(id);
+    }
+
+    /** Sets the attraction factor A of an attractor. */
+    public void setAttraction(int id, double attraction) {
+        checkLink(id, LinkKind.ATTRACTOR3D);
+        links.attraction[id] = attraction;
         refreshLink(id);
     }
 
@@ -826,7 +827,7 @@ public final class Engine implements AutoCloseable {
         double[] b = scratchB;
         position(links.a[id], a);
         if (links.kind[id] == LinkKind.PLANE_CONTACT3D) {
-            return a[links.axis[id]] - links.aux[id];
+            return a[links.axis[id]] - links.planePosition[id];
         }
         position(links.b[id], b);
         if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
@@ -895,6 +896,14 @@ public final class Engine implements AutoCloseable {
     private void checkLink(int id) {
         if (!links.isLive(id)) {
             throw new IllegalArgumentException("no live link with id " + id);
+        }
+    }
+
+    private void checkLink(int id, LinkKind kind) {
+        checkLink(id);
+        if (links.kind[id] != kind) {
+            throw new IllegalArgumentException("link " + id + " is a " + links.kind[id].label() + ", not a "
+                    + kind.label());
         }
     }
 }

@@ -223,7 +223,7 @@ final class LinkKernels {
 
         private void axis(int s, int e, double[] q, double[] pq, double[] fq) {
             final int[] ia = b.a;
-            final double[] k = b.k, zz = b.z, l0 = b.len, pos = b.aux;
+            final double[] k = b.k, zz = b.z, l0 = b.len, pos = b.planePosition;
             for (int j = s; j < e; j++) {
                 int a = ia[j];
                 double qa = q[a];
@@ -245,7 +245,7 @@ final class LinkKernels {
         public void run() {
             final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
             final int[] ia = b.a, ib = b.b;
-            final double[] lim = b.len, att = b.aux;
+            final double[] lim = b.len, att = b.attraction;
             for (int j = 0, n = b.n; j < n; j++) {
                 int a = ia[j], c = ib[j];
                 double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];

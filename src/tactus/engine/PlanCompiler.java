@@ -110,16 +110,16 @@ final class PlanCompiler {
         MassKind k = mt.kind[id];
         double im = k.isInertial() ? 1.0 / mt.mass[id] : 0.0;
         p.invM[s] = im;
-        p.w[s] = k.isInput() ? mt.weight[id] : 0.0;
+        p.inputWeight[s] = k.isInput() ? mt.weight[id] : 0.0;
         if (k.isOscillator()) {
-            p.dmp[s] = 1.0 - (mt.damping[id] + medium.friction) * im;
-            p.stf[s] = mt.stiffness[id] * im;
-            p.rx[s] = mt.rest[3 * id];
-            p.ry[s] = mt.rest[3 * id + 1];
-            p.rz[s] = mt.rest[3 * id + 2];
+            p.retention[s] = 1.0 - (mt.damping[id] + medium.friction) * im;
+            p.oscStiffnessPerMass[s] = mt.stiffness[id] * im;
+            p.restX[s] = mt.rest[3 * id];
+            p.restY[s] = mt.rest[3 * id + 1];
+            p.restZ[s] = mt.rest[3 * id + 2];
         } else {
-            p.dmp[s] = 1.0 - medium.friction * im;
-            p.stf[s] = 0.0;
+            p.retention[s] = 1.0 - medium.friction * im;
+            p.oscStiffnessPerMass[s] = 0.0;
         }
         if (k.isFixed()) {
             p.px[s] = p.x[s];
@@ -203,7 +203,7 @@ final class PlanCompiler {
 
     /** Writes the parameters of one link into its batch slot. */
     static void fillLink(LinkBatch b, int j, LinkTable lt, int id) {
-        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.aux[id]);
+        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.planePosition[id], lt.attraction[id]);
     }
 
     /**

@@ -198,8 +198,8 @@ public final class StabilityAnalyzer {
                 double im = p.invM[i];
                 sqrtInvM[i] = Math.sqrt(im);
                 if (im > 0) {
-                    double zf = (1 - p.dmp[i]) / im;
-                    diag[i] += p.stf[i] / im + 2 * Math.max(zf, 0);
+                    double zf = (1 - p.retention[i]) / im;
+                    diag[i] += p.oscStiffnessPerMass[i] / im + 2 * Math.max(zf, 0);
                     if (zf < 0 && negativeMass < 0) {
                         negativeMass = p.massId[i];
                     }
@@ -219,7 +219,7 @@ public final class StabilityAnalyzer {
             double c;
             if (b.kind == LinkKind.ATTRACTOR3D) {
                 double l = b.len[j] > 0 ? b.len[j] : PlanCompiler.distanceOf(b, j, p);
-                c = l > 0 ? 2 * Math.abs(b.aux[j]) / (l * l * l) : 0;
+                c = l > 0 ? 2 * Math.abs(b.attraction[j]) / (l * l * l) : 0;
             } else {
                 double k = b.kind.hasStiffness() ? b.k[j] : 0;
                 double z = b.kind.hasDamping() ? b.z[j] : 0;

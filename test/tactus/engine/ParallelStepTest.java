@@ -181,7 +181,7 @@ class ParallelStepTest {
         parallel.setParallelThreshold(0);
         parallel.step(4);
         StepPlan p = parallel.plan();
-        assertTrue(p.sbx != null, "the sheet should be stepped with stencil runs");
+        assertTrue(p.stencilVecX != null, "the sheet should be stepped with stencil runs");
         return p;
     }
 
@@ -189,13 +189,13 @@ class ParallelStepTest {
     @Test
     void aKernelThatThrowsOnAWorkerReachesTheCallerAndTheStepperStaysUsable() {
         StepPlan p = parallelSheetWithRuns(2);
-        double[] scratch = p.sbx;
+        double[] scratch = p.stencilVecX;
         // the worker's half of the first run's range no longer fits the scratch array: it throws there only
-        p.sbx = new double[p.nMass / 4];
+        p.stencilVecX = new double[p.nMass / 4];
         long before = parallel.stepCount();
         assertTimeoutPreemptively(Duration.ofSeconds(60), () -> {
             assertThrows(ArrayIndexOutOfBoundsException.class, () -> parallel.step(10));
-            p.sbx = scratch;
+            p.stencilVecX = scratch;
             assertEquals(10, parallel.step(10), "the stepper must run again after the failure");
         });
         assertEquals(before + 10, parallel.stepCount(), "the failed batch counts no completed step");
