@@ -10,7 +10,9 @@ import java.util.Arrays;
  * {@code f = -K (d - threshold) - Z (d(n) - d(n-1))} along the line between them, with the previous
  * distance taken from the masses' previous positions (which is what an explicit contact stores). Pairs
  * are visited in lexicographic order, so the force sums equal those of explicit contacts added in that
- * order, bit for bit.
+ * order, bit for bit (the two share {@link LinkKernels#springDamperOverDistance}; after a change of step
+ * duration, {@link Engine#rescaleTime}, they agree to round-off only, the explicit links rescaling their
+ * stored previous distance and the group its members' previous positions).
  *
  * <p>Broad phase: a Verlet neighbour list of the pairs closer than {@code threshold + skin}, built with
  * a uniform grid of cell size {@code threshold + skin} (dense over the members' bounding box when that

@@ -1,9 +1,13 @@
 package tactus.engine;
 
 /**
- * Flat arrays for all live links of one kind, in insertion order. {@code a} and {@code b}
- * are mass slots in the {@link StepPlan}; {@code dp} is the previous distance used by the
- * damper (a negative value marks a conditional link that was inactive on the previous step).
+ * Flat arrays for all live links of one kind. {@code a} and {@code b} are mass slots in the {@link StepPlan}.
+ * Order: insertion order, except that plane contacts are grouped by axis ({@link #axisStart}) and that a
+ * spring-family batch organised by the {@link StencilPlanner} holds its irregular links first (indices
+ * [0, {@link #nIrregular}), in insertion order) and then the links of its {@link StencilRun}s (by offset and
+ * slot, with {@code a < b}). The damper's previous distance of an irregular link is {@code dp[j]}; that of a
+ * run link lives in its run, indexed by slot: read and write it with {@link #prev} and {@link #setPrev}. A
+ * negative previous distance marks a conditional link that was inactive on the previous step.
  */
 final class LinkBatch {
     private static final double[] NONE = new double[0];

@@ -10,8 +10,11 @@ package tactus.engine;
  *   <li>differences, distance, scalar force over distance, force components;</li>
  *   <li>add the force to the near ends; copy it next to the far ends and subtract it there.</li>
  * </ol>
- * The distance is {@code sqrt(d^2 + 1e-300)}: for coincident masses this gives a tiny positive distance and
- * a zero force instead of a division by zero, and for any other distance it is exactly {@code sqrt(d^2)}.
+ * The distance is {@code sqrt(d^2 + 1e-300)}, so that no division by zero can occur: for coincident masses
+ * it is 1e-150 and the force (a finite scalar times a zero difference) is zero. The added 1e-300 vanishes
+ * in the rounding of {@code d^2} only when {@code d} exceeds about 1e-142; closer masses see a distance up to
+ * 1e-150 too large. Above that the distance is exactly {@code sqrt(d^2)}, as in the index-array kernels
+ * (which skip d = 0 instead).
  */
 final class StencilKernel implements RangeKernel {
     private static final double TINY = 1e-300;
