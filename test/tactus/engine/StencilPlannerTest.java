@@ -97,4 +97,46 @@ class StencilPlannerTest {
             assertEquals(1, r.o);
         }
     }
+
+    // The end-to-end case of the issue: a model of 2^21 + 200 masses (the last 200 a chain of spring-dampers,
+    // the rest free masses at rest, of the same kind so that the chain's slots come last) stepped on 2 threads, where the chain becomes a stencil run whose slots lie beyond
+    // 2^21. Its 200 masses must move exactly like the same chain built alone (slots 0..199) on one thread. The
+    // old planner connected the run to masses 2^21 lower and the chain stayed put. (About 1.2 GB of heap and a
+    // few seconds: the mass table alone holds 2.1 million masses.)
+    @Test
+    void aChainBeyondTwoToTheTwentyOneMassesOnTwoThreadsMovesLikeTheSameChainAlone() {
+        int n = (1 << 21) + 200;
+        int first = n - 200;
+        Engine big = new Engine();
+        try {
+            big.setThreads(2);
+            big.setParallelThreshold(0);
+            for (int i = 0; i < first; i++) {
+                big.addMass(MassKind.MASS3D, 1, i, 0, 0, 0, 0, 0); // free masses at rest: nothing moves them
+            }
+            Engine alone = new Engine();
+            for (int i = first; i < n; i++) {
+                big.addMass(MassKind.MASS3D, 1, i, 0, 0.01 * Math.sin(i), 0, 0, 0);
+                alone.addMass(MassKind.MASS3D, 1, i, 0, 0.01 * Math.sin(i), 0, 0, 0);
+            }
+            for (int i = 0; i < 199; i++) {
+                big.addLink(LinkKind.SPRING_DAMPER3D, first + i, first + i + 1, 0.1, 0.001, 1);
+                alone.addLink(LinkKind.SPRING_DAMPER3D, i, i + 1, 0.1, 0.001, 1);
+            }
+            assertEquals(10, big.step(10));
+            alone.step(10);
+            assertEquals(1, big.stencilRunCount(), "the chain is a stencil run");
+            double[] p = new double[3];
+            double[] q = new double[3];
+            for (int i = 0; i < 200; i++) {
+                big.position(first + i, p);
+                alone.position(i, q);
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(q[c], p[c], 1e-12, "mass " + (first + i) + " axis " + c);
+                }
+            }
+        } finally {
+            big.close();
+        }
+    }
 }
