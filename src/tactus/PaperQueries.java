@@ -34,7 +34,7 @@ final class PaperQueries {
         engine.position(engine.linkMassA(linkId), tmp);
         if (!first) {
             if (isPlane(linkId)) {
-                tmp[engine.linkAxis(linkId)] = engine.linkAux(linkId);
+                tmp[engine.linkAxis(linkId)] = engine.planePosition(linkId);
             } else {
                 engine.position(engine.linkMassB(linkId), tmp);
             }
@@ -70,9 +70,9 @@ final class PaperQueries {
     double oscDisplacement(String op, int massId) {
         c.params.requireOsc(op, massId);
         engine.position(massId, tmp);
-        double dx = tmp[0] - engine.rest(massId, 0);
-        double dy = tmp[1] - engine.rest(massId, 1);
-        double dz = tmp[2] - engine.rest(massId, 2);
+        double dx = tmp[0] - engine.restPosition(massId, 0);
+        double dy = tmp[1] - engine.restPosition(massId, 1);
+        double dz = tmp[2] - engine.restPosition(massId, 2);
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
@@ -176,7 +176,7 @@ final class PaperQueries {
         int[] ids = matching(c.dir.links, tag);
         for (int id : ids) {
             LinkKind k = engine.linkKind(id);
-            if (ParamEditor.hasLengthParam(k)) {
+            if (k.hasLength()) {
                 ParamEditor.checkLength(op, c.dir.linkName(id), k, dist);
             }
         }
@@ -192,7 +192,7 @@ final class PaperQueries {
                 old[3 * k + 2] = engine.linkLength(id);
                 engine.setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : old[3 * k],
                         kind.hasDamping() ? u.dampingIn(Z) : old[3 * k + 1],
-                        ParamEditor.hasLengthParam(kind) ? dist : old[3 * k + 2]);
+                        kind.hasLength() ? dist : old[3 * k + 2]);
             }
         } finally {
             c.guard.resume();

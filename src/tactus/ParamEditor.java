@@ -98,11 +98,6 @@ final class ParamEditor {
         return engine.linkDistance(id) - engine.linkLength(id);
     }
 
-    /** @return true when the kind has a length parameter that the user may set (every kind but the damper). */
-    static boolean hasLengthParam(LinkKind k) {
-        return k.hasLength() || k == LinkKind.ATTRACTOR3D;
-    }
-
     /**
      * Sets any of stiffness, damping, length of one link in model units; NaN means "leave unchanged" (public
      * callers reject NaN first). Validates everything before changing anything.
@@ -117,7 +112,7 @@ final class ParamEditor {
             throw Check.fail(op, n, "a " + kind.label() + " has no damping");
         }
         if (!Double.isNaN(len)) {
-            if (!hasLengthParam(kind)) {
+            if (!kind.hasLength()) {
                 throw Check.fail(op, n, "a " + kind.label() + " has no length parameter");
             }
             checkLength(op, n, kind, len);
@@ -142,29 +137,29 @@ final class ParamEditor {
     /** @return the plane position of a plane contact, in length units. */
     double planePosition(String op, int id) {
         requireKind(op, id, LinkKind.PLANE_CONTACT3D);
-        return engine.linkAux(id);
+        return engine.planePosition(id);
     }
 
     void setPlanePosition(String op, int id, double pos) {
         requireKind(op, id, LinkKind.PLANE_CONTACT3D);
         Check.finite(op, c.dir.linkName(id), "pos", pos);
-        double old = engine.linkAux(id);
-        engine.setLinkAux(id, pos);
-        c.guard.afterChange(() -> engine.setLinkAux(id, old));
+        double old = engine.planePosition(id);
+        engine.setPlanePosition(id, pos);
+        c.guard.afterChange(() -> engine.setPlanePosition(id, old));
     }
 
     /** @return the attraction factor of an attractor (REAL_UNITS: N·m²). */
     double attraction(String op, int id) {
         requireKind(op, id, LinkKind.ATTRACTOR3D);
-        return c.units().forceOut(engine.linkAux(id));
+        return c.units().forceOut(engine.attraction(id));
     }
 
     void setAttraction(String op, int id, double attr) {
         requireKind(op, id, LinkKind.ATTRACTOR3D);
         Check.finite(op, c.dir.linkName(id), "attr", attr);
-        double old = engine.linkAux(id);
-        engine.setLinkAux(id, c.units().forceIn(attr));
-        c.guard.afterChange(() -> engine.setLinkAux(id, old));
+        double old = engine.attraction(id);
+        engine.setAttraction(id, c.units().forceIn(attr));
+        c.guard.afterChange(() -> engine.setAttraction(id, old));
     }
 
     /** @return the axis (0 = x, 1 = y, 2 = z) of a plane contact. */

@@ -354,11 +354,14 @@ public class PhysicalModel {
         }
     }
 
-    /** Stops the worker threads of parallel stepping ({@link #setThreads(int)}); the model stays usable. */
+    /**
+     * Stops the worker threads of parallel stepping ({@link #setThreads(int)}); the model stays usable and
+     * steps on the calling thread. Worker threads also stop by themselves once the model is no longer reachable.
+     */
     public void dispose() {
         enter();
         try {
-            core.engine.setThreads(1);
+            core.engine.close();
         } finally {
             exit();
         }

@@ -34,7 +34,7 @@ final class StabilityMessages {
                 limit = value * scale;
             } else if (k == LinkKind.ATTRACTOR3D) {
                 param = "attraction";
-                value = u.forceOut(e.linkAux(id));
+                value = u.forceOut(e.attraction(id));
                 limit = value * scale;
             } else {
                 param = "K";

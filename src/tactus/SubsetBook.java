@@ -185,7 +185,7 @@ final class SubsetBook {
             LinkKind k = engine.linkKind(id);
             boolean ok = "stiffness".equals(param) ? k.hasStiffness()
                     : "damping".equals(param) ? k.hasDamping()
-                    : "dist".equals(param) && ParamEditor.hasLengthParam(k);
+                    : "dist".equals(param) && k.hasLength();
             if (!ok) {
                 throw Check.fail(op, c.dir.linkName(id), "a " + k.label() + " has no " + param + " parameter");
             }

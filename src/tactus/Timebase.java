@@ -93,11 +93,11 @@ final class Timebase {
         for (int id : links) {
             saved[w++] = engine.linkStiffness(id);
             saved[w++] = engine.linkDamping(id);
-            saved[w++] = engine.linkKind(id) == LinkKind.ATTRACTOR3D ? engine.linkAux(id) : 0;
+            saved[w++] = engine.linkKind(id) == LinkKind.ATTRACTOR3D ? engine.attraction(id) : 0;
             engine.setLinkParams(id, engine.linkStiffness(id) * r2, engine.linkDamping(id) * ratio,
                     engine.linkLength(id));
             if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) {
-                engine.setLinkAux(id, engine.linkAux(id) * r2);
+                engine.setAttraction(id, engine.attraction(id) * r2);
             }
         }
         for (int gid : groupIds) {
@@ -116,7 +116,7 @@ final class Timebase {
             for (int id : links) {
                 engine.setLinkParams(id, saved[r], saved[r + 1], engine.linkLength(id));
                 if (engine.linkKind(id) == LinkKind.ATTRACTOR3D) {
-                    engine.setLinkAux(id, saved[r + 2]);
+                    engine.setAttraction(id, saved[r + 2]);
                 }
                 r += 3;
             }

@@ -10,7 +10,9 @@ import java.util.Arrays;
  * {@code f = -K (d - threshold) - Z (d(n) - d(n-1))} along the line between them, with the previous
  * distance taken from the masses' previous positions (which is what an explicit contact stores). Pairs
  * are visited in lexicographic order, so the force sums equal those of explicit contacts added in that
- * order, bit for bit.
+ * order, bit for bit (the two share {@link LinkKernels#springDamperOverDistance}; after a change of step
+ * duration, {@link Engine#rescaleTime}, they agree to round-off only, the explicit links rescaling their
+ * stored previous distance and the group its members' previous positions).
  *
  * <p>Broad phase: a Verlet neighbour list of the pairs closer than {@code threshold + skin}, built with
  * a uniform grid of cell size {@code threshold + skin} (dense over the members' bounding box when that
@@ -30,9 +32,10 @@ final class ContactGroupKernel implements Kernel {
     private final double reach2;
     private final double halfSkin2;
     private final double cell;
-    private final double[] rx;
-    private final double[] ry;
-    private final double[] rz;
+    /** Member positions at the last build of the neighbour list (to detect a move beyond half the skin). */
+    private final double[] builtX;
+    private final double[] builtY;
+    private final double[] builtZ;
     private final int mask;
     private final int[] bucketStart;
     private final int[] bucketItems;
@@ -61,9 +64,9 @@ final class ContactGroupKernel implements Kernel {
         this.reach2 = reach * reach;
         this.halfSkin2 = 0.25 * skin * skin;
         this.cell = reach > 0 ? reach : 1.0;
-        rx = new double[n];
-        ry = new double[n];
-        rz = new double[n];
+        builtX = new double[n];
+        builtY = new double[n];
+        builtZ = new double[n];
         int size = Integer.highestOneBit(Math.max(4, 2 * n - 1)) << 1;
         mask = size - 1;
         bucketStart = new int[size + 1];
@@ -79,9 +82,14 @@ final class ContactGroupKernel implements Kernel {
         return slot;
     }
 
-    /** @return the potential energy ½K(threshold - d)² of the currently engaged pairs, per-step units. */
+    /**
+     * @return the potential energy ½K(d - threshold)² of the pairs closer than the threshold, per-step units,
+     *     summed in the same order and with the same operations as {@link EnergyMeter} sums the equivalent
+     *     explicit Contact3D links, so both agree exactly. The neighbour list is rebuilt first when a member
+     *     was moved (by a step or by hand) beyond the reach of the current list.
+     */
     double energy() {
-        if (!built) {
+        if (!built || movedTooFar()) {
             rebuild();
         }
         double e = 0;
@@ -90,13 +98,14 @@ final class ContactGroupKernel implements Kernel {
             double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
             double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (d < threshold) {
-                e += 0.5 * k * (threshold - d) * (threshold - d);
+                double stretch = d - threshold;
+                e += 0.5 * k * stretch * stretch;
             }
         }
         return e;
     }
 
-    /** @return how many times the neighbour list has been rebuilt. */
+    /** @return how many times the neighbour list has been rebuilt (for tests of the rebuild rate). */
     long rebuilds() {
         return rebuilds;
     }
@@ -121,8 +130,7 @@ final class ContactGroupKernel implements Kernel {
             double ex = px[a] - px[c], ey = py[a] - py[c], ez = pz[a] - pz[c];
             double prev = Math.sqrt(ex * ex + ey * ey + ez * ez);
             if (d > 0) {
-                double s = (-kk * (d - t) - zd * (d - prev)) / d;
-                LinkKernels.push(fx, fy, fz, a, c, s, dx, dy, dz);
+                LinkKernels.push(fx, fy, fz, a, c, LinkKernels.springDamperOverDistance(kk, zd, t, d, prev), dx, dy, dz);
             }
         }
     }
@@ -132,7 +140,7 @@ final class ContactGroupKernel implements Kernel {
         final double lim = halfSkin2;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
-            double dx = x[s] - rx[m], dy = y[s] - ry[m], dz = zz[s] - rz[m];
+            double dx = x[s] - builtX[m], dy = y[s] - builtY[m], dz = zz[s] - builtZ[m];
             if (!(dx * dx + dy * dy + dz * dz <= lim)) {
                 return true;
             }
@@ -159,9 +167,9 @@ final class ContactGroupKernel implements Kernel {
         long maxX = Long.MIN_VALUE, maxY = Long.MIN_VALUE, maxZ = Long.MIN_VALUE;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
-            rx[m] = x[s];
-            ry[m] = y[s];
-            rz[m] = zz[s];
+            builtX[m] = x[s];
+            builtY[m] = y[s];
+            builtZ[m] = zz[s];
             long a = cellIndex(x[s]), b = cellIndex(y[s]), c = cellIndex(zz[s]);
             cx[m] = a;
             cy[m] = b;
@@ -178,7 +186,8 @@ final class ContactGroupKernel implements Kernel {
             return;
         }
         long nx = maxX - minX + 1, ny = maxY - minY + 1, nz = maxZ - minZ + 1;
-        if (nx * ny * nz <= Math.max(4096L, 32L * n)) {
+        // the cell count in double: nx * ny * nz can overflow a long (cell indices reach +-1e15)
+        if ((double) nx * (double) ny * (double) nz <= Math.max(4096L, 32L * n)) {
             rebuildDense(minX, minY, minZ, (int) nx, (int) ny, (int) nz);
         } else {
             rebuildHashed();

@@ -32,8 +32,8 @@ public final class EnergyMeter {
     public static double potential(StepPlan p) {
         double e = 0;
         for (int i = p.start(MassKind.OSC3D); i < p.end(MassKind.OSC1D); i++) {
-            double ex = p.x[i] - p.rx[i], ey = p.y[i] - p.ry[i], ez = p.z[i] - p.rz[i];
-            e += 0.5 * (p.stf[i] / p.invM[i]) * (ex * ex + ey * ey + ez * ez);
+            double ex = p.x[i] - p.restX[i], ey = p.y[i] - p.restY[i], ez = p.z[i] - p.restZ[i];
+            e += 0.5 * (p.oscStiffnessPerMass[i] / p.invM[i]) * (ex * ex + ey * ey + ez * ez);
         }
         Medium m = p.medium;
         if (m.hasGravity()) {
@@ -62,13 +62,13 @@ public final class EnergyMeter {
                 case PLANE_CONTACT3D: {
                     int axis = j < b.axisStart[1] ? 0 : j < b.axisStart[2] ? 1 : 2;
                     double[] q = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-                    stretch = Math.min(0, q[b.a[j]] - b.aux[j] - b.len[j]);
+                    stretch = Math.min(0, q[b.a[j]] - b.planePosition[j] - b.len[j]);
                     break;
                 }
                 case ATTRACTOR3D: {
                     double r = Math.max(PlanCompiler.distanceOf(b, j, p), b.len[j]);
-                    if (r > 0 && b.aux[j] != 0) {
-                        e -= b.aux[j] / r;
+                    if (r > 0 && b.attraction[j] != 0) {
+                        e -= b.attraction[j] / r;
                     }
                     continue;
                 }
@@ -102,10 +102,10 @@ public final class EnergyMeter {
     public static double discreteEnergy(StepPlan p) {
         double e = kinetic(p);
         for (int i = p.start(MassKind.OSC3D); i < p.end(MassKind.OSC1D); i++) {
-            double k = p.stf[i] / p.invM[i];
-            e += 0.5 * k * ((p.x[i] - p.rx[i]) * (p.px[i] - p.rx[i])
-                    + (p.y[i] - p.ry[i]) * (p.py[i] - p.ry[i])
-                    + (p.z[i] - p.rz[i]) * (p.pz[i] - p.rz[i]));
+            double k = p.oscStiffnessPerMass[i] / p.invM[i];
+            e += 0.5 * k * ((p.x[i] - p.restX[i]) * (p.px[i] - p.restX[i])
+                    + (p.y[i] - p.restY[i]) * (p.py[i] - p.restY[i])
+                    + (p.z[i] - p.restZ[i]) * (p.pz[i] - p.restZ[i]));
         }
         for (LinkBatch b : p.batches) {
             if (b == null || !(b.kind == LinkKind.SPRING3D || b.kind == LinkKind.SPRING_DAMPER3D

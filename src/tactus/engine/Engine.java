@@ -12,7 +12,10 @@ package tactus.engine;
  * <p>This class does no name handling, unit conversion or locking: the {@code tactus} facade
  * does that. Ids passed in must be live, or an {@link IllegalArgumentException} is thrown.
  */
-public final class Engine {
+public final class Engine implements AutoCloseable {
+    /** Closes the parallel stepper of an engine that became unreachable without {@link #close()}. */
+    private static final java.lang.ref.Cleaner CLEANER = java.lang.ref.Cleaner.create();
+
     private final MassTable masses = new MassTable();
     private final LinkTable links = new LinkTable();
     private final Medium medium = new Medium();
@@ -23,6 +26,7 @@ public final class Engine {
     private long steps;
     private boolean stencils = true;
     private ParallelStepper stepper;
+    private java.lang.ref.Cleaner.Cleanable stepperCleanup;
     private int parallelMinElements = 20_000;
     private StepPlan hookPlan;
     private long hookSteps;
@@ -138,7 +142,7 @@ public final class Engine {
             throw new IllegalArgumentException("plane axis must be 0, 1 or 2, got " + axis);
         }
         int id = addLink(LinkKind.PLANE_CONTACT3D, mass, mass, stiffness, damping, l0);
-        links.aux[id] = position;
+        links.planePosition[id] = position;
         links.axis[id] = axis;
         return id;
     }
@@ -146,7 +150,7 @@ public final class Engine {
     /** Adds an inverse-square attractor: force {@code -attraction / d^2} while d exceeds {@code limit}. */
     public int addAttractor(int massA, int massB, double limit, double attraction) {
         int id = addLink(LinkKind.ATTRACTOR3D, massA, massB, 0, 0, limit);
-        links.aux[id] = attraction;
+        links.attraction[id] = attraction;
         return id;
     }
 
@@ -199,8 +203,8 @@ public final class Engine {
         topologyDirty = true;
     }
 
-    /** @return the number of times the neighbour lists of all contact groups have been rebuilt. */
-    public long contactGroupRebuilds() {
+    /** @return the number of times the neighbour lists of all contact groups have been rebuilt (for tests). */
+    long contactGroupRebuilds() {
         compile();
         long n = 0;
         for (ContactGroupKernel g : plan.groups) {
@@ -232,6 +236,9 @@ public final class Engine {
             }
         }
         masses.alive[id] = false;
+        if (id == divergedMass) {
+            forgetDivergence();
+        }
         topologyDirty = true;
     }
 
@@ -245,8 +252,9 @@ public final class Engine {
         topologyDirty = true;
     }
 
-    /** Removes every mass and link. Ids already issued stay invalid. */
+    /** Removes every mass, link and contact group, and forgets a divergence. Ids already issued stay invalid. */
     public void clear() {
+        forgetDivergence();
         for (int id = 0; id < masses.count; id++) {
             masses.alive[id] = false;
         }
@@ -316,6 +324,11 @@ public final class Engine {
         }
     }
 
+    /** @return true when the next step will compile the plan first (the topology or an effect changed). */
+    boolean needsCompile() {
+        return plan == null || topologyDirty || effectsDirty;
+    }
+
     /** @return the current compiled plan, compiling first if needed. */
     public StepPlan plan() {
         compile();
@@ -336,7 +349,10 @@ public final class Engine {
      * @return the number of steps actually run
      */
     public int step(int n) {
-        if (divergedMass >= 0) {
+        if (n < 0) {
+            throw new IllegalArgumentException("step count must be >= 0, got " + n);
+        }
+        if (divergedMass >= 0 || n == 0) {
             return 0;
         }
         if (topologyDirty || effectsDirty) {
@@ -346,19 +362,26 @@ public final class Engine {
         if (stepper != null && n > 1 && p.elementCount() >= parallelMinElements) {
             hookPlan = p;
             hookSteps = 0;
-            int ran = stepper.run(p, n, guardHook);
-            steps += ran;
-            return ran;
-        }
-        for (int i = 0; i < n; i++) {
-            p.step();
-            if (guardAfterStep(p, steps + i + 1)) {
-                steps += i + 1;
-                return i + 1;
+            try {
+                return stepper.run(p, n, guardHook);
+            } finally {
+                steps += hookSteps;
+                hookPlan = null;
             }
         }
-        steps += n;
-        return n;
+        int ran = 0;
+        try {
+            while (ran < n) {
+                p.step();
+                ran++;
+                if (guardAfterStep(p, steps + ran)) {
+                    break;
+                }
+            }
+        } finally {
+            steps += ran;
+        }
+        return ran;
     }
 
     /** The divergence check after one parallel step; runs on the stepping thread while the others wait. */
@@ -390,8 +413,10 @@ public final class Engine {
     /**
      * Sets how many threads may step large models (1, the default, is single-threaded). With more, a model
      * of at least {@link #parallelThreshold()} elements is stepped in parallel when {@link #step(int)} runs
-     * more than one step; results are bit-identical to single-threaded stepping. Threads beyond the number
-     * of cores only slow things down.
+     * more than one step; results are bit-identical to single-threaded stepping (tested with batch sizes
+     * 1 to 5 and 2 to 4 threads). Threads beyond the number of cores only slow things down. The worker
+     * threads are daemon threads; {@link #close()} stops them, and they are stopped as well once the engine
+     * has become unreachable.
      */
     public void setThreads(int threads) {
         if (threads < 1) {
@@ -401,13 +426,38 @@ public final class Engine {
             if (stepper.threads() == threads) {
                 return;
             }
-            stepper.shutdown();
-            stepper = null;
+            closeStepper();
         }
         if (threads > 1) {
-            stepper = new ParallelStepper(threads);
+            ParallelStepper s = new ParallelStepper(threads);
+            stepper = s;
+            stepperCleanup = CLEANER.register(this, s::close);
         }
         topologyDirty = true;
+    }
+
+    /**
+     * Stops the worker threads of parallel stepping and releases them; idempotent. The engine stays usable
+     * and steps on the calling thread from then on ({@link #threads()} is 1) until {@link #setThreads} asks
+     * for more threads again.
+     */
+    @Override
+    public void close() {
+        if (stepper != null) {
+            closeStepper();
+            topologyDirty = true;
+        }
+    }
+
+    private void closeStepper() {
+        stepperCleanup.clean();
+        stepperCleanup = null;
+        stepper = null;
+    }
+
+    /** @return the worker threads of the parallel stepper (empty when stepping on one thread), for tests. */
+    Thread[] stepperThreads() {
+        return stepper == null ? new Thread[0] : stepper.workers();
     }
 
     /** @return the number of threads that may step large models. */
@@ -460,23 +510,25 @@ public final class Engine {
      * previous distance, so the next step starts from the repaired positions at rest.
      */
     public void clearDivergence() {
-        divergedMass = -1;
-        divergedAt = -1;
-        countdown = guard.interval();
+        forgetDivergence();
         if (plan != null) {
             StepPlan p = plan;
             java.util.Arrays.fill(p.fx, 0.0);
             java.util.Arrays.fill(p.fy, 0.0);
             java.util.Arrays.fill(p.fz, 0.0);
-            for (LinkBatch b : p.batches) {
-                if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
-                    continue;
-                }
-                for (int j = 0; j < b.n; j++) {
-                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, p));
-                }
-            }
+            PlanCompiler.resetLinkHistory(p, -1);
         }
+    }
+
+    /**
+     * Lets stepping resume without touching the state: used when the diverged mass is removed or the model
+     * cleared, so that no dead id stays recorded. A state that is still diverged is found again by the next
+     * scan.
+     */
+    private void forgetDivergence() {
+        divergedMass = -1;
+        divergedAt = -1;
+        countdown = guard.interval();
     }
 
     /** Sets the number of steps between two divergence scans; the next scan comes at most that many steps away. */
@@ -558,18 +610,6 @@ public final class Engine {
         return masses.damping[id];
     }
 
-    /** @return the EWMA weight of an input module. */
-    public double inputWeight(int id) {
-        checkMass(id);
-        return masses.weight[id];
-    }
-
-    /** @return the rest position of an oscillator along axis 0, 1 or 2. */
-    public double rest(int id, int axis) {
-        checkMass(id);
-        return masses.rest[3 * id + axis];
-    }
-
     /** @return the stiffness K of a link, per step. */
     public double linkStiffness(int id) {
         checkLink(id);
@@ -588,10 +628,22 @@ public final class Engine {
         return links.length[id];
     }
 
-    /** @return the plane position of a plane contact, or the attraction factor of an attractor. */
-    public double linkAux(int id) {
-        checkLink(id);
-        return links.aux[id];
+    /** @return the rest position of an oscillator (or the position of a fixed point) along axis 0, 1 or 2. */
+    public double restPosition(int id, int axis) {
+        checkMass(id);
+        return masses.rest[3 * id + axis];
+    }
+
+    /** @return the plane coordinate of a plane contact, in units (the plane lies across its axis there). */
+    public double planePosition(int id) {
+        checkLink(id, LinkKind.PLANE_CONTACT3D);
+        return links.planePosition[id];
+    }
+
+    /** @return the attraction factor A of an attractor (force {@code -A / d^2}), per-step force units times d^2. */
+    public double attraction(int id) {
+        checkLink(id, LinkKind.ATTRACTOR3D);
+        return links.attraction[id];
     }
 
     /** @return the axis (0, 1, 2) of a plane contact. */
@@ -609,10 +661,17 @@ public final class Engine {
         refreshLink(id);
     }
 
-    /** Sets the plane position of a plane contact, or the attraction factor of an attractor. */
-    public void setLinkAux(int id, double value) {
-        checkLink(id);
-        links.aux[id] = value;
+    /** Sets the plane coordinate of a plane contact. */
+    public void setPlanePosition(int id, double position) {
+        checkLink(id, LinkKind.PLANE_CONTACT3D);
+        links.planePosition[id] = position;
+        refreshLink(id);
+    }
+
+    /** Sets the attraction factor A of an attractor. */
+    public void setAttraction(int id, double attraction) {
+        checkLink(id, LinkKind.ATTRACTOR3D);
+        links.attraction[id] = attraction;
         refreshLink(id);
     }
 
@@ -659,9 +718,10 @@ public final class Engine {
             out[1] = plan.fy[s];
             out[2] = plan.fz[s];
         } else {
-            out[0] = 0;
-            out[1] = 0;
-            out[2] = 0;
+            int q = 3 * id;
+            out[0] = masses.pendingForce[q];
+            out[1] = masses.pendingForce[q + 1];
+            out[2] = masses.pendingForce[q + 2];
         }
     }
 
@@ -686,9 +746,10 @@ public final class Engine {
             plan.tz[s] = z;
         } else {
             masses.setPending(id, x, y, z, prevX, prevY, prevZ);
+            masses.pendingTarget[3 * id] = Double.NaN;
         }
         if (s >= 0) {
-            resetLinkHistory(s);
+            PlanCompiler.resetLinkHistory(plan, s);
         }
         if (masses.kind[id].isFixed()) {
             masses.setRest(id, x, y, z);
@@ -697,58 +758,69 @@ public final class Engine {
     }
 
     /**
-     * After a mass was moved by hand, makes its links forget the distance they saw before, so that their
-     * dampers do not mistake the jump for a velocity: tracked links take the current distance as their
-     * previous one, and conditional links (contacts, ropes, bubbles) start again as inactive.
+     * Adds a force to a mass's buffer; it acts once, in the next step. Never compiles: a mass added since the
+     * last compile keeps the force in a pending buffer that the next compile moves into the plan.
      */
-    private void resetLinkHistory(int slot) {
-        for (LinkBatch b : plan.batches) {
-            if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
-                continue;
-            }
-            for (int j = 0; j < b.n; j++) {
-                if (b.a[j] == slot || b.b[j] == slot) {
-                    b.setPrev(j, b.kind.isConditional() ? -1.0 : PlanCompiler.distanceOf(b, j, plan));
-                }
-            }
+    public void addForce(int id, double fx, double fy, double fz) {
+        checkMass(id);
+        int s = liveSlot(id);
+        if (s >= 0) {
+            plan.fx[s] += fx;
+            plan.fy[s] += fy;
+            plan.fz[s] += fz;
+        } else {
+            int q = 3 * id;
+            masses.pendingForce[q] += fx;
+            masses.pendingForce[q + 1] += fy;
+            masses.pendingForce[q + 2] += fz;
         }
     }
 
-    /** Adds a force to a mass's buffer; it acts once, in the next step. */
-    public void addForce(int id, double fx, double fy, double fz) {
-        checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        plan.fx[s] += fx;
-        plan.fy[s] += fy;
-        plan.fz[s] += fz;
-    }
-
-    /** Sets the target position that an input module (haptic avatar or position driver) follows. */
+    /**
+     * Sets the target position that an input module (haptic avatar or position driver) follows. Never
+     * compiles: the target of a mass added since the last compile is kept until the next compile.
+     */
     public void setInputTarget(int id, double x, double y, double z) {
         checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        plan.tx[s] = x;
-        plan.ty[s] = y;
-        plan.tz[s] = z;
+        int s = liveSlot(id);
+        if (s >= 0) {
+            plan.tx[s] = x;
+            plan.ty[s] = y;
+            plan.tz[s] = z;
+        } else {
+            int q = 3 * id;
+            masses.pendingTarget[q] = x;
+            masses.pendingTarget[q + 1] = y;
+            masses.pendingTarget[q + 2] = z;
+        }
     }
 
     /**
-     * Copies the force accumulated on a mass since the last call into {@code out[0..2]} and clears it.
+     * Copies the force accumulated on a mass since the last call into {@code out[0..2]} and clears it. Never
+     * compiles and allocates nothing.
      *
      * @return the number of steps over which the force was accumulated
      */
     public long takeForce(int id, double[] out) {
         checkMass(id);
-        compile();
-        int s = masses.slot[id];
-        out[0] = plan.fx[s];
-        out[1] = plan.fy[s];
-        out[2] = plan.fz[s];
-        plan.fx[s] = 0;
-        plan.fy[s] = 0;
-        plan.fz[s] = 0;
+        int s = liveSlot(id);
+        if (s >= 0) {
+            out[0] = plan.fx[s];
+            out[1] = plan.fy[s];
+            out[2] = plan.fz[s];
+            plan.fx[s] = 0;
+            plan.fy[s] = 0;
+            plan.fz[s] = 0;
+        } else {
+            double[] f = masses.pendingForce;
+            int q = 3 * id;
+            out[0] = f[q];
+            out[1] = f[q + 1];
+            out[2] = f[q + 2];
+            f[q] = 0;
+            f[q + 1] = 0;
+            f[q + 2] = 0;
+        }
         long n = steps - masses.lastTake[id];
         masses.lastTake[id] = steps;
         return n;
@@ -761,7 +833,7 @@ public final class Engine {
         double[] b = scratchB;
         position(links.a[id], a);
         if (links.kind[id] == LinkKind.PLANE_CONTACT3D) {
-            return a[links.axis[id]] - links.aux[id];
+            return a[links.axis[id]] - links.planePosition[id];
         }
         position(links.b[id], b);
         if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
@@ -830,6 +902,14 @@ public final class Engine {
     private void checkLink(int id) {
         if (!links.isLive(id)) {
             throw new IllegalArgumentException("no live link with id " + id);
+        }
+    }
+
+    private void checkLink(int id, LinkKind kind) {
+        checkLink(id);
+        if (links.kind[id] != kind) {
+            throw new IllegalArgumentException("link " + id + " is a " + links.kind[id].label() + ", not a "
+                    + kind.label());
         }
     }
 }

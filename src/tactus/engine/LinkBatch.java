@@ -1,11 +1,16 @@
 package tactus.engine;
 
 /**
- * Flat arrays for all live links of one kind, in insertion order. {@code a} and {@code b}
- * are mass slots in the {@link StepPlan}; {@code dp} is the previous distance used by the
- * damper (a negative value marks a conditional link that was inactive on the previous step).
+ * Flat arrays for all live links of one kind. {@code a} and {@code b} are mass slots in the {@link StepPlan}.
+ * Order: insertion order, except that plane contacts are grouped by axis ({@link #axisStart}) and that a
+ * spring-family batch organised by the {@link StencilPlanner} holds its irregular links first (indices
+ * [0, {@link #nIrregular}), in insertion order) and then the links of its {@link StencilRun}s (by offset and
+ * slot, with {@code a < b}). The damper's previous distance of an irregular link is {@code dp[j]}; that of a
+ * run link lives in its run, indexed by slot: read and write it with {@link #prev} and {@link #setPrev}. A
+ * negative previous distance marks a conditional link that was inactive on the previous step.
  */
 final class LinkBatch {
+    private static final double[] NONE = new double[0];
     final LinkKind kind;
     final int n;
     final int[] id;
@@ -14,7 +19,10 @@ final class LinkBatch {
     final double[] k;
     final double[] z;
     final double[] len;
-    final double[] aux;
+    /** Plane coordinate of each plane contact (an empty array in other batches). */
+    final double[] planePosition;
+    /** Attraction factor A of each attractor (an empty array in other batches). */
+    final double[] attraction;
     final double[] dp;
     /** For plane contacts: links [axisStart[i], axisStart[i+1]) act on axis i. */
     final int[] axisStart = new int[4];
@@ -34,7 +42,8 @@ final class LinkBatch {
         k = new double[n];
         z = new double[n];
         len = new double[n];
-        aux = new double[n];
+        planePosition = kind == LinkKind.PLANE_CONTACT3D ? new double[n] : NONE;
+        attraction = kind == LinkKind.ATTRACTOR3D ? new double[n] : NONE;
         dp = new double[n];
         runOf = new int[n];
         java.util.Arrays.fill(runOf, -1);
@@ -58,11 +67,15 @@ final class LinkBatch {
     }
 
     /** Sets the parameters of link j, in the batch and in its run if it has one. */
-    void setParams(int j, double kk, double zz, double length, double auxValue) {
+    void setParams(int j, double kk, double zz, double length, double plane, double attract) {
         k[j] = kk;
         z[j] = zz;
         len[j] = length;
-        aux[j] = auxValue;
+        if (kind == LinkKind.PLANE_CONTACT3D) {
+            planePosition[j] = plane;
+        } else if (kind == LinkKind.ATTRACTOR3D) {
+            attraction[j] = attract;
+        }
         int r = runOf[j];
         if (r >= 0) {
             StencilRun run = runs[r];

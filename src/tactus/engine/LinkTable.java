@@ -5,8 +5,9 @@ import java.util.Arrays;
 /**
  * Parameters of every interaction ever added, indexed by a stable id that is never reused.
  * {@code length} is the rest length, contact threshold, bubble radius, plane offset or
- * attractor limit distance depending on the kind; {@code aux} is the plane position or the
- * attraction factor; {@code axis} is the plane axis (0 = x, 1 = y, 2 = z).
+ * attractor limit distance depending on the kind; {@code planePosition} is the plane coordinate of a
+ * plane contact, {@code attraction} the attraction factor A of an attractor (0 for other kinds);
+ * {@code axis} is the plane axis (0 = x, 1 = y, 2 = z).
  */
 final class LinkTable {
     int count;
@@ -18,7 +19,8 @@ final class LinkTable {
     double[] stiffness = new double[16];
     double[] damping = new double[16];
     double[] length = new double[16];
-    double[] aux = new double[16];
+    double[] planePosition = new double[16];
+    double[] attraction = new double[16];
     int[] axis = new int[16];
 
     int add(LinkKind k, int massA, int massB, double kk, double zz, double len) {
@@ -52,7 +54,8 @@ final class LinkTable {
         stiffness = Arrays.copyOf(stiffness, c);
         damping = Arrays.copyOf(damping, c);
         length = Arrays.copyOf(length, c);
-        aux = Arrays.copyOf(aux, c);
+        planePosition = Arrays.copyOf(planePosition, c);
+        attraction = Arrays.copyOf(attraction, c);
         axis = Arrays.copyOf(axis, c);
     }
 }

@@ -125,9 +125,9 @@ final class MassKernels {
         @Override
         void step(int from, int to) {
             Medium m = p.medium;
-            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, from, to);
-            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, from, to);
-            damped(p.z, p.pz, p.fz, p.invM, p.dmp, m.gz, from, to);
+            damped(p.x, p.px, p.fx, p.invM, p.retention, m.gx, from, to);
+            damped(p.y, p.py, p.fy, p.invM, p.retention, m.gy, from, to);
+            damped(p.z, p.pz, p.fz, p.invM, p.retention, m.gz, from, to);
         }
     }
 
@@ -150,8 +150,8 @@ final class MassKernels {
         @Override
         void step(int from, int to) {
             Medium m = p.medium;
-            damped(p.x, p.px, p.fx, p.invM, p.dmp, m.gx, from, to);
-            damped(p.y, p.py, p.fy, p.invM, p.dmp, m.gy, from, to);
+            damped(p.x, p.px, p.fx, p.invM, p.retention, m.gx, from, to);
+            damped(p.y, p.py, p.fy, p.invM, p.retention, m.gy, from, to);
             Arrays.fill(p.fz, from, to, 0.0);
         }
     }
@@ -164,7 +164,7 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            damped(p.z, p.pz, p.fz, p.invM, p.dmp, p.medium.gz, from, to);
+            damped(p.z, p.pz, p.fz, p.invM, p.retention, p.medium.gz, from, to);
             Arrays.fill(p.fx, from, to, 0.0);
             Arrays.fill(p.fy, from, to, 0.0);
         }
@@ -194,9 +194,9 @@ final class MassKernels {
         @Override
         void step(int from, int to) {
             Medium m = p.medium;
-            oscillate(p.x, p.px, p.rx, p.fx, p.invM, p.dmp, p.stf, m.gx, from, to);
-            oscillate(p.y, p.py, p.ry, p.fy, p.invM, p.dmp, p.stf, m.gy, from, to);
-            oscillate(p.z, p.pz, p.rz, p.fz, p.invM, p.dmp, p.stf, m.gz, from, to);
+            oscillate(p.x, p.px, p.restX, p.fx, p.invM, p.retention, p.oscStiffnessPerMass, m.gx, from, to);
+            oscillate(p.y, p.py, p.restY, p.fy, p.invM, p.retention, p.oscStiffnessPerMass, m.gy, from, to);
+            oscillate(p.z, p.pz, p.restZ, p.fz, p.invM, p.retention, p.oscStiffnessPerMass, m.gz, from, to);
         }
     }
 
@@ -208,7 +208,7 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            oscillate(p.z, p.pz, p.rz, p.fz, p.invM, p.dmp, p.stf, p.medium.gz, from, to);
+            oscillate(p.z, p.pz, p.restZ, p.fz, p.invM, p.retention, p.oscStiffnessPerMass, p.medium.gz, from, to);
             Arrays.fill(p.fx, from, to, 0.0);
             Arrays.fill(p.fy, from, to, 0.0);
         }
@@ -230,9 +230,9 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            follow(p.x, p.px, p.tx, p.w, from, to);
-            follow(p.y, p.py, p.ty, p.w, from, to);
-            follow(p.z, p.pz, p.tz, p.w, from, to);
+            follow(p.x, p.px, p.tx, p.inputWeight, from, to);
+            follow(p.y, p.py, p.ty, p.inputWeight, from, to);
+            follow(p.z, p.pz, p.tz, p.inputWeight, from, to);
             if (clearForce) {
                 clearForces(from, to);
             }

@@ -18,6 +18,10 @@ final class MassTable {
     double[] weight = new double[16];
     double[] rest = new double[48];
     double[] pending = new double[96];
+    /** Forces added to masses that have no plan slot yet (3 per id); the next compile moves them into the plan. */
+    double[] pendingForce = new double[48];
+    /** Input targets set before a mass has a plan slot (3 per id); NaN when none was set. */
+    double[] pendingTarget = new double[48];
     long[] lastTake = new long[16];
 
     int add(MassKind k, double m) {
@@ -27,6 +31,13 @@ final class MassTable {
         alive[id] = true;
         slot[id] = -1;
         mass[id] = m;
+        int q = 3 * id;
+        pendingForce[q] = 0;
+        pendingForce[q + 1] = 0;
+        pendingForce[q + 2] = 0;
+        pendingTarget[q] = Double.NaN;
+        pendingTarget[q + 1] = Double.NaN;
+        pendingTarget[q + 2] = Double.NaN;
         return id;
     }
 
@@ -64,6 +75,8 @@ final class MassTable {
         weight = Arrays.copyOf(weight, c);
         rest = Arrays.copyOf(rest, 3 * c);
         pending = Arrays.copyOf(pending, 6 * c);
+        pendingForce = Arrays.copyOf(pendingForce, 3 * c);
+        pendingTarget = Arrays.copyOf(pendingTarget, 3 * c);
         lastTake = Arrays.copyOf(lastTake, c);
     }
 }

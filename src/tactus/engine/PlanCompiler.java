@@ -49,9 +49,17 @@ final class PlanCompiler {
                 p.px[s] = mt.pending[q + 3];
                 p.py[s] = mt.pending[q + 4];
                 p.pz[s] = mt.pending[q + 5];
-                p.tx[s] = p.x[s];
-                p.ty[s] = p.y[s];
-                p.tz[s] = p.z[s];
+                int f = 3 * id;
+                p.fx[s] = mt.pendingForce[f];
+                p.fy[s] = mt.pendingForce[f + 1];
+                p.fz[s] = mt.pendingForce[f + 2];
+                mt.pendingForce[f] = 0;
+                mt.pendingForce[f + 1] = 0;
+                mt.pendingForce[f + 2] = 0;
+                boolean target = !Double.isNaN(mt.pendingTarget[f]);
+                p.tx[s] = target ? mt.pendingTarget[f] : p.x[s];
+                p.ty[s] = target ? mt.pendingTarget[f + 1] : p.y[s];
+                p.tz[s] = target ? mt.pendingTarget[f + 2] : p.z[s];
             }
             fillMass(p, s, mt, id, medium);
         }
@@ -102,16 +110,16 @@ final class PlanCompiler {
         MassKind k = mt.kind[id];
         double im = k.isInertial() ? 1.0 / mt.mass[id] : 0.0;
         p.invM[s] = im;
-        p.w[s] = k.isInput() ? mt.weight[id] : 0.0;
+        p.inputWeight[s] = k.isInput() ? mt.weight[id] : 0.0;
         if (k.isOscillator()) {
-            p.dmp[s] = 1.0 - (mt.damping[id] + medium.friction) * im;
-            p.stf[s] = mt.stiffness[id] * im;
-            p.rx[s] = mt.rest[3 * id];
-            p.ry[s] = mt.rest[3 * id + 1];
-            p.rz[s] = mt.rest[3 * id + 2];
+            p.retention[s] = 1.0 - (mt.damping[id] + medium.friction) * im;
+            p.oscStiffnessPerMass[s] = mt.stiffness[id] * im;
+            p.restX[s] = mt.rest[3 * id];
+            p.restY[s] = mt.rest[3 * id + 1];
+            p.restZ[s] = mt.rest[3 * id + 2];
         } else {
-            p.dmp[s] = 1.0 - medium.friction * im;
-            p.stf[s] = 0.0;
+            p.retention[s] = 1.0 - medium.friction * im;
+            p.oscStiffnessPerMass[s] = 0.0;
         }
         if (k.isFixed()) {
             p.px[s] = p.x[s];
@@ -184,7 +192,7 @@ final class PlanCompiler {
                 if (old != null && o >= 0 && old.batches[b.kind.ordinal()] != null) {
                     b.setPrev(j, old.batches[b.kind.ordinal()].prev(o));
                 } else {
-                    b.setPrev(j, initialPrevious(b, j, p));
+                    b.setPrev(j, freshPrevious(b, j, p));
                 }
             }
             for (int j = 0; j < b.n; j++) {
@@ -195,11 +203,36 @@ final class PlanCompiler {
 
     /** Writes the parameters of one link into its batch slot. */
     static void fillLink(LinkBatch b, int j, LinkTable lt, int id) {
-        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.aux[id]);
+        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.planePosition[id], lt.attraction[id]);
     }
 
-    private static double initialPrevious(LinkBatch b, int j, StepPlan p) {
+    /**
+     * @return the damper's previous distance for link slot j starting afresh: the current distance for a
+     *     tracked link (no velocity), or the inactive mark -1 for a conditional one
+     */
+    private static double freshPrevious(LinkBatch b, int j, StepPlan p) {
         return b.kind.isConditional() ? -1.0 : distanceOf(b, j, p);
+    }
+
+    /**
+     * Makes links forget the distance they saw before, so that their dampers do not mistake a jump (a mass
+     * moved by hand, a repaired divergence) for a velocity: tracked links take the current distance as their
+     * previous one, and conditional links (contacts, ropes, bubbles) start again as inactive. Plane contacts
+     * and attractors keep no previous distance.
+     *
+     * @param slot the mass slot whose links are reset, or -1 for every link
+     */
+    static void resetLinkHistory(StepPlan p, int slot) {
+        for (LinkBatch b : p.batches) {
+            if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
+                continue;
+            }
+            for (int j = 0; j < b.n; j++) {
+                if (slot < 0 || b.a[j] == slot || b.b[j] == slot) {
+                    b.setPrev(j, freshPrevious(b, j, p));
+                }
+            }
+        }
     }
 
     /** @return the current distance of link slot j (the signed z difference for SpringDamper1D). */

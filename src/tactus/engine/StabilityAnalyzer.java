@@ -21,18 +21,31 @@ import java.util.Arrays;
  *       close-packed 3D pile by default): their share is bounded by Gershgorin row sums with that many
  *       of the mass's stiffest contacts, and added to the rest (Weyl's inequality keeps this an upper
  *       bound).</li>
- *   <li>{@code λmax} of the permanent network is computed by Lanczos iteration on the symmetric matrix
- *       {@code M^-1/2 (K + 2Z) M^-1/2}, matrix-free on the link list, under a work budget. Gershgorin
- *       row sums give a cheap, guaranteed upper bound alongside.</li>
+ *   <li>{@code λmax} of the permanent network is estimated by Lanczos iteration on the symmetric matrix
+ *       {@code A = M^-1/2 (K + 2Z) M^-1/2}, matrix-free on the link list, under a work budget. The estimate
+ *       is an upper one: the largest Ritz value theta plus its residual {@code ||A y - theta y||}, which for a
+ *       symmetric matrix bounds the distance from theta to an eigenvalue (the largest one, which theta
+ *       approaches from below). That residual is the safety margin of the verdict; it is reported
+ *       ({@link StabilityReport#lanczosResidual()}). Lanczos runs until it is below 1e-7 relative to theta;
+ *       when that takes more than its work budget (clustered spectra of long chains and large meshes), it
+ *       stops as soon as the verdict is decided (theta at or above the limit proves instability, since a Ritz
+ *       value never exceeds the largest eigenvalue; theta plus the residual below the limit shows stability),
+ *       and near the limit it goes on up to a larger budget; a model still undecided then is reported
+ *       unstable. Gershgorin row sums give a cheap, guaranteed upper bound alongside, and the estimate
+ *       never exceeds it.</li>
  * </ul>
  */
 public final class StabilityAnalyzer {
     /** Default number of contacts assumed engaged at once on one mass (close packing in 3D). */
     public static final int DEFAULT_MAX_CONTACTS = 12;
 
-    private static final double TOLERANCE = 1e-6;
-    private static final long WORK_BUDGET = 40_000_000L;
-    private static final int MAX_ITERATIONS = 3000;
+    /** Residual bound at which Lanczos stops, relative to the Ritz value. */
+    private static final double TOLERANCE = 1e-7;
+    /** Work budget (multiply-adds over masses and links) of a Lanczos run. */
+    private static final long WORK_BUDGET = 10_000_000L;
+    /** Work budget of a Lanczos run while the verdict is still undecided (theta near the limit). */
+    private static final long NEAR_LIMIT_BUDGET = 250_000_000L;
+    private static final int MAX_ITERATIONS = 20_000;
 
     private StabilityAnalyzer() {
     }
@@ -52,17 +65,19 @@ public final class StabilityAnalyzer {
     public static StabilityReport analyze(StepPlan p, int maxContacts) {
         Network net = new Network(p);
         double gersh = net.gershgorin();
+        double[] contacts = contactBound(p, maxContacts);
         double lambda;
+        double residual = 0;
         StabilityReport.Method method;
         if (net.edges == 0 && net.maxDiag() == 0) {
             lambda = 0;
             method = StabilityReport.Method.TRIVIAL;
         } else {
-            double[] result = net.lanczos();
-            lambda = Math.min(result[0], gersh);
-            method = result[1] > 0 ? StabilityReport.Method.LANCZOS : StabilityReport.Method.LANCZOS_UNCONVERGED;
+            double[] result = net.lanczos(StabilityReport.LIMIT - contacts[0]);
+            residual = result[1];
+            lambda = Math.min(result[0] + residual, gersh);
+            method = result[2] > 0 ? StabilityReport.Method.LANCZOS : StabilityReport.Method.LANCZOS_UNCONVERGED;
         }
-        double[] contacts = contactBound(p, maxContacts);
         int culpritLink = net.culpritLink;
         int culpritMass = net.culpritMass;
         int culpritGroup = -1;
@@ -73,7 +88,7 @@ public final class StabilityAnalyzer {
         }
         int negative = net.negativeLink >= 0 ? net.negativeLink : (int) contacts[3];
         return new StabilityReport(lambda, contacts[0], gersh, method, culpritLink, culpritMass, negative,
-                net.negativeMass, culpritGroup);
+                net.negativeMass, culpritGroup, Math.min(residual, gersh));
     }
 
     private static double coefficient(double k, double z) {
@@ -183,8 +198,8 @@ public final class StabilityAnalyzer {
                 double im = p.invM[i];
                 sqrtInvM[i] = Math.sqrt(im);
                 if (im > 0) {
-                    double zf = (1 - p.dmp[i]) / im;
-                    diag[i] += p.stf[i] / im + 2 * Math.max(zf, 0);
+                    double zf = (1 - p.retention[i]) / im;
+                    diag[i] += p.oscStiffnessPerMass[i] / im + 2 * Math.max(zf, 0);
                     if (zf < 0 && negativeMass < 0) {
                         negativeMass = p.massId[i];
                     }
@@ -204,7 +219,7 @@ public final class StabilityAnalyzer {
             double c;
             if (b.kind == LinkKind.ATTRACTOR3D) {
                 double l = b.len[j] > 0 ? b.len[j] : PlanCompiler.distanceOf(b, j, p);
-                c = l > 0 ? 2 * Math.abs(b.aux[j]) / (l * l * l) : 0;
+                c = l > 0 ? 2 * Math.abs(b.attraction[j]) / (l * l * l) : 0;
             } else {
                 double k = b.kind.hasStiffness() ? b.k[j] : 0;
                 double z = b.kind.hasDamping() ? b.z[j] : 0;
@@ -313,8 +328,23 @@ public final class StabilityAnalyzer {
             }
         }
 
-        /** @return {largest Ritz value, 1 if converged else 0}. */
-        double[] lanczos() {
+        /**
+         * Lanczos iteration with a residual test. At each check the largest Ritz value theta of the tridiagonal
+         * T_k is found by bisection, and its residual {@code ||A y - theta y|| = beta_k |s_k|} (s_k the last
+         * component of T_k's unit eigenvector) is computed: for a symmetric matrix some eigenvalue lies within
+         * that residual of theta, so {@code theta + residual} is an upper estimate of the eigenvalue theta
+         * approximates, which is the largest one (the start vector has a component along every mode). Since a
+         * Ritz value never exceeds the largest eigenvalue, {@code theta >= limit} proves instability, and
+         * {@code theta + residual < limit} shows stability with the residual as safety margin. The iteration
+         * stops when the residual is below {@link #TOLERANCE} relative to theta (converged), when the Krylov
+         * space is exhausted, or when the work budget {@link #WORK_BUDGET} is spent and the verdict against
+         * {@code limit} is decided; while it is undecided (theta just below the limit, residual across it) the
+         * iteration goes on up to {@link #NEAR_LIMIT_BUDGET}.
+         *
+         * @param limit the value of theta + residual that decides the verdict
+         * @return {largest Ritz value, its residual bound, 1 if converged else 0}
+         */
+        double[] lanczos(double limit) {
             double[] q = new double[n];
             double[] qPrev = new double[n];
             double[] w = new double[n];
@@ -327,19 +357,21 @@ public final class StabilityAnalyzer {
                 norm += q[i] * q[i];
             }
             if (norm == 0) {
-                return new double[] {0, 1};
+                return new double[] {0, 0, 1};
             }
             norm = Math.sqrt(norm);
             for (int i = 0; i < n; i++) {
                 q[i] /= norm;
             }
-            int maxIt = (int) Math.max(30, Math.min(MAX_ITERATIONS, WORK_BUDGET / Math.max(1, 2L * n + 3L * edges)));
-            maxIt = Math.min(maxIt, 2 * n + 2);
+            long perIteration = Math.max(1, 2L * n + 3L * edges);
+            int plainIt = (int) Math.max(30, Math.min(MAX_ITERATIONS, WORK_BUDGET / perIteration));
+            int maxIt = (int) Math.min(2L * n + 2, Math.max(plainIt, Math.min(MAX_ITERATIONS, NEAR_LIMIT_BUDGET / perIteration)));
             double[] alpha = new double[maxIt];
             double[] beta = new double[maxIt];
             double theta = 0;
-            double previous = -1;
+            double residual = Double.POSITIVE_INFINITY;
             int k = 0;
+            int nextCheck = 5;
             boolean converged = false;
             double betaPrev = 0;
             for (int j = 0; j < maxIt; j++) {
@@ -358,13 +390,18 @@ public final class StabilityAnalyzer {
                 alpha[j] = a;
                 beta[j] = b;
                 k = j + 1;
-                if (j % 5 == 4 || b <= 1e-12 * Math.abs(a)) {
+                boolean exhausted = b <= 1e-12 * Math.abs(a);
+                if (k >= nextCheck || exhausted || k == maxIt) {
                     theta = largestTridiagonal(alpha, beta, k);
-                    if (b <= 1e-12 * Math.abs(a) || Math.abs(theta - previous) <= TOLERANCE * Math.abs(theta)) {
+                    residual = exhausted ? 0 : b * Math.abs(lastEigenvectorComponent(alpha, beta, k, theta));
+                    if (residual <= TOLERANCE * Math.abs(theta)) {
                         converged = true;
                         break;
                     }
-                    previous = theta;
+                    if (k >= plainIt && (theta >= limit || theta + residual < limit)) {
+                        break; // the plain budget is spent and the verdict is decided
+                    }
+                    nextCheck = Math.max(k + 5, k + k / 8);
                 }
                 for (int i = 0; i < n; i++) {
                     double t = q[i];
@@ -373,10 +410,89 @@ public final class StabilityAnalyzer {
                 }
                 betaPrev = b;
             }
-            if (!converged) {
-                theta = largestTridiagonal(alpha, beta, k);
+            return new double[] {theta, residual, converged ? 1 : 0};
+        }
+    }
+
+    /**
+     * The last component of the unit eigenvector of the symmetric tridiagonal matrix (alpha, beta) for the
+     * eigenvalue theta, by two steps of inverse iteration (theta is accurate to a few ulps, so the shifted
+     * matrix is nearly singular and one step already gives the eigenvector to working precision).
+     */
+    static double lastEigenvectorComponent(double[] alpha, double[] beta, int k, double theta) {
+        double shift = theta + 1e-13 * Math.max(1, Math.abs(theta));
+        double[] x = new double[k];
+        java.util.Arrays.fill(x, 1.0 / Math.sqrt(k));
+        for (int it = 0; it < 2; it++) {
+            solveShifted(alpha, beta, k, shift, x);
+            double nn = 0;
+            for (int i = 0; i < k; i++) {
+                nn += x[i] * x[i];
             }
-            return new double[] {theta, converged ? 1 : 0};
+            nn = Math.sqrt(nn);
+            if (!(nn > 0) || Double.isInfinite(nn)) {
+                return 1.0; // no usable eigenvector: the most pessimistic residual
+            }
+            for (int i = 0; i < k; i++) {
+                x[i] /= nn;
+            }
+        }
+        return x[k - 1];
+    }
+
+    /** Solves (T - shift I) y = x in place for the symmetric tridiagonal T, with partial pivoting (Gaussian elimination). */
+    private static void solveShifted(double[] alpha, double[] beta, int k, double shift, double[] x) {
+        // LU with partial pivoting of a tridiagonal matrix: U has two superdiagonals
+        double[] d = new double[k];    // U diagonal
+        double[] e1 = new double[k];   // U first superdiagonal
+        double[] e2 = new double[k];   // U second superdiagonal
+        double[] l = new double[k];    // multipliers
+        boolean[] swapped = new boolean[k];
+        double diag = alpha[0] - shift;
+        double sup = k > 1 ? beta[0] : 0;
+        for (int i = 0; i < k - 1; i++) {
+            double sub = beta[i];
+            double nextDiag = alpha[i + 1] - shift;
+            double nextSup = i + 2 < k ? beta[i + 1] : 0;
+            if (Math.abs(sub) > Math.abs(diag)) {
+                // swap rows i and i + 1
+                swapped[i] = true;
+                d[i] = sub;
+                e1[i] = nextDiag;
+                e2[i] = nextSup;
+                double m = diag / sub;
+                l[i] = m;
+                diag = sup - m * nextDiag;
+                sup = -m * nextSup;
+            } else {
+                swapped[i] = false;
+                d[i] = diag == 0 ? 1e-300 : diag;
+                e1[i] = sup;
+                e2[i] = 0;
+                double m = sub / d[i];
+                l[i] = m;
+                diag = nextDiag - m * sup;
+                sup = nextSup;
+            }
+        }
+        d[k - 1] = diag == 0 ? 1e-300 : diag;
+        for (int i = 0; i < k - 1; i++) {
+            if (swapped[i]) {
+                double t = x[i];
+                x[i] = x[i + 1];
+                x[i + 1] = t;
+            }
+            x[i + 1] -= l[i] * x[i];
+        }
+        for (int i = k - 1; i >= 0; i--) {
+            double v = x[i];
+            if (i + 1 < k) {
+                v -= e1[i] * x[i + 1];
+            }
+            if (i + 2 < k) {
+                v -= e2[i] * x[i + 2];
+            }
+            x[i] = v / d[i];
         }
     }
 

@@ -3,9 +3,10 @@ package tactus.engine;
 /**
  * The result of a {@link StabilityAnalyzer} run, in per-step units.
  *
- * <p>The explicit scheme is stable when {@code lambda = λmax(M⁻¹(K + 2Z)) < 4}, where K and Z are
- * the network's stiffness and damping matrices (springs, dampers, oscillator springs, air friction,
- * and contacts counted as engaged). The {@link #margin()} is {@code 4 - lambda}: positive means
+ * <p>The explicit scheme is stable when {@code λmax(M⁻¹(K + 2Z)) < 4}, where K and Z are the network's
+ * stiffness and damping matrices (springs, dampers, oscillator springs, air friction, and contacts counted
+ * as engaged). {@link #lambda()} is an upper estimate of that eigenvalue: the Lanczos estimate plus its
+ * residual bound ({@link #lanczosResidual()}, the stated safety margin), plus the contact bound. The {@link #margin()} is {@code 4 - lambda}: positive means
  * stable. Negative damping is reported separately, since it is sometimes intended (a bowed or
  * self-sustained oscillation).
  */
@@ -14,11 +15,15 @@ public final class StabilityReport {
     public enum Method {
         /** No moving mass or no coupling: nothing can go unstable. */
         TRIVIAL,
-        /** Lanczos iteration on the sparse network, converged to 1e-6 relative. */
+        /**
+         * Lanczos iteration on the sparse network, run until the residual of its largest Ritz value is below
+         * 1e-7 relative: {@link #lambda()} is that Ritz value plus the residual.
+         */
         LANCZOS,
         /**
-         * Lanczos iteration stopped by its work budget before converging: {@link #lambda()} is a lower
-         * estimate; {@link #gershgorinBound()} is a guaranteed upper bound.
+         * Lanczos iteration stopped by its work budget before the residual reached 1e-7 relative:
+         * {@link #lambda()} is still the Ritz value plus its (larger) residual, capped by
+         * {@link #gershgorinBound()}, which is a guaranteed upper bound.
          */
         LANCZOS_UNCONVERGED
     }
@@ -36,11 +41,13 @@ public final class StabilityReport {
     private final int negativeDampingLink;
     private final int negativeDampingMass;
     private final int culpritGroup;
+    private final double lanczosResidual;
 
     StabilityReport(double lambdaLinks, double lambdaContacts, double gershgorinLinks, Method method,
                     int culpritLink, int culpritMass, int negativeDampingLink,
-                    int negativeDampingMass, int culpritGroup) {
+                    int negativeDampingMass, int culpritGroup, double lanczosResidual) {
         this.culpritGroup = culpritGroup;
+        this.lanczosResidual = lanczosResidual;
         this.lambda = lambdaLinks + lambdaContacts;
         this.gershgorin = gershgorinLinks + lambdaContacts;
         this.lambdaLinks = lambdaLinks;
@@ -63,6 +70,15 @@ public final class StabilityReport {
      */
     public double gershgorinBound() {
         return gershgorin;
+    }
+
+    /**
+     * @return the safety margin included in {@link #lambda()}: the residual {@code ||A y - theta y||} of the
+     *     Lanczos Ritz value theta, which bounds how far below the largest eigenvalue theta may lie (0 when the
+     *     network is trivial or the Krylov space was exhausted, where theta is exact)
+     */
+    public double lanczosResidual() {
+        return lanczosResidual;
     }
 
     /** @return the part of {@link #lambda()} due to permanent links, oscillators and friction. */
@@ -133,7 +149,8 @@ public final class StabilityReport {
 
     @Override
     public String toString() {
-        return String.format("lambda=%.6g (links %.6g + contacts %.6g, %s), margin=%.6g%s", lambda, lambdaLinks,
-                lambdaContacts, method, margin(), hasNegativeDamping() ? ", negative damping" : "");
+        return String.format("lambda=%.8g (links %.8g incl. Lanczos residual %.2g + contacts %.6g, %s), margin=%.6g%s",
+                lambda, lambdaLinks, lanczosResidual, lambdaContacts, method, margin(),
+                hasNegativeDamping() ? ", negative damping" : "");
     }
 }

@@ -10,8 +10,11 @@ package tactus.engine;
  *   <li>differences, distance, scalar force over distance, force components;</li>
  *   <li>add the force to the near ends; copy it next to the far ends and subtract it there.</li>
  * </ol>
- * The distance is {@code sqrt(d^2 + 1e-300)}: for coincident masses this gives a tiny positive distance and
- * a zero force instead of a division by zero, and for any other distance it is exactly {@code sqrt(d^2)}.
+ * The distance is {@code sqrt(d^2 + 1e-300)}, so that no division by zero can occur: for coincident masses
+ * it is 1e-150 and the force (a finite scalar times a zero difference) is zero. The added 1e-300 vanishes
+ * in the rounding of {@code d^2} only when {@code d} exceeds about 1e-142; closer masses see a distance up to
+ * 1e-150 too large. Above that the distance is exactly {@code sqrt(d^2)}, as in the index-array kernels
+ * (which skip d = 0 instead).
  */
 final class StencilKernel implements RangeKernel {
     private static final double TINY = 1e-300;
@@ -62,27 +65,27 @@ final class StencilKernel implements RangeKernel {
         final StepPlan q = p;
         final int o = r.o, n = to - from;
         if (stage == 0) {
-            System.arraycopy(q.x, from + o, q.sbx, from, n);
-            System.arraycopy(q.y, from + o, q.sby, from, n);
-            System.arraycopy(q.z, from + o, q.sbz, from, n);
-            difference(q.x, q.sbx, from, to);
-            difference(q.y, q.sby, from, to);
-            difference(q.z, q.sbz, from, to);
-            distance(q.sbx, q.sby, q.sbz, q.sdd, from, to);
-            coefficient(q.sdd, r.k, r.z, r.l0, r.dp, from, to);
-            scale(q.sbx, q.sdd, from, to);
-            scale(q.sby, q.sdd, from, to);
-            scale(q.sbz, q.sdd, from, to);
-            add(q.fx, q.sbx, from, to);
-            add(q.fy, q.sby, from, to);
-            add(q.fz, q.sbz, from, to);
+            System.arraycopy(q.x, from + o, q.stencilVecX, from, n);
+            System.arraycopy(q.y, from + o, q.stencilVecY, from, n);
+            System.arraycopy(q.z, from + o, q.stencilVecZ, from, n);
+            difference(q.x, q.stencilVecX, from, to);
+            difference(q.y, q.stencilVecY, from, to);
+            difference(q.z, q.stencilVecZ, from, to);
+            distance(q.stencilVecX, q.stencilVecY, q.stencilVecZ, q.stencilDist, from, to);
+            coefficient(q.stencilDist, r.k, r.z, r.l0, r.dp, from, to);
+            scale(q.stencilVecX, q.stencilDist, from, to);
+            scale(q.stencilVecY, q.stencilDist, from, to);
+            scale(q.stencilVecZ, q.stencilDist, from, to);
+            add(q.fx, q.stencilVecX, from, to);
+            add(q.fy, q.stencilVecY, from, to);
+            add(q.fz, q.stencilVecZ, from, to);
         } else {
-            System.arraycopy(q.sbx, from - o, q.stx, from, n);
-            System.arraycopy(q.sby, from - o, q.sty, from, n);
-            System.arraycopy(q.sbz, from - o, q.stz, from, n);
-            subtract(q.fx, q.stx, from, to);
-            subtract(q.fy, q.sty, from, to);
-            subtract(q.fz, q.stz, from, to);
+            System.arraycopy(q.stencilVecX, from - o, q.stencilFarX, from, n);
+            System.arraycopy(q.stencilVecY, from - o, q.stencilFarY, from, n);
+            System.arraycopy(q.stencilVecZ, from - o, q.stencilFarZ, from, n);
+            subtract(q.fx, q.stencilFarX, from, to);
+            subtract(q.fy, q.stencilFarY, from, to);
+            subtract(q.fz, q.stencilFarZ, from, to);
         }
     }
 

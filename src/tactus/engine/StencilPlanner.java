@@ -31,34 +31,44 @@ final class StencilPlanner {
         return k == LinkKind.SPRING3D || k == LinkKind.DAMPER3D || k == LinkKind.SPRING_DAMPER3D;
     }
 
-    /** Returns a batch with the same links, reordered as irregular links then runs. */
+    /**
+     * Returns a batch with the same links, reordered as irregular links then runs. Links are ordered by
+     * (offset, lower slot, insertion index) with two stable counting sorts, so any slot and link count that
+     * fits an int is handled (no bit packing, hence no limit at 2^21 masses).
+     */
     static LinkBatch organize(LinkBatch in) {
         int n = in.n;
-        long[] keys = new long[n];
-        for (int j = 0; j < n; j++) {
-            int lo = Math.min(in.a[j], in.b[j]);
-            int o = Math.abs(in.b[j] - in.a[j]);
-            keys[j] = ((long) o << 42) | ((long) lo << 21) | j;
-        }
-        if (n < MIN_RUN || n >= (1 << 21)) {
+        if (n < MIN_RUN) {
             return in;
         }
-        Arrays.sort(keys);
+        int[] offset = new int[n];
+        int[] low = new int[n];
+        int slots = 0;
+        for (int j = 0; j < n; j++) {
+            low[j] = Math.min(in.a[j], in.b[j]);
+            offset[j] = Math.abs(in.b[j] - in.a[j]);
+            slots = Math.max(slots, Math.max(in.a[j], in.b[j]) + 1);
+        }
+        int[] order = new int[n];
+        for (int j = 0; j < n; j++) {
+            order[j] = j;
+        }
+        order = stableSortBy(stableSortBy(order, low, slots), offset, slots);
         boolean[] inRun = new boolean[n];
         int[] runStart = new int[16];
         int[] runEnd = new int[16];
         int runs = 0;
         int q = 0;
         while (q < n) {
-            int o = (int) (keys[q] >>> 42);
+            int o = offset[order[q]];
             int r = q + 1;
-            int last = lo(keys[q]);
-            while (r < n && (int) (keys[r] >>> 42) == o && lo(keys[r]) - last <= MAX_GAP && lo(keys[r]) != last) {
-                last = lo(keys[r]);
+            int last = low[order[q]];
+            while (r < n && offset[order[r]] == o && low[order[r]] - last <= MAX_GAP && low[order[r]] != last) {
+                last = low[order[r]];
                 r++;
             }
             int count = r - q;
-            int span = last - lo(keys[q]) + 1;
+            int span = last - low[order[q]] + 1;
             if (o > 0 && count >= MIN_RUN && count >= MIN_DENSITY * span) {
                 if (runs == runStart.length) {
                     runStart = Arrays.copyOf(runStart, runs * 2);
@@ -68,7 +78,7 @@ final class StencilPlanner {
                 runEnd[runs] = r;
                 runs++;
                 for (int t = q; t < r; t++) {
-                    inRun[(int) (keys[t] & 0x1FFFFF)] = true;
+                    inRun[order[t]] = true;
                 }
             }
             q = r;
@@ -86,14 +96,14 @@ final class StencilPlanner {
         out.nIrregular = w;
         out.runs = new StencilRun[runs];
         for (int r = 0; r < runs; r++) {
-            int first = lo(keys[runStart[r]]);
-            int lastLo = lo(keys[runEnd[r] - 1]);
-            int o = (int) (keys[runStart[r]] >>> 42);
+            int first = low[order[runStart[r]]];
+            int lastLo = low[order[runEnd[r] - 1]];
+            int o = offset[order[runStart[r]]];
             StencilRun run = new StencilRun(first, lastLo + 1, o);
             out.runs[r] = run;
             for (int t = runStart[r]; t < runEnd[r]; t++) {
-                int j = (int) (keys[t] & 0x1FFFFF);
-                int lo = lo(keys[t]);
+                int j = order[t];
+                int lo = low[j];
                 copy(in, j, out, w);
                 out.a[w] = lo;
                 out.b[w] = lo + o;
@@ -104,8 +114,20 @@ final class StencilPlanner {
         return out;
     }
 
-    private static int lo(long key) {
-        return (int) ((key >>> 21) & 0x1FFFFF);
+    /** @return the indices of {@code order} stably sorted by {@code key[index]}, each key in [0, range). */
+    private static int[] stableSortBy(int[] order, int[] key, int range) {
+        int[] start = new int[range + 1];
+        for (int j : order) {
+            start[key[j] + 1]++;
+        }
+        for (int k = 0; k < range; k++) {
+            start[k + 1] += start[k];
+        }
+        int[] out = new int[order.length];
+        for (int j : order) {
+            out[start[key[j]]++] = j;
+        }
+        return out;
     }
 
     private static void copy(LinkBatch in, int j, LinkBatch out, int w) {

@@ -28,8 +28,4 @@ final class StencilRun {
         l0 = new double[e];
         dp = new double[e];
     }
-
-    int size() {
-        return e - s;
-    }
 }

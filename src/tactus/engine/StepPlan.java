@@ -22,15 +22,15 @@ public final class StepPlan {
     /** 1/M for inertial masses, 0 otherwise. */
     final double[] invM;
     /** Velocity retention per step: 1 - f/M (masses) or 1 - (Z + f)/M (oscillators). */
-    final double[] dmp;
+    final double[] retention;
     /** K/M of oscillators. */
-    final double[] stf;
+    final double[] oscStiffnessPerMass;
     /** Rest position of oscillators. */
-    final double[] rx;
-    final double[] ry;
-    final double[] rz;
+    final double[] restX;
+    final double[] restY;
+    final double[] restZ;
     /** EWMA weight of input modules. */
-    final double[] w;
+    final double[] inputWeight;
     /** Target position of input modules. */
     final double[] tx;
     final double[] ty;
@@ -42,14 +42,19 @@ public final class StepPlan {
     /** One batch per link kind (by ordinal), null when the scene has none of that kind. */
     final LinkBatch[] batches;
     final Medium medium;
-    /** Scratch arrays (one value per mass slot) shared by the stencil-run kernels; null when there are no runs. */
-    double[] sbx;
-    double[] sby;
-    double[] sbz;
-    double[] sdd;
-    double[] stx;
-    double[] sty;
-    double[] stz;
+    /*
+     * Scratch arrays (one value per mass slot) shared by the stencil-run kernels; null when there are no runs.
+     * For the link whose near end is slot i: stencilVec holds the far end's position, then the difference
+     * X(i) - X(i + o), then the force on the near end; stencilDist the distance, then the scalar force over the
+     * distance. stencilFar holds, at the far end's slot i + o, the force of the link to subtract there.
+     */
+    double[] stencilVecX;
+    double[] stencilVecY;
+    double[] stencilVecZ;
+    double[] stencilDist;
+    double[] stencilFarX;
+    double[] stencilFarY;
+    double[] stencilFarZ;
     /** Contact groups (broad-phase contacts), run right after the explicit Contact3D links. */
     ContactGroupKernel[] groups = new ContactGroupKernel[0];
     private Kernel[] kernels = new Kernel[0];
@@ -67,12 +72,12 @@ public final class StepPlan {
         fy = new double[nMass];
         fz = new double[nMass];
         invM = new double[nMass];
-        dmp = new double[nMass];
-        stf = new double[nMass];
-        rx = new double[nMass];
-        ry = new double[nMass];
-        rz = new double[nMass];
-        w = new double[nMass];
+        retention = new double[nMass];
+        oscStiffnessPerMass = new double[nMass];
+        restX = new double[nMass];
+        restY = new double[nMass];
+        restZ = new double[nMass];
+        inputWeight = new double[nMass];
         tx = new double[nMass];
         ty = new double[nMass];
         tz = new double[nMass];
@@ -82,8 +87,11 @@ public final class StepPlan {
         this.medium = medium;
     }
 
-    /** Runs one simulation step: every mass kernel, then every interaction kernel. */
-    public void step() {
+    /**
+     * Runs one simulation step: every mass kernel, then every interaction kernel. Package-private: stepping
+     * goes through {@link Engine#step(int)}, which counts steps and runs the divergence guard.
+     */
+    void step() {
         Kernel[] ks = kernels;
         for (int i = 0; i < ks.length; i++) {
             ks[i].run();
@@ -107,11 +115,6 @@ public final class StepPlan {
             }
         }
         return n;
-    }
-
-    /** @return the number of masses in the plan. */
-    public int massCount() {
-        return nMass;
     }
 
     /** @return the names of the kernels this plan runs per step, in order, for diagnostics. */
@@ -160,14 +163,14 @@ public final class StepPlan {
                 list.add(LinkKernels.create(b, this));
             }
             for (StencilRun run : b.runs) {
-                if (sbx == null) {
-                    sbx = new double[nMass];
-                    sby = new double[nMass];
-                    sbz = new double[nMass];
-                    sdd = new double[nMass];
-                    stx = new double[nMass];
-                    sty = new double[nMass];
-                    stz = new double[nMass];
+                if (stencilVecX == null) {
+                    stencilVecX = new double[nMass];
+                    stencilVecY = new double[nMass];
+                    stencilVecZ = new double[nMass];
+                    stencilDist = new double[nMass];
+                    stencilFarX = new double[nMass];
+                    stencilFarY = new double[nMass];
+                    stencilFarZ = new double[nMass];
                 }
                 list.add(new StencilKernel(run, this));
             }
