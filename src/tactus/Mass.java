@@ -16,6 +16,8 @@ public abstract class Mass extends Module {
         switch (kind) {
             case MASS3D:
                 return new Mass3D(model, id);
+            case MASS3D_SIMPLE:
+                return new Mass3DSimple(model, id);
             case MASS2D_PLANE:
                 return new Mass2DPlane(model, id);
             case MASS1D:

@@ -12,6 +12,8 @@ final class ModuleTypes {
         switch (k) {
             case MASS3D:
                 return matModuleType.Mass3D;
+            case MASS3D_SIMPLE:
+                return matModuleType.Mass3DSimple;
             case MASS2D_PLANE:
                 return matModuleType.Mass2DPlane;
             case MASS1D:

@@ -477,6 +477,12 @@ public class PhysicalModel {
         return (Mass3D) addMass("addMass3D", MassKind.MASS3D, name, mass, initPos, initVel, 0, 0, 1);
     }
 
+    /** Adds a free 3D mass that ignores air friction and gravity: only its interactions move it. */
+    public Mass3DSimple addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
+        return (Mass3DSimple) addMass("addMass3DSimple", MassKind.MASS3D_SIMPLE, name, mass, initPos, initVel, 0, 0,
+                1);
+    }
+
     /** Adds a mass that moves in its initial z plane only (see {@link #addMass3D}). */
     public Mass2DPlane addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
         return (Mass2DPlane) addMass("addMass2DPlane", MassKind.MASS2D_PLANE, name, mass, initPos, initVel, 0, 0, 1);
@@ -991,6 +997,55 @@ public class PhysicalModel {
         enter();
         try {
             core.state.addImpulse(core.dir.massAt("triggerForceImpulse", i), fx, fy, fz);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Puts a free mass (Mass3D, Mass3DSimple, Mass2DPlane, Mass1D) under velocity control: from the next step it
+     * moves at exactly (vx, vy, vz) units per second and ignores forces, friction and gravity, pushing whatever it
+     * touches; a Mass2DPlane keeps its z, a Mass1D its x and y. Call it again to change the velocity.
+     * {@link #stopVelocityControl(String)} releases it, still moving at that velocity: a pluck.
+     */
+    public void triggerVelocityControl(String name, double vx, double vy, double vz) {
+        checkForce("triggerVelocityControl", name, vx, vy, vz);
+        enter();
+        try {
+            core.state.driveVelocity("triggerVelocityControl", core.dir.massId("triggerVelocityControl", name), vx,
+                    vy, vz);
+        } finally {
+            exit();
+        }
+    }
+
+    /** Puts the mass at an index under velocity control (see {@link #triggerVelocityControl(String, double, double, double)}). */
+    public void triggerVelocityControl(int i, double vx, double vy, double vz) {
+        checkForce("triggerVelocityControl", String.valueOf(i), vx, vy, vz);
+        enter();
+        try {
+            core.state.driveVelocity("triggerVelocityControl", core.dir.massAt("triggerVelocityControl", i), vx, vy,
+                    vz);
+        } finally {
+            exit();
+        }
+    }
+
+    /** Ends the velocity control of a mass: it keeps moving at the velocity it had, and feels forces again. */
+    public void stopVelocityControl(String name) {
+        enter();
+        try {
+            core.state.stopDriving(core.dir.massId("stopVelocityControl", name));
+        } finally {
+            exit();
+        }
+    }
+
+    /** Ends the velocity control of the mass at an index. */
+    public void stopVelocityControl(int i) {
+        enter();
+        try {
+            core.state.stopDriving(core.dir.massAt("stopVelocityControl", i));
         } finally {
             exit();
         }

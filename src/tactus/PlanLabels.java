@@ -19,6 +19,7 @@ final class PlanLabels {
         LABELS.put("Osc1D", "1D oscillators");
         LABELS.put("Input3D", "input modules");
         LABELS.put("Fixed", "fixed points");
+        LABELS.put("Driven3D", "velocity-driven masses");
         LABELS.put("Spring", "springs");
         LABELS.put("Damper", "dampers");
         LABELS.put("SpringDamper", "spring-dampers");

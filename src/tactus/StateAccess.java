@@ -58,6 +58,24 @@ final class StateAccess {
         engine.addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
     }
 
+    /** Puts a free mass under velocity control at (vx, vy, vz) units per second. */
+    void driveVelocity(String op, int id, double vx, double vy, double vz) {
+        MassKind k = engine.massKind(id);
+        if (!k.isDrivable()) {
+            throw Check.fail(op, c.dir.massName(id), "only free masses (Mass3D, Mass3DSimple, Mass2DPlane, Mass1D) "
+                    + "can be put under velocity control, this is a " + k.label());
+        }
+        UnitScale u = c.units();
+        engine.driveVelocity(id, u.velocityIn(vx), u.velocityIn(vy), u.velocityIn(vz));
+        c.topology.compileIfRunning();
+    }
+
+    /** Releases a mass from velocity control (nothing happens if it is not under control). */
+    void stopDriving(int id) {
+        engine.stopDriving(id);
+        c.topology.compileIfRunning();
+    }
+
     void requireInput(String op, int id) {
         MassKind k = engine.massKind(id);
         if (!k.isInput()) {

@@ -247,4 +247,72 @@ class PaperApiTest {
         assertEquals(-3, m.getMatPosition("m0").x, 1e-6);
         assertEquals(5, m.getMatPosition("m2").x, 1e-6);
     }
+
+    @Test
+    void aSimpleMassIgnoresGravityAndFriction() {
+        PhysicalModel m = new PhysicalModel(100, 50);
+        m.addMass3DSimple("s", 1, v(0, 0, 0), v(100, 0, 0));   // one unit per step along x
+        m.addMass3D("f", 1, v(0, 5, 0), v(100, 0, 0));
+        m.setGravity(0.01);
+        m.setFriction(0.1);
+        m.init();
+        assertEquals(matModuleType.Mass3DSimple, m.getMatTypeAt(0));
+        assertEquals("Mass3DSimple", m.getMass("s").getType());
+        m.computeNSteps(10);
+        assertEquals(10, m.getMatPosition("s").x, 1e-12);
+        assertEquals(0, m.getMatPosition("s").z, 0.0);
+        assertTrue(m.getMatPosition("f").z < 0, "the Mass3D falls");
+        assertTrue(m.getMatPosition("f").x < 9, "and is slowed by the friction");
+        // it still feels its links: a spring pulls it back
+        m.addGround3D("g", v(0, 0, 0));
+        m.addSpring3D("k", 0, 0.01, "s", "g");
+        double vBefore = m.getMatVelocity("s").x;
+        m.computeNSteps(5);
+        assertTrue(m.getMatVelocity("s").x < vBefore);
+    }
+
+    @Test
+    void velocityControlMovesAMassAtExactlyItsSpeedThenLetsGo() {
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        m.addMass3D("pick", 1, v(0, 0, 0), v(0, 0, 0));
+        m.addMass3D("other", 1, v(1, 0, 0), v(0, 0, 0));
+        m.addSpringDamper3D("k", 1, 0.01, 0.001, "pick", "other");
+        m.setGravity(0.001);
+        m.init();
+        m.triggerVelocityControl("pick", 250, 0, 0);   // 0.25 per step
+        assertEquals(matModuleType.Mass3D, m.getMatTypeAt(0), "it stays a Mass3D");
+        m.computeNSteps(8);
+        assertEquals(2.0, m.getMatPosition("pick").x, 1e-12, "exactly 8 x 0.25, whatever the spring and gravity");
+        assertEquals(0.0, m.getMatPosition("pick").z, 0.0);
+        assertTrue(m.getMatPosition("other").x > 1, "it pushed the other mass through the spring");
+        m.triggerVelocityControl(0, 0, 500, 0);       // change of velocity, by index
+        m.computeNSteps(2);
+        assertEquals(1.0, m.getMatPosition("pick").y, 1e-12);
+        m.stopVelocityControl("pick");
+        m.computeStep();
+        // released: it keeps its 0.5 per step along y, plus what the spring and gravity do in one step
+        assertEquals(500, m.getMatVelocity("pick").y, 20);
+        assertTrue(m.getMatPosition("pick").z < 0, "gravity acts again");
+    }
+
+    @Test
+    void velocityControlRespectsConstrainedMassesAndRefusesOthers() {
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        m.addMass2DPlane("p", 1, v(0, 0, 3), v(0, 0, 0));
+        m.addMass1D("l", 1, v(5, 5, 0), v(0, 0, 0));
+        m.addOsc3D("o", 1, 0.1, 0, v(0, 0, 0), v(0, 0, 0));
+        m.init();
+        m.triggerVelocityControl("p", 100, 100, 100);
+        m.triggerVelocityControl("l", 100, 100, 100);
+        m.computeNSteps(10);
+        assertEquals(3, m.getMatPosition("p").z, 0.0, "the plane mass keeps its z");
+        assertEquals(1, m.getMatPosition("p").x, 1e-12);
+        assertEquals(5, m.getMatPosition("l").x, 0.0, "the 1D mass keeps its x");
+        assertEquals(1, m.getMatPosition("l").z, 1e-12);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> m.triggerVelocityControl("o", 1, 0, 0));
+        assertTrue(e.getMessage().contains("\"o\"") && e.getMessage().contains("Osc3D"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> m.triggerVelocityControl("p", Double.NaN, 0, 0));
+        m.stopVelocityControl("o");   // not under control: nothing happens
+    }
 }

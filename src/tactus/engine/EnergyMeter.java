@@ -37,8 +37,9 @@ public final class EnergyMeter {
         }
         Medium m = p.medium;
         if (m.hasGravity()) {
+            int simpleStart = p.start(MassKind.MASS3D_SIMPLE), simpleEnd = p.end(MassKind.MASS3D_SIMPLE);
             for (int i = 0; i < p.nMass; i++) {
-                if (p.invM[i] != 0) {
+                if (p.invM[i] != 0 && (i < simpleStart || i >= simpleEnd)) {
                     e -= (m.gx * p.x[i] + m.gy * p.y[i] + m.gz * p.z[i]) / p.invM[i];
                 }
             }

@@ -242,11 +242,54 @@ public final class Engine implements AutoCloseable {
         topologyDirty = true;
     }
 
+    /**
+     * Puts a free mass under velocity control: from the next step it moves by exactly (vx, vy, vz) per step and
+     * ignores forces, friction and gravity. A Mass2DPlane keeps its z, a Mass1D its x and y. Calling it again
+     * changes the velocity without recompiling.
+     *
+     * @param vx displacement per step along x (units per step)
+     */
+    public void driveVelocity(int id, double vx, double vy, double vz) {
+        checkMass(id);
+        MassKind own = masses.userKind(id);
+        if (!own.isDrivable()) {
+            throw new IllegalArgumentException("a " + own.label() + " cannot be put under velocity control");
+        }
+        int q = 3 * id;
+        masses.drive[q] = own == MassKind.MASS1D ? 0 : vx;
+        masses.drive[q + 1] = own == MassKind.MASS1D ? 0 : vy;
+        masses.drive[q + 2] = own == MassKind.MASS2D_PLANE ? 0 : vz;
+        if (masses.drivenFrom[id] == null) {
+            masses.drivenFrom[id] = own;
+            masses.kind[id] = MassKind.DRIVEN3D;
+            topologyDirty = true;
+        } else {
+            refreshMass(id);
+        }
+    }
+
+    /** Ends the velocity control of a mass; it keeps the velocity it had and feels forces again. */
+    public void stopDriving(int id) {
+        checkMass(id);
+        if (masses.drivenFrom[id] != null) {
+            masses.kind[id] = masses.drivenFrom[id];
+            masses.drivenFrom[id] = null;
+            topologyDirty = true;
+        }
+    }
+
+    /** @return true while a mass is under velocity control. */
+    public boolean isDriven(int id) {
+        checkMass(id);
+        return masses.drivenFrom[id] != null;
+    }
+
     /** Turns a mass into a fixed point (Ground3D) at its current position; its links stay attached. */
     public void makeFixed(int id) {
         checkMass(id);
         double[] pos = scratchA;
         position(id, pos);
+        masses.drivenFrom[id] = null;
         masses.kind[id] = MassKind.GROUND3D;
         setPosition(id, pos[0], pos[1], pos[2]);
         topologyDirty = true;
@@ -557,7 +600,7 @@ public final class Engine implements AutoCloseable {
     /** @return the kind of a live mass. */
     public MassKind massKind(int id) {
         checkMass(id);
-        return masses.kind[id];
+        return masses.userKind(id);
     }
 
     /** @return the kind of a live link. */

@@ -22,6 +22,10 @@ final class MassKernels {
         switch (kind) {
             case MASS3D:
                 return plain ? new Free3D(p, s, e) : new Medium3D(p, s, e);
+            case MASS3D_SIMPLE:
+                return new Free3D(p, s, e);
+            case DRIVEN3D:
+                return new Driven3D(p, s, e);
             case MASS2D_PLANE:
                 return new Plane2D(p, s, e);
             case MASS1D:
@@ -242,6 +246,32 @@ final class MassKernels {
             for (int i = s; i < e; i++) {
                 double xi = x[i];
                 x[i] = xi + w[i] * (t[i] - xi);
+                px[i] = xi;
+            }
+        }
+    }
+
+    /**
+     * Masses under velocity control: X(n+1) = X(n) + v, with v the displacement per step kept in the target
+     * arrays; forces are ignored and cleared. When the control stops, the mass keeps moving at v.
+     */
+    static final class Driven3D extends SlotKernel {
+        Driven3D(StepPlan p, int s, int e) {
+            super(p, s, e);
+        }
+
+        @Override
+        void step(int from, int to) {
+            drift(p.x, p.px, p.tx, from, to);
+            drift(p.y, p.py, p.ty, from, to);
+            drift(p.z, p.pz, p.tz, from, to);
+            clearForces(from, to);
+        }
+
+        private static void drift(double[] x, double[] px, double[] v, int s, int e) {
+            for (int i = s; i < e; i++) {
+                double xi = x[i];
+                x[i] = xi + v[i];
                 px[i] = xi;
             }
         }

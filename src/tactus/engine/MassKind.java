@@ -7,6 +7,8 @@ package tactus.engine;
 public enum MassKind {
     /** A free 3D mass with air friction and gravity. */
     MASS3D("Mass3D", true),
+    /** A free 3D mass that ignores air friction and gravity. */
+    MASS3D_SIMPLE("Mass3DSimple", true),
     /** A 3D mass constrained to its initial z plane: only x and y move. */
     MASS2D_PLANE("Mass2DPlane", true),
     /** A mass that moves along z only; x and y stay at their initial values. */
@@ -19,6 +21,11 @@ public enum MassKind {
     HAPTIC_INPUT3D("HapticInput3D", false),
     /** A kinematic driver that follows a target position through an EWMA filter; reports no force. */
     POS_INPUT3D("PosInput3D", false),
+    /**
+     * A free mass under velocity control: it moves by a set displacement every step and ignores forces. Only
+     * the engine's layout uses this kind; the mass keeps reporting its own kind.
+     */
+    DRIVEN3D("velocity-driven mass", false),
     /** A fixed point in 3D. */
     GROUND3D("Ground3D", false),
     /** A fixed point for 1D models. */
@@ -50,6 +57,11 @@ public enum MassKind {
     /** @return true for the kinds driven from outside through an EWMA filter. */
     public boolean isInput() {
         return this == HAPTIC_INPUT3D || this == POS_INPUT3D;
+    }
+
+    /** @return true for the free kinds that can be put under velocity control. */
+    public boolean isDrivable() {
+        return this == MASS3D || this == MASS3D_SIMPLE || this == MASS2D_PLANE || this == MASS1D;
     }
 
     /** @return true for fixed points. */

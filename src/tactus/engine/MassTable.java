@@ -23,6 +23,10 @@ final class MassTable {
     /** Input targets set before a mass has a plan slot (3 per id); NaN when none was set. */
     double[] pendingTarget = new double[48];
     long[] lastTake = new long[16];
+    /** The user-facing kind of a mass under velocity control (its layout kind is then DRIVEN3D); null otherwise. */
+    MassKind[] drivenFrom = new MassKind[16];
+    /** The displacement per step imposed on a mass under velocity control (3 per id). */
+    double[] drive = new double[48];
 
     int add(MassKind k, double m) {
         ensure(count + 1);
@@ -31,6 +35,7 @@ final class MassTable {
         alive[id] = true;
         slot[id] = -1;
         mass[id] = m;
+        drivenFrom[id] = null;
         int q = 3 * id;
         pendingForce[q] = 0;
         pendingForce[q + 1] = 0;
@@ -78,5 +83,12 @@ final class MassTable {
         pendingForce = Arrays.copyOf(pendingForce, 3 * c);
         pendingTarget = Arrays.copyOf(pendingTarget, 3 * c);
         lastTake = Arrays.copyOf(lastTake, c);
+        drivenFrom = Arrays.copyOf(drivenFrom, c);
+        drive = Arrays.copyOf(drive, 3 * c);
+    }
+
+    /** @return the kind the user sees: the mass's own kind, also while it is under velocity control. */
+    MassKind userKind(int id) {
+        return drivenFrom[id] != null ? drivenFrom[id] : kind[id];
     }
 }

@@ -118,8 +118,13 @@ final class PlanCompiler {
             p.restY[s] = mt.rest[3 * id + 1];
             p.restZ[s] = mt.rest[3 * id + 2];
         } else {
-            p.retention[s] = 1.0 - medium.friction * im;
+            p.retention[s] = k == MassKind.MASS3D_SIMPLE ? 1.0 : 1.0 - medium.friction * im;
             p.oscStiffnessPerMass[s] = 0.0;
+        }
+        if (k == MassKind.DRIVEN3D) {
+            p.tx[s] = mt.drive[3 * id];
+            p.ty[s] = mt.drive[3 * id + 1];
+            p.tz[s] = mt.drive[3 * id + 2];
         }
         if (k.isFixed()) {
             p.px[s] = p.x[s];

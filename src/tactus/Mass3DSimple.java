@@ -1,0 +1,8 @@
+package tactus;
+
+/** A free 3D mass subject to its interactions only: it ignores air friction and gravity. */
+public final class Mass3DSimple extends InertialMass {
+    Mass3DSimple(PhysicalModel model, int id) {
+        super(model, id);
+    }
+}
