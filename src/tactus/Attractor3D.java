@@ -23,7 +23,7 @@ public final class Attractor3D extends Interaction {
         return length();
     }
 
-    /** Sets the limit distance, &ge; 0. */
+    /** Sets the limit distance, finite and &gt; 0 (an {@link IllegalArgumentException} otherwise). */
     public void setLimit(double d) {
         length(d);
     }

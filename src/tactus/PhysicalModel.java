@@ -573,7 +573,13 @@ public class PhysicalModel {
         return addRope3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
     }
 
-    /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
+    /**
+     * Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}.
+     * At distance exactly 0 it has no direction to push along and exerts no force: masses resting exactly on
+     * each other stay there until something separates them, and a pair whose paths cross at exactly d = 0 in a
+     * step passes through. Adding a contact between two masses at exactly the same position prints a warning
+     * naming the contact and the masses on {@code System.err}.
+     */
     public Contact3D addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
         return (Contact3D) addLink("addContact3D", LinkKind.CONTACT3D, name, m1, m2, K, Z, dist);
     }
@@ -614,6 +620,10 @@ public class PhysicalModel {
     /**
      * Adds an inverse-square attractor: force -attr / d^2 between the masses while d &gt; dLim
      * (REAL_UNITS: attr in N·m^2). A negative factor repels.
+     *
+     * @param dLim limit distance, finite and &gt; 0: the force is unbounded as d goes to 0, so it is switched
+     *             off inside dLim
+     * @throws IllegalArgumentException naming the attractor and the value, when dLim &le; 0
      */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
         return (Attractor3D) addLink("addAttractor3D", LinkKind.ATTRACTOR3D, name, m1, m2, 0, 0, dLim, attr, 0);
@@ -641,8 +651,10 @@ public class PhysicalModel {
             if (axis < 0 || axis > 2) {
                 throw Check.fail(op, label, "orientation must be 0 (x), 1 (y) or 2 (z), got " + axis);
             }
+        } else if (kind == LinkKind.ATTRACTOR3D) {
+            Check.attractorLimit(op, label, len);
         } else {
-            Check.nonNegative(op, label, kind == LinkKind.ATTRACTOR3D ? "dLim" : "dist", len);
+            Check.nonNegative(op, label, "dist", len);
         }
         if (kind == LinkKind.ATTRACTOR3D) {
             Check.finite(op, label, "attr", aux);
@@ -668,8 +680,18 @@ public class PhysicalModel {
             Interaction h = Interaction.create(this, id, kind);
             storeLinkHandle(id, h);
             analyzeAfterChange(() -> removeLinkId(id));
+            if (kind == LinkKind.CONTACT3D && engine.linkDistance(id) == 0) {
+                System.err.println(coincidentContactWarning(label, m1, m2));
+            }
             return h;
         }
+    }
+
+    /** The warning printed once, when a Contact3D is added between two masses at exactly the same position. */
+    static String coincidentContactWarning(String link, String m1, String m2) {
+        return "Tactus: Contact3D \"" + link + "\" joins \"" + m1 + "\" and \"" + m2 + "\" at exactly the same"
+                + " position: at distance 0 a contact has no direction to push along, so it exerts no force until"
+                + " the masses separate";
     }
 
     private void storeLinkHandle(int id, Interaction h) {
@@ -1240,6 +1262,8 @@ public class PhysicalModel {
                 }
                 if (kind == LinkKind.PLANE_CONTACT3D) {
                     Check.finite(op, n, "dist", len);
+                } else if (kind == LinkKind.ATTRACTOR3D) {
+                    Check.attractorLimit(op, n, len);
                 } else {
                     Check.nonNegative(op, n, "dist", len);
                 }
@@ -1542,7 +1566,9 @@ public class PhysicalModel {
             if (!ok) {
                 throw Check.fail(op, links.name(id), "a " + k.label() + " has no " + param + " parameter");
             }
-            if ("dist".equals(param) && k != LinkKind.PLANE_CONTACT3D) {
+            if ("dist".equals(param) && k == LinkKind.ATTRACTOR3D) {
+                Check.attractorLimit(op, links.name(id), value);
+            } else if ("dist".equals(param) && k != LinkKind.PLANE_CONTACT3D) {
                 Check.nonNegative(op, links.name(id), "dist", value);
             }
         }

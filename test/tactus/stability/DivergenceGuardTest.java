@@ -14,7 +14,7 @@ import tactus.Vect3D;
 /**
  * Regression tests for five engine defects found by the hard-case work (and fixed in src/ since): the subnormal
  * flush fed energy into decaying models, forces from a diverged state survived the documented repair, a new check
- * interval waited for the old countdown, the energy of a switched-off attractor at distance 0 was NaN, and the
+ * interval waited for the old countdown, the energy of a switched-off attractor at distance 0 was NaN (dLim = 0 is now rejected), and the
  * flush skipped an axis that another module kept busy. Each comment gives the old cause; each test states the
  * correct behaviour.
  */
@@ -120,17 +120,20 @@ class DivergenceGuardTest {
     }
 
     // Was: EnergyMeter added -A / max(d, dLim) for every attractor: 0/0 = NaN for an attractor switched off
-    // (A = 0) with dLim = 0 between coincident masses, while the kernel itself skips d = 0. Now: finite.
+    // (A = 0) with dLim = 0 between coincident masses, while the kernel itself skips d = 0. dLim = 0 is now
+    // rejected (the force is unbounded as d -> 0), so the case is the closest legal one: a switched-off attractor
+    // with the smallest positive limit between coincident masses. Its energy term is -0 / dLim = 0 exactly.
     @Test
-    @DisplayName("getTotalEnergy() is finite for a zero attractor with dLim 0 between coincident masses")
+    @DisplayName("getTotalEnergy() is 0 for a zero attractor with the smallest dLim between coincident masses")
     void attractorEnergyNaN() {
         PhysicalModel pm = new PhysicalModel(1000);
         pm.addMass3D("a", 1, new Vect3D(), new Vect3D());
         pm.addMass3D("b", 1, new Vect3D(), new Vect3D());
-        pm.addAttractor3D("off", 0, 0, "a", "b");
+        assertThrows(IllegalArgumentException.class, () -> pm.addAttractor3D("off", 0, 0, "a", "b"));
+        pm.addAttractor3D("off", Double.MIN_VALUE, 0, "a", "b");
         pm.init();
         pm.computeNSteps(10);
-        assertTrue(Double.isFinite(pm.getTotalEnergy()), "total energy " + pm.getTotalEnergy());
+        assertEquals(0.0, pm.getTotalEnergy(), 0.0, "total energy");
     }
 
     // Was: the whole-axis flush only fired when EVERY coordinate of the axis was below 1e-150. In the paper's
