@@ -39,7 +39,7 @@ import org.junit.jupiter.api.Timeout;
  * every distinct kind and reports them all; FacadeRegressionTest holds the minimal reproductions found so far.
  */
 class ApiSequenceFuzzTest {
-    static final int SEEDS = Integer.getInteger("tactus.fuzz.seeds", 120);
+    static final int SEEDS = Integer.getInteger("tactus.fuzz.seeds", 200);
     static final int CALLS = Integer.getInteger("tactus.fuzz.calls", 250);
     static final String[] MASSES = {"m0", "m1", "m2", "m3", "m4", "m5", "m6", "m7"};
     static final String[] LINKS = {"l0", "l1", "l2", "l3", "l4", "l5", "l6", "l7"};
@@ -740,7 +740,10 @@ class ApiSequenceFuzzTest {
 
     @Test
     @Timeout(120)
-    @Disabled("facade defects (issue #10 §1 item 10): see FacadeRegressionTest for the minimal reproductions")
+    @Disabled("facade defects (issue #10 §1.5, §1.6, §1.10): stepping throws IllegalArgumentException after the "
+            + "diverged mass is removed or the model cleared; a rejected setSimRate changes K; setThreads throws "
+            + "NegativeArraySizeException; contact-group energy and steps throw or run out of memory with far members."
+            + " Minimal reproductions in FacadeRegressionTest")
     void randomApiSequencesKeepTheInvariants() {
         Map<String, String> found = findFailures(1, SEEDS, CALLS);
         if (!found.isEmpty()) {

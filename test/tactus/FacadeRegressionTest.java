@@ -29,7 +29,8 @@ class FacadeRegressionTest {
         return m;
     }
 
-    // Expected: once the diverged mass is gone, nothing is diverged any more and stepping works.
+    // Expected: once the diverged mass is gone, nothing is diverged any more (the divergence belonged to that mass;
+    // isDiverged() must not report a mass that no longer exists) and stepping works.
     // Actual: computeStep, computeNSteps and draw_physics throw IllegalArgumentException "no live mass with id 0"
     // from Engine.checkMass (the guard still points at the removed mass).
     @Test
@@ -145,6 +146,26 @@ class FacadeRegressionTest {
         assertEquals(0.0, m.getPotentialEnergy(), 0.0);
         m.computeStep();
         assertEquals(0.0, m.getPotentialEnergy(), 0.0);
+    }
+
+    // Expected: the same with the far member at 1e6 on every axis: energy 0, and a step runs. Actual: the dense
+    // grid over the members' bounding box asks for ~10^23 cells: OutOfMemoryError from
+    // ContactGroupKernel.rebuildDense (one oversized array request, so the JVM survives it). The random sequences
+    // reach it through divergence, gravity or a rate change that sends one member far away.
+    @Test
+    @Disabled("facade defect: a contact group with one member far away runs out of memory in "
+            + "ContactGroupKernel.rebuildDense (issue #10 §1.6)")
+    void contactGroupWithAFarMemberNeedsLittleMemory() {
+        PhysicalModel m = pair(true, 0.01);
+        m.setMatPosition("b", new Vect3D(1e6, 1e6, 1e6));
+        try {
+            assertEquals(0.0, m.getPotentialEnergy(), 0.0);
+            m.computeNSteps(10);
+        } catch (OutOfMemoryError e) {
+            // caught here: JUnit treats an escaping OutOfMemoryError as fatal and aborts the whole run
+            throw new AssertionError("a two-member contact group ran out of memory: " + e.getMessage());
+        }
+        assertEquals(1e6, m.getMatPosition("b").x, 0.0);
     }
 
     // Expected: right after setMatPosition (no step yet) a contact group stores the same energy as the same
