@@ -50,9 +50,16 @@ class ThreadSafetyTest {
         Thread sim = new Thread(() -> {
             try {
                 started.countDown();
-                while (!stop.get()) {
-                    m.computeNSteps(5);
-                    simSteps[0] += 5;
+                for (int batch = 0; !stop.get(); batch++) {
+                    // batch sizes 1..7 and single steps, so reads land at every phase of a batch
+                    int n = 1 + batch % 7;
+                    if (n == 7) {
+                        m.computeStep();
+                        n = 1;
+                    } else {
+                        m.computeNSteps(n);
+                    }
+                    simSteps[0] += n;
                 }
             } catch (Throwable t) {
                 error.compareAndSet(null, t);
