@@ -79,6 +79,8 @@ class ApiSequenceFuzzTest {
         final Map<String, Mass> massHandles = new HashMap<>();
         final Map<String, Interaction> linkHandles = new HashMap<>();
         int divergenceEvents;
+        /** True once the model has diverged in this run (an exception or a listener event). */
+        boolean diverged;
         long nonFiniteSince = -1;
     }
 
@@ -598,6 +600,7 @@ class ApiSequenceFuzzTest {
             } catch (Throwable t) {
                 thrown = t;
             }
+            run.diverged |= thrown instanceof DivergenceException || run.divergenceEvents > 0 || m.isDiverged();
             String[] after = new String[1];
             Violation v = afterCall(m, run, c, i, thrown, before, after);
             if (v != null && ignored(v)) {
@@ -635,7 +638,8 @@ class ApiSequenceFuzzTest {
                 return new Violation(method(c) + " throws without a message", describe(thrown), i);
             }
             if (thrown instanceof IllegalArgumentException && c.argless) {
-                return new Violation(method(c) + " throws IllegalArgumentException", describe(thrown), i);
+                return new Violation(method(c) + " throws IllegalArgumentException"
+                        + (run.diverged ? " (after a divergence)" : ""), describe(thrown), i);
             }
             if (thrown instanceof IllegalArgumentException && c.names.length > 0) {
                 boolean named = false;
