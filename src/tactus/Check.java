@@ -34,6 +34,17 @@ final class Check {
         }
     }
 
+    /**
+     * An attractor's limit distance must be finite and &gt; 0: its force A/d^2 is unbounded as d goes to 0, so
+     * without a positive limit a close approach samples the singularity and flings the pair apart.
+     */
+    static void attractorLimit(String op, String element, double dLim) {
+        if (!(dLim > 0) || !Double.isFinite(dLim)) {
+            throw fail(op, element, "an Attractor3D needs a limit distance dLim > 0 (its force A/d^2 is unbounded as"
+                    + " d -> 0), got " + dLim);
+        }
+    }
+
     static void vector(String op, String element, String param, Vect3D v) {
         if (v == null) {
             throw fail(op, element, param + " must not be null");

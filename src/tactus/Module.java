@@ -26,8 +26,9 @@ public abstract class Module {
         }
     }
 
-    /** Validates a vector argument, building the error message (which names this module) only on failure. */
+    /** Validates a vector argument of a handle that is still part of its model, building the error message (which names this module) only on failure. */
     void checkVector(String op, String param, Vect3D v) {
+        checkValid();
         if (v == null || !v.isFinite()) {
             Check.vector(op, toString(), param, v);
         }
@@ -35,6 +36,7 @@ public abstract class Module {
 
     /** Validates a number argument, building the error message only on failure. */
     void checkFinite(String op, String param, double v) {
+        checkValid();
         if (!Double.isFinite(v)) {
             Check.finite(op, toString(), param, v);
         }

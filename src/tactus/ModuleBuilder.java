@@ -92,7 +92,17 @@ final class ModuleBuilder {
         Interaction h = c.dir.registerLink(c.model, name, id, kind);
         c.guard.afterChange(() -> c.topology.removeLink(id));
         c.topology.compileIfRunning();
+        if (kind == LinkKind.CONTACT3D && engine.linkDistance(id) == 0) {
+            System.err.println(coincidentContactWarning(name, c.dir.massName(a), c.dir.massName(b)));
+        }
         return h;
+    }
+
+    /** The warning printed once, when a Contact3D is added between two masses at exactly the same position. */
+    static String coincidentContactWarning(String link, String m1, String m2) {
+        return "Tactus: Contact3D \"" + link + "\" joins \"" + m1 + "\" and \"" + m2 + "\" at exactly the same"
+                + " position: at distance 0 a contact has no direction to push along, so it exerts no force until"
+                + " the masses separate";
     }
 
     /** @return the name of a mass handle of this model, for building a link from handles. */

@@ -128,7 +128,7 @@ final class ParamEditor {
         if (kind == LinkKind.PLANE_CONTACT3D) {
             Check.finite(op, element, "l0", len);
         } else if (kind == LinkKind.ATTRACTOR3D) {
-            Check.positive(op, element, "dLim", len);
+            Check.attractorLimit(op, element, len);
         } else {
             Check.nonNegative(op, element, "dist", len);
         }

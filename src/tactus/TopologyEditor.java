@@ -54,11 +54,15 @@ final class TopologyEditor {
         compileIfRunning();
     }
 
-    /** Turns a mass into a fixed point at its current position; its interactions stay attached. */
+    /**
+     * Turns a mass into a fixed point at its current position; its interactions stay attached. It cannot make a
+     * stable model unstable, so it is never refused.
+     */
     Ground3D makeFixed(int id) {
         engine.makeFixed(id);
         Ground3D h = (Ground3D) c.dir.storeMassHandle(c.model, id, MassKind.GROUND3D);
-        c.guard.afterChange(null);
+        // no stability check: fixing a mass removes a row and a column of the symmetric form of M^-1(K + 2Z),
+        // so by eigenvalue interlacing its largest eigenvalue cannot grow
         compileIfRunning();
         return h;
     }

@@ -149,4 +149,50 @@ class ContactGroupTest {
         assertTrue(m.getStabilityReport().lambda() > 4, "12 engaged contacts of K = 2 on masses < 10 are unstable");
         assertTrue(m.describeStability().contains("contact group of subset \"marbles\""), m.describeStability());
     }
+
+    /** Two masses 0.06 m apart at rest (REAL_UNITS), in contact through a group or an explicit Contact3D. */
+    private static PhysicalModel penetrating(boolean group, int rate) {
+        PhysicalModel m = new PhysicalModel(rate, 60, paramSystem.REAL_UNITS);
+        m.addMass3D("a", 2, new Vect3D(0, 0, 0), new Vect3D());
+        m.addMass3D("b", 2, new Vect3D(0.06, 0, 0), new Vect3D());
+        if (group) {
+            m.createMatSubset("s");
+            m.addMatToSubset("a", "s");
+            m.addMatToSubset("b", "s");
+            m.addContactGroup("s", 0.1, 1250, 0);
+        } else {
+            m.addContact3D("c", 0.1, 1250, 0, "a", "b");
+        }
+        m.init();
+        return m;
+    }
+
+    // REAL_UNITS: K = 1250 N/m, threshold 0.1 m, d = 0.06 m: |F| = K (thr - d) = 50 N at any rate. After a
+    // change from 1 kHz to 4 kHz the group must still push with 50 N, like the explicit Contact3D (issue #10 §1.4:
+    // it pushed with 800 N, its per-step stiffness left unscaled by the (4000/1000)^2 = 16 of the rate change).
+    @Test
+    void contactGroupKeepsItsForceInNewtonsAcrossARateChange() {
+        double expected = 1250 * (0.1 - 0.06);
+        for (boolean group : new boolean[] {false, true}) {
+            PhysicalModel m = penetrating(group, 1000);
+            m.computeStep();
+            assertEquals(-expected, m.getMatForce("a").x, 1e-9 * expected, (group ? "group" : "explicit") + " at 1 kHz");
+            m.setSimRate(4000);
+            m.setMatPosition("a", new Vect3D(0, 0, 0));
+            m.setMatPosition("b", new Vect3D(0.06, 0, 0));
+            m.computeStep();   // the masses move a little under the pending force: use the distance they reached
+            double d = m.getMatPosition("b").x - m.getMatPosition("a").x;
+            double f = 1250 * (0.1 - d);
+            assertEquals(expected, f, 0.01 * expected);
+            assertEquals(-f, m.getMatForce("a").x, 1e-9 * f, (group ? "group" : "explicit") + " at 4 kHz");
+            assertEquals(f, m.getMatForce("b").x, 1e-9 * f);
+        }
+        PhysicalModel g = penetrating(true, 1000);
+        PhysicalModel e = penetrating(false, 1000);
+        g.setSimRate(4000);
+        e.setSimRate(4000);
+        g.computeNSteps(200);
+        e.computeNSteps(200);
+        assertEquals(e.getMatPosition("a").x, g.getMatPosition("a").x, 0.0, "same trajectory at 4 kHz");
+    }
 }

@@ -117,7 +117,7 @@ class UnitsApiTest {
         m.addMass3D("a", 3, v(1, 0, 0), v(0, 0, 0));
         m.addOsc3D("o", 2, 0.3, 0.02, v(0, 1, 0), v(0, 0, 0));
         m.addSpringDamper3D("s", 1, 0.1, 0.01, "a", "g");
-        m.addAttractor3D("at", 0.25, 0.5, "a", "o");
+        m.addAttractor3D("at", 0.01, 0.5, "a", "o");
         m.setGravity(0.001);
         m.setFriction(0.002);
         assertEquals(0.1, m.getLinkStiffness("s"), 0.0);

@@ -124,6 +124,12 @@ class ValidationTest {
                 "new", "-0.25"));
         c.add(new Case("NaN attraction", m -> m.addAttractor3D("new", 0.1, NAN, "m1", "g"), "new", "NaN"));
         c.add(new Case("negative attractor limit", m -> m.addAttractor3D("new", -0.1, 1, "m1", "g"), "new", "-0.1"));
+        c.add(new Case("zero attractor limit", m -> m.addAttractor3D("new", 0, 1, "m1", "g"), "new", "dLim", "0.0"));
+        c.add(new Case("attractor limit set to zero", m -> m.setLinkDRest("att", 0), "att", "dLim", "0.0"));
+        c.add(new Case("attractor limit set to zero by handle",
+                m -> ((Attractor3D) m.getInteraction("att")).setLimit(0), "att", "dLim", "0.0"));
+        c.add(new Case("subset limit set to zero on an attractor", m -> m.changeDistParamOfSubset(0, "lmix"),
+                "att", "dLim", "0.0"));
         c.add(new Case("NaN plane position", m -> m.addPlaneContact("new", 0, 0.1, 0.01, 2, NAN, "m1"), "new", "NaN"));
         c.add(new Case("infinite plane l0", m -> m.addPlaneContact("new", INF, 0.1, 0.01, 2, 0, "m1"),
                 "new", "Infinity"));

@@ -6,7 +6,9 @@ package tactus.engine;
  * {@code d = |X1 - X2|} and {@code u = (X1 - X2)/d}, a link with scalar force {@code f}
  * adds {@code f u} to mass 1 and {@code -f u} to mass 2, so a negative {@code f} attracts.
  * Damping uses the link's own previous distance: {@code v = d(n) - d(n-1)}.
- * Coincident masses ({@code d = 0}) exchange no force, so no NaN can appear.
+ * Coincident masses ({@code d = 0}) exchange no force, so no NaN can appear: a contact between them stays
+ * inert until they separate, and a pair crossing exactly d = 0 passes through (the facade warns when a
+ * Contact3D is added between coincident masses).
  */
 final class LinkKernels {
     private LinkKernels() {

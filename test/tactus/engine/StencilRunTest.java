@@ -65,24 +65,106 @@ class StencilRunTest {
         assertEquals(EnergyMeter.discreteEnergy(plain.plan()), EnergyMeter.discreteEnergy(runs.plan()), 1e-12);
     }
 
+    /**
+     * A link inside a stencil run is removed from a running sheet, after {@code before} steps. The reference is
+     * a sheet built without that link, given the running sheet's exact state at the removal point (positions,
+     * previous positions, pending forces and every remaining link's damper history, copied bit for bit from the
+     * plan as it was just before the removal). From there both must evolve bit-identically: the removal
+     * recompiles the plan, which must carry every mass's state and every surviving link's history across, and
+     * the surviving links form the same runs in the same order as in the sheet built without the link, so every
+     * sum is added in the same order. The pending forces of the running sheet still contain the removed link's
+     * last contribution (it was computed before the removal, and the scheme applies forces one step later);
+     * copying them makes the reference apply it too.
+     */
     @Test
     void removingALinkInsideARunMatchesAModelBuiltWithoutIt() {
-        int victim = 517;
-        Engine running = sheet(40, 12, true, -1);
-        Engine fresh = sheet(40, 12, true, victim);
-        // The link ids of 'running' are in insertion order; link 'victim' is the one 'fresh' never had.
-        running.removeLink(victim);
-        double[] a = new double[3];
-        double[] b = new double[3];
-        for (int step = 0; step < 3000; step++) {
-            running.step();
-            fresh.step();
+        int[][] cases = {{517, 1}, {517, 250}, {40, 37}, {1000, 999}};   // {victim link id, steps before removal}
+        for (int[] c : cases) {
+            int victim = c[0];
+            int before = c[1];
+            Engine running = sheet(40, 12, true, -1);
+            Engine fresh = sheet(40, 12, true, victim);
+            running.step(before);
+            StepPlan at = running.plan();
+            LinkBatch batch = at.batches[LinkKind.SPRING_DAMPER3D.ordinal()];
+            int j = indexOf(batch, victim);
+            if (j < 0) {
+                batch = at.batches[LinkKind.SPRING3D.ordinal()];
+                j = indexOf(batch, victim);
+            }
+            assertTrue(j >= 0 && batch.runOf[j] >= 0, "link " + victim + " must lie inside a stencil run");
+            copyState(at, victim, fresh.plan());
+            running.removeLink(victim);
+            assertTrue(running.stencilRunCount() >= 3, "the sheet still compiles into runs");
+            double[] a = new double[3];
+            double[] b = new double[3];
+            for (int block = 0; block < 30; block++) {
+                running.step(100);
+                fresh.step(100);
+                for (int id = 0; id < 480; id++) {
+                    running.position(id, a);
+                    fresh.position(id, b);
+                    for (int k = 0; k < 3; k++) {
+                        assertEquals(b[k], a[k], 0.0, "victim " + victim + " removed after " + before
+                                + " steps: mass " + id + " axis " + k + " after " + (100 * (block + 1)) + " more");
+                    }
+                }
+            }
+            // and the removal changed something: the full sheet, stepped as long, is elsewhere
+            Engine full = sheet(40, 12, true, -1);
+            full.step(before + 3000);
+            double moved = 0;
+            for (int id = 0; id < 480; id++) {
+                full.position(id, a);
+                running.position(id, b);
+                moved = Math.max(moved, Math.abs(a[2] - b[2]));
+            }
+            assertTrue(moved > 1e-6, "removing link " + victim + " made no difference: " + moved);
         }
-        for (int id = 0; id < 480; id++) {
-            running.position(id, a);
-            fresh.position(id, b);
-            for (int c = 0; c < 3; c++) {
-                assertEquals(b[c], a[c], 0.0, "mass " + id + " axis " + c);
+    }
+
+    private static int indexOf(LinkBatch b, int linkId) {
+        if (b == null) {
+            return -1;
+        }
+        for (int j = 0; j < b.n; j++) {
+            if (b.id[j] == linkId) {
+                return j;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * Copies the state of plan {@code from} into {@code to}, whose scene is the same without link {@code victim}
+     * (so link ids above the victim are one lower in {@code to}). Mass ids are the same in both.
+     */
+    private static void copyState(StepPlan from, int victim, StepPlan to) {
+        int[] slotOf = new int[480];
+        for (int s = 0; s < from.nMass; s++) {
+            slotOf[from.massId[s]] = s;
+        }
+        assertEquals(from.nMass, to.nMass);
+        for (int s = 0; s < to.nMass; s++) {
+            int f = slotOf[to.massId[s]];
+            to.x[s] = from.x[f];
+            to.y[s] = from.y[f];
+            to.z[s] = from.z[f];
+            to.px[s] = from.px[f];
+            to.py[s] = from.py[f];
+            to.pz[s] = from.pz[f];
+            to.fx[s] = from.fx[f];
+            to.fy[s] = from.fy[f];
+            to.fz[s] = from.fz[f];
+        }
+        for (LinkKind kind : new LinkKind[] {LinkKind.SPRING_DAMPER3D, LinkKind.SPRING3D}) {
+            LinkBatch src = from.batches[kind.ordinal()];
+            LinkBatch dst = to.batches[kind.ordinal()];
+            for (int j = 0; j < dst.n; j++) {
+                int id = dst.id[j] >= victim ? dst.id[j] + 1 : dst.id[j];
+                int o = indexOf(src, id);
+                assertTrue(o >= 0, "link " + id);
+                dst.setPrev(j, src.prev(o));
             }
         }
     }

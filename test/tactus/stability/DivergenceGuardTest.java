@@ -14,7 +14,7 @@ import tactus.Vect3D;
 /**
  * Regression tests for five engine defects found by the hard-case work (and fixed in src/ since): the subnormal
  * flush fed energy into decaying models, forces from a diverged state survived the documented repair, a new check
- * interval waited for the old countdown, the energy of a switched-off attractor at distance 0 was NaN, and the
+ * interval waited for the old countdown, the energy of a switched-off attractor at distance 0 was NaN (dLim = 0 is now rejected), and the
  * flush skipped an axis that another module kept busy. Each comment gives the old cause; each test states the
  * correct behaviour.
  */
@@ -66,10 +66,40 @@ class DivergenceGuardTest {
         pm.setLinkStiffness("stiff", 1.0);   // repair the parameter ...
         pm.setMatPosition("bob", new Vect3D(1.05, 0, 0));   // ... and the state: at rest, 0.05 from rest length
         pm.clearDivergence();
+        long stepsAtRepair = pm.getStepCount();
+        // The repaired model must restart exactly like a model freshly built in the repaired state: at rest, so
+        // its first step moves nothing (no force computed yet: x stays 1.05 bit for bit), and from then on the
+        // same positions, bit for bit.
         pm.computeStep();
-        double x = pm.getMatPosition("bob").x;
-        assertEquals(1.05, x, 0.1, "the repaired model (K/M 0.5, at rest 0.05 off) jumped to x = " + x
-                + " on its first step: pending force " + pm.getMatForce("bob"));
+        assertEquals(1.05, pm.getMatPosition("bob").x, 0.0, "first step after the repair, pending force "
+                + pm.getMatForce("bob"));
+        PhysicalModel twin = new PhysicalModel(44100);
+        twin.setStabilityPolicy(StabilityPolicy.OFF);
+        twin.addGround3D("anchor", new Vect3D());
+        twin.addMass3D("bob", 2, new Vect3D(1.05, 0, 0), new Vect3D());
+        twin.addSpringDamper3D("stiff", 1.0, 1.0, 0, "anchor", "bob");
+        twin.init();
+        twin.computeStep();
+        for (int i = 0; i < 200; i++) {
+            assertEquals(twin.getMatPosition("bob").x, pm.getMatPosition("bob").x, 0.0, "step " + i
+                    + " after the repair");
+            assertEquals(twin.getMatForce("bob").x, pm.getMatForce("bob").x, 0.0, "force, step " + i);
+            twin.computeStep();
+            pm.computeStep();
+        }
+        // The closed form of the scheme from rest at 1 + e: x(n) - 1 = A cos(ω (n - 1/2)) (x(0) = x(1)), cos ω = 1 - K/(2M),
+        // A = e / cos(ω/2). Its peak is reached, and never exceeded (no energy from the divergence).
+        double omega = Math.acos(1 - 1.0 / (2 * 2));
+        double amplitude = 0.05 / Math.cos(omega / 2);
+        double peak = 0;
+        for (int i = 0; i < 200; i++) {
+            pm.computeStep();
+            double x = pm.getMatPosition("bob").x;
+            assertEquals(amplitude * Math.cos(omega * (pm.getStepCount() - stepsAtRepair - 0.5)), x - 1.0, 1e-12,
+                    "step " + (pm.getStepCount() - stepsAtRepair) + " after the repair");
+            peak = Math.max(peak, Math.abs(x - 1.0));
+        }
+        assertEquals(amplitude, peak, 1e-3 * amplitude);
     }
 
     // Was: the countdown to the next scan was re-armed only after a scan, so setDivergenceCheckInterval(1) took
@@ -90,18 +120,20 @@ class DivergenceGuardTest {
     }
 
     // Was: EnergyMeter added -A / max(d, dLim) for every attractor: 0/0 = NaN for an attractor switched off
-    // (A = 0) between coincident masses, while the kernel itself skips d = 0. Now: finite. (dLim = 0 itself is
-    // refused since; the coincident pair below the limit still reaches the energy meter.)
+    // (A = 0) with dLim = 0 between coincident masses, while the kernel itself skips d = 0. dLim = 0 is now
+    // rejected (the force is unbounded as d -> 0), so the case is the closest legal one: a switched-off attractor
+    // with the smallest positive limit between coincident masses. Its energy term is -0 / dLim = 0 exactly.
     @Test
-    @DisplayName("getTotalEnergy() is finite for a zero attractor between coincident masses")
+    @DisplayName("getTotalEnergy() is 0 for a zero attractor with the smallest dLim between coincident masses")
     void attractorEnergyNaN() {
         PhysicalModel pm = new PhysicalModel(1000);
         pm.addMass3D("a", 1, new Vect3D(), new Vect3D());
         pm.addMass3D("b", 1, new Vect3D(), new Vect3D());
-        pm.addAttractor3D("off", 1e-9, 0, "a", "b");
+        assertThrows(IllegalArgumentException.class, () -> pm.addAttractor3D("off", 0, 0, "a", "b"));
+        pm.addAttractor3D("off", Double.MIN_VALUE, 0, "a", "b");
         pm.init();
         pm.computeNSteps(10);
-        assertTrue(Double.isFinite(pm.getTotalEnergy()), "total energy " + pm.getTotalEnergy());
+        assertEquals(0.0, pm.getTotalEnergy(), 0.0, "total energy");
     }
 
     // Was: the whole-axis flush only fired when EVERY coordinate of the axis was below 1e-150. In the paper's

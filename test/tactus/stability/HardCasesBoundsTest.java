@@ -479,7 +479,7 @@ class HardCasesBoundsTest {
         assertEquals(theory, r1.lambda(), 1e-6 * theory, "Lanczos vs theory");
         assertEquals(8.0, r1.gershgorinBound(), 1e-12, "Gershgorin: 4 neighbours x 2");
         double limit = 4 / r1.lambda();
-        assertEquals(0.50281, limit, 1e-5);
+        assertEquals(4 / theory, limit, 1e-6 * limit);
 
         PhysicalModel in = membrane(n, 0.99 * limit, 4);
         assertEquals("", StabilityFixtures.captureStdErr(in::init));

@@ -146,6 +146,7 @@ class HardCasesContactTest {
         pm.setMatPosition("left", new Vect3D(0, 0, 0));
         pm.setMatPosition("right", new Vect3D(0, 0, 0));
         pm.computeNSteps(100);
+        assertEquals(0.0, pm.getMatForce("left").norm(), 0.0, "no direction, no force");
         StabilityFixtures.assertFiniteState(pm, "coincident in contact");
         assertEquals(0.0, pm.getLinkDistance("touch"), 0.0);
         pm.setMatPosition("right", new Vect3D(0, 1e-9, 0));
@@ -153,6 +154,33 @@ class HardCasesContactTest {
         StabilityFixtures.assertFiniteState(pm, "separating");
         assertTrue(pm.getLinkDistance("touch") >= 0.125, "pushed apart: " + pm.getLinkDistance("touch"));
         assertTrue(pm.getMatPosition("left").y < 0 && pm.getMatPosition("right").y > 0);
+    }
+
+    // The documented diagnosis for a contact with no direction: adding a Contact3D between two masses at exactly
+    // the same position prints one warning on System.err that names the contact and both masses and says that it
+    // exerts no force until they separate. A contact between distinct positions, even one ulp apart, adds silently.
+    @Test
+    @DisplayName("adding a Contact3D between coincident masses warns once, naming the contact and the masses")
+    void contactBetweenCoincidentMassesIsDiagnosed() {
+        PhysicalModel pm = new PhysicalModel(1000);
+        pm.addMass3D("left", 1.0, new Vect3D(0.5, 0.5, 0.5), new Vect3D());
+        pm.addMass3D("right", 1.0, new Vect3D(0.5, 0.5, 0.5), new Vect3D());
+        pm.addMass3D("apart", 1.0, new Vect3D(0, 0, 0), new Vect3D());
+        String err = StabilityFixtures.captureStdErr(() -> pm.addContact3D("touch", 0.1, 0.01, 0.0, "left", "right"));
+        assertEquals(1, err.lines().count(), err);
+        assertTrue(err.contains("Contact3D \"touch\"") && err.contains("\"left\"") && err.contains("\"right\"")
+                && err.contains("distance 0") && err.contains("no force"), err);
+        assertEquals("", StabilityFixtures.captureStdErr(
+                () -> pm.addContact3D("fine", 0.1, 0.01, 0.0, "left", "apart")));
+        pm.init();
+        pm.computeNSteps(10);
+        assertEquals(0.0, pm.getLinkDistance("touch"), 0.0, "it exerts no force: they stay coincident");
+        StabilityFixtures.assertFiniteState(pm, "coincident contact");
+
+        PhysicalModel ulp = new PhysicalModel(1000);
+        ulp.addMass3D("a", 1.0, new Vect3D(0.5, 0.5, 0.5), new Vect3D());
+        ulp.addMass3D("b", 1.0, new Vect3D(0.5, 0.5, Math.nextUp(0.5)), new Vect3D());
+        assertEquals("", StabilityFixtures.captureStdErr(() -> ulp.addContact3D("close", 0.1, 0.01, 0.0, "a", "b")));
     }
 
     // ------------------------------------------------------------------ fast impact on a stiff plane
@@ -298,11 +326,10 @@ class HardCasesContactTest {
     // so each pass through the dLim sphere can change the energy by about F(dLim) times the relative
     // displacement per step at each of the two crossings: the bound checked per pass is
     // 2 (A/dLim^2) max|Δd per step|. The binding energy is only A/2 = 5e-6 and such errors (~2e-5) can unbind
-    // a pair, which then drifts apart: documented, finite. With dLim = 0 (a head-on pair) the documented failure:
-    // the analyser evaluates 2A/d^3 at the current distance and sees nothing, the approach samples the
-    // singularity and the pair is flung apart with thousands of times its binding energy (still finite).
+    // a pair, which then drifts apart: documented, finite. dLim = 0, where the approach would sample the
+    // singularity and fling the pair apart, is rejected.
     @Test
-    @DisplayName("attractor close approach (dLim > 0): finite, energy change per pass bounded; dLim = 0 flings (documented)")
+    @DisplayName("attractor close approach (dLim > 0): finite, energy change per pass bounded; dLim = 0 is rejected")
     void attractorCloseApproach() {
         double a = 1e-5;
         double dLim = 0.1;
@@ -355,14 +382,18 @@ class HardCasesContactTest {
         assertTrue(passes >= 10, "passes " + passes);
         assertTrue(worstRatio <= 1.0, "energy change per pass above the bound: " + worstRatio);
 
-        // dLim = 0 would leave the force unbounded as the pair closes in (it flung such a pair apart): refused.
+        // dLim = 0 would let a close approach sample the singularity (the analyser, judging 2A/d^3 at the current
+        // distance, would see nothing): it is rejected, naming the attractor and the value, and nothing is added.
         PhysicalModel bare = new PhysicalModel(1000);
         bare.addMass3D("p", 1, new Vect3D(-1, 0, 0), new Vect3D());
         bare.addMass3D("q", 1, new Vect3D(1, 0, 0), new Vect3D());
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> bare.addAttractor3D("bare", 0, a, "p", "q"));
-        assertTrue(e.getMessage().contains("\"bare\"") && e.getMessage().contains("dLim"), e.getMessage());
+        assertTrue(e.getMessage().contains("\"bare\"") && e.getMessage().contains("dLim")
+                && e.getMessage().contains("0.0"), e.getMessage());
         assertEquals(0, bare.getNumberOfLinks());
+        assertThrows(IllegalArgumentException.class, () -> pm.setLinkDRest("headOn", 0));
+        assertEquals(dLim, pm.getLinkDRest("headOn"), 0.0);
     }
 
     /** Kinetic plus attraction energy of one pair: ½ M v² each (M 1) minus A / max(d, dLim). */

@@ -149,11 +149,25 @@ class TuningTest {
             double t = Measure.decayTime60(y, 1, n, FS);
             assertTrue(relErr(t, t60) < 1e-6, f + " Hz, T60 " + t60 + ": measured T60 " + t + " s");
         }
-        // the naive mapping of the same 5 kHz / 0.3 s tone: numerics §1.4 gives 5113.66 Hz and 0.2998 s
+        // the naive mapping of the same 5 kHz / 0.3 s tone (numerics §1.4: about 5113.66 Hz and 0.2998 s):
+        // k = (ω² + σ²)/fs², z = 2σ/fs with σ = ln(1000)/T60, written out here; the scheme's recurrence
+        // y(n+1) = (2 - k - z) y(n) - (1 - z) y(n-1) has poles r e^{±iθ}, r = sqrt(1 - z), cos θ = (2 - k - z)/(2r),
+        // so it rings at θ fs/2π and decays by 60 dB in ln(1000)/(-ln r) steps
+        double sigma = Math.log(1000) / 0.3;
+        double w = 2 * Math.PI * 5000;
+        double k = (w * w + sigma * sigma) / (FS * FS);
+        double z = 2 * sigma / FS;
         double[] naive = Tuning.naiveCoefficients(5000, 0.3, FS);
+        assertEquals(k, naive[0], 1e-15 * k);
+        assertEquals(z, naive[1], 1e-15 * z);
+        double r = Math.sqrt(1 - z);
+        double naivePitch = Math.acos((2 - k - z) / (2 * r)) * FS / (2 * Math.PI);
+        double naiveT60 = Math.log(1000) / (-Math.log(r)) / FS;
         double[] y = ringOsc1D(naive[0], naive[1], FS, (int) (0.45 * FS));
-        assertEquals(5113.66, Measure.frequency(y, FS), 0.02);
-        assertEquals(0.2998, Measure.decayTime60(y, 1, y.length - 1, FS), 1e-4);
+        assertEquals(naivePitch, Measure.frequency(y, FS), 1e-6 * naivePitch);
+        assertEquals(naiveT60, Measure.decayTime60(y, 1, y.length - 1, FS), 1e-6 * naiveT60);
+        assertEquals(5113.66, naivePitch, 0.01, "numerics §1.4");
+        assertTrue(naivePitch - 5000 > 100, "the naive mapping is sharp");
     }
 
     // ------------------------------------------------------------------ strings
@@ -231,7 +245,7 @@ class TuningTest {
         double below = Tuning.stringStiffnessForFundamental(4500, 4, FS);
         assertTrue(below < Tuning.stringStabilityLimit(4));
         assertEquals(2.0, Tuning.stringStabilityLimit(1), 1e-12);
-        assertEquals(1.0002, Tuning.stringStabilityLimit(100), 1e-4);
+        assertEquals(1 / Math.pow(Math.cos(Math.PI / (2 * 101)), 2), Tuning.stringStabilityLimit(100), 1e-15);
         e = assertThrows(IllegalArgumentException.class, () -> Tuning.stringStiffnessForFundamental(30000, 4, FS));
         assertTrue(e.getMessage().contains("Nyquist"), e.getMessage());
         e = assertThrows(IllegalArgumentException.class, () -> Tuning.stringMassesForFundamental(12000, FS));
