@@ -184,7 +184,7 @@ public class TopoGenerator {
             throw Check.fail(op, matPrefix, "the mass subset and the link subset need different names, both are \""
                     + matSubset + "\"");
         }
-        synchronized (model.getLock()) {
+        locked(() -> {
             for (int i = 0; i < dimX; i++) {
                 for (int j = 0; j < dimY; j++) {
                     for (int k = 0; k < dimZ; k++) {
@@ -216,7 +216,7 @@ public class TopoGenerator {
             }
             generated.clear();
             generated.addAll(made);
-        }
+        });
     }
 
     /**
@@ -231,7 +231,7 @@ public class TopoGenerator {
         Check.finite("TopoGenerator.conditionAlongSphere", matPrefix, "radius", radius);
         Vect3D centre = TopoGrid.transform(rotationMatrix(), (dimX - 1) * dist / 2.0, (dimY - 1) * dist / 2.0,
                 (dimZ - 1) * dist / 2.0, tX, tY, tZ);
-        synchronized (model.getLock()) {
+        locked(() -> {
             List<String> keep = new ArrayList<>();
             Vect3D p = new Vect3D();
             for (String n : generated) {
@@ -247,6 +247,24 @@ public class TopoGenerator {
             }
             generated.clear();
             generated.addAll(keep);
+        });
+    }
+
+    /** Runs a sequence of model calls holding the model's lock, whatever form getLock() returns. */
+    private void locked(Runnable body) {
+        Object lock = model.getLock();
+        if (lock instanceof java.util.concurrent.locks.Lock) {
+            java.util.concurrent.locks.Lock l = (java.util.concurrent.locks.Lock) lock;
+            l.lock();
+            try {
+                body.run();
+            } finally {
+                l.unlock();
+            }
+        } else {
+            synchronized (lock) {
+                body.run();
+            }
         }
     }
 

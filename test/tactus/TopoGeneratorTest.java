@@ -46,9 +46,9 @@ class TopoGeneratorTest {
         return (int) ((prod - (long) nx * ny * nz) / 2);
     }
 
-    /** The two mass names of link i (one place to change once links can share names: getLinkMat1NameAt / getLinkMat2NameAt). */
+    /** The two mass names of link i, by index (link names repeat in the paper's naming). */
     static String[] ends(PhysicalModel m, int i) {
-        return m.getLinkMatNames(m.getLinkNameAt(i));
+        return tactus.io.LinkEnds.of(m, i);
     }
 
     static int[] coords(String name) {

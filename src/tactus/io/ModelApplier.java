@@ -22,7 +22,7 @@ final class ModelApplier {
     }
 
     void apply(ModelFile f, PhysicalModel target) {
-        synchronized (target.getLock()) {
+        ModelLocks.locked(target, () -> {
             checkUnits(f, target);
             Set<String> outside = checkNames(f, target);
             PhysicalModel scratch = new PhysicalModel(target.getSimRate(), target.getDisplayRate(),
@@ -33,7 +33,8 @@ final class ModelApplier {
             }
             new Build(f, scratch).run();
             new Build(f, target).runOrUndo();
-        }
+            return null;
+        });
     }
 
     private void checkUnits(ModelFile f, PhysicalModel target) {
@@ -164,6 +165,7 @@ final class ModelApplier {
                     m.addOsc3D(s.name, s.mass, s.stiffness, s.damping, p, v);
                     break;
                 case "Mass3DSimple":
+                    // MERGE: m.addMass3DSimple(s.name, s.mass, p, v) once the model has it.
                     throw new ModelFileException(source, s.line, s.element, "Mass3DSimple \"" + s.name
                             + "\" cannot be created yet: this version of Tactus has no addMass3DSimple", null);
                 default:

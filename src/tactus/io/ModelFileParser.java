@@ -23,8 +23,8 @@ final class ModelFileParser {
         readGlobal(section(root, "global"), f);
         XmlNode mat = section(root, "MAT");
         for (XmlNode group : mat.children) {
-            if (!ModuleTypes.MASS_GROUPS.contains(group.name)) {
-                throw fail(group, "unknown mass type \"" + group.name + "\"; known types: " + ModuleTypes.MASS_GROUPS);
+            if (!FileTypes.MASS_GROUPS.contains(group.name)) {
+                throw fail(group, "unknown mass type \"" + group.name + "\"; known types: " + FileTypes.MASS_GROUPS);
             }
             for (XmlNode e : group.children) {
                 f.masses.add(readMass(group.name, e));
@@ -32,9 +32,9 @@ final class ModelFileParser {
         }
         XmlNode link = section(root, "Link");
         for (XmlNode group : link.children) {
-            if (!ModuleTypes.LINK_GROUPS.contains(group.name)) {
+            if (!FileTypes.LINK_GROUPS.contains(group.name)) {
                 throw fail(group, "unknown interaction type \"" + group.name + "\"; known types: "
-                        + ModuleTypes.LINK_GROUPS);
+                        + FileTypes.LINK_GROUPS);
             }
             for (XmlNode e : group.children) {
                 f.links.add(readLink(group.name, e));
@@ -97,17 +97,17 @@ final class ModelFileParser {
         m.x = number(e, "initPos.x");
         m.y = number(e, "initPos.y");
         m.z = number(e, "initPos.z");
-        if (ModuleTypes.isInertial(type)) {
+        if (FileTypes.isInertial(type)) {
             m.mass = number(e, "mass");
             m.vx = optionalNumber(e, "posR.x");
             m.vy = optionalNumber(e, "posR.y");
             m.vz = optionalNumber(e, "posR.z");
         }
-        if (ModuleTypes.isOscillator(type)) {
+        if (FileTypes.isOscillator(type)) {
             m.stiffness = number(e, "stiffness");
             m.damping = number(e, "damping");
         }
-        if (ModuleTypes.isInput(type) && e.attributes.containsKey("smoothing")) {
+        if (FileTypes.isInput(type) && e.attributes.containsKey("smoothing")) {
             m.smoothing = integer(e, "smoothing");
         }
         return m;
@@ -121,7 +121,7 @@ final class ModelFileParser {
         l.name = text(e, "name");
         l.index = optionalIndex(e);
         l.m1 = text(e, "m1");
-        l.m2 = ModuleTypes.isSingleMass(type) ? l.m1 : text(e, "m2");
+        l.m2 = FileTypes.isSingleMass(type) ? l.m1 : text(e, "m2");
         switch (type) {
             case "Damper3D":
                 l.damping = number(e, "damping");

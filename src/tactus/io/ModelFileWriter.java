@@ -39,7 +39,7 @@ final class ModelFileWriter {
         leaf("units", "paramSystem", f.paramSystem, "simRate", Integer.toString(f.simRate));
         close();
         open("MAT");
-        for (String type : ModuleTypes.MASS_GROUPS) {
+        for (String type : FileTypes.MASS_GROUPS) {
             List<String[]> members = new ArrayList<>();
             for (MassSpec m : f.masses) {
                 if (m.type.equals(type)) {
@@ -50,7 +50,7 @@ final class ModelFileWriter {
         }
         close();
         open("Link");
-        for (String type : ModuleTypes.LINK_GROUPS) {
+        for (String type : FileTypes.LINK_GROUPS) {
             List<String[]> members = new ArrayList<>();
             for (LinkSpec l : f.links) {
                 if (l.type.equals(type)) {
@@ -69,8 +69,8 @@ final class ModelFileWriter {
     private static String[] massAttributes(MassSpec m) {
         List<String> a = new ArrayList<>();
         a.add(Integer.toString(m.index));
-        boolean inertial = ModuleTypes.isInertial(m.type);
-        boolean osc = ModuleTypes.isOscillator(m.type);
+        boolean inertial = FileTypes.isInertial(m.type);
+        boolean osc = FileTypes.isOscillator(m.type);
         if (osc) {
             add(a, "damping", num(m.damping));
         }

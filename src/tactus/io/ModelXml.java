@@ -71,7 +71,7 @@ public final class ModelXml {
             throw new IllegalArgumentException("ModelXml.write: the model must not be null");
         }
         try {
-            ModelFileWriter.write(ModelSnapshot.of(model), rootNameFor(rootName), out);
+            ModelFileWriter.write(ModelCapture.of(model), rootNameFor(rootName), out);
         } catch (XMLStreamException e) {
             throw new UncheckedIOException("cannot write the model as XML: " + e.getMessage(), new IOException(e));
         }

@@ -210,6 +210,31 @@ class ModelXmlTest {
     }
 
     @Test
+    void aGeneratedBeamRoundTripsWithItsRepeatedLinkNames(@TempDir Path dir) {
+        PhysicalModel original = new PhysicalModel(1000, 50);
+        tactus.TopoGenerator q = new tactus.TopoGenerator(original, "mass", "spring");
+        q.setDim(4, 2, 3, 1);
+        q.setParams(1, 0.01, 0.001);
+        q.setGeometry(2, 2);
+        q.addBoundaryCondition(tactus.Bound.Z_LEFT);
+        q.generate();
+        original.triggerForceImpulse("mass_3_1_2", 0.5, 0, 0);
+        File file = dir.resolve("beam.xml").toFile();
+        ModelXml.save(original, file);
+        PhysicalModel loaded = new PhysicalModel(1000, 50);
+        ModelXml.load(file, loaded);
+        assertEquals(original.getNumberOfLinks(), loaded.getNumberOfLinks());
+        for (int i = 0; i < original.getNumberOfLinks(); i++) {
+            assertEquals(original.getLinkNameAt(i), loaded.getLinkNameAt(i));
+            assertArrayEquals(LinkEnds.of(original, i), LinkEnds.of(loaded, i), "link " + i);
+            assertEquals(original.getLinkDRestAt(i), loaded.getLinkDRestAt(i), 0.0, "link " + i);
+        }
+        original.init();
+        loaded.triggerForceImpulse("mass_3_1_2", 0.5, 0, 0);
+        compareTrajectories(original, loaded, 400, true);
+    }
+
+    @Test
     void realUnitsRoundTripStaysWithinRounding(@TempDir Path dir) {
         PhysicalModel original = everyKind(2000, paramSystem.REAL_UNITS, 5);
         File file = dir.resolve("real.xml").toFile();

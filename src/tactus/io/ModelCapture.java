@@ -9,49 +9,52 @@ import tactus.Vect3D;
  * Reads a whole model into a {@link ModelFile}, by index, under the model's lock. This is the one
  * place that knows which public calls give a module's type, ends and parameters.
  */
-final class ModelSnapshot {
-    private ModelSnapshot() {
+final class ModelCapture {
+    private ModelCapture() {
     }
 
     static ModelFile of(PhysicalModel model) {
+        return ModelLocks.locked(model, () -> read(model));
+    }
+
+    private static ModelFile read(PhysicalModel model) {
         ModelFile f = new ModelFile();
-        synchronized (model.getLock()) {
-            f.gravity = model.getGravity();
-            f.friction = model.getFriction();
-            Vect3D d = model.getGravityDirection();
-            f.dirX = d.x;
-            f.dirY = d.y;
-            f.dirZ = d.z;
-            f.paramSystem = model.getParamSystem().name();
-            f.simRate = model.getSimRate();
-            for (int i = 0; i < model.getNumberOfMats(); i++) {
-                f.masses.add(mass(model, i));
-            }
-            for (int i = 0; i < model.getNumberOfLinks(); i++) {
-                f.links.add(link(model, i));
-            }
+        f.gravity = model.getGravity();
+        f.friction = model.getFriction();
+        Vect3D d = model.getGravityDirection();
+        f.dirX = d.x;
+        f.dirY = d.y;
+        f.dirZ = d.z;
+        f.paramSystem = model.getParamSystem().name();
+        f.simRate = model.getSimRate();
+        for (int i = 0; i < model.getNumberOfMats(); i++) {
+            f.masses.add(mass(model, i));
+        }
+        for (int i = 0; i < model.getNumberOfLinks(); i++) {
+            f.links.add(link(model, i));
         }
         return f;
     }
 
     private static MassSpec mass(PhysicalModel model, int i) {
         MassSpec s = new MassSpec();
-        s.type = ModuleTypes.massType(model, i);
+        s.type = FileTypes.massType(model, i);
         s.name = model.getMatNameAt(i);
         s.index = i;
         Vect3D p = model.getMatPosAt(i);
         s.x = p.x;
         s.y = p.y;
         s.z = p.z;
-        if (ModuleTypes.isInertial(s.type)) {
+        if (FileTypes.isInertial(s.type)) {
             s.mass = model.getMatMassAt(i);
+            // MERGE: where the model has getMatDelayedPosAt(i), encode from the exact delayed position instead.
             Vect3D v = model.getMatVelAt(i);
             double fs = model.getSimRate();
             s.vx = VelocityCodec.encode(p.x, v.x, fs);
             s.vy = VelocityCodec.encode(p.y, v.y, fs);
             s.vz = VelocityCodec.encode(p.z, v.z, fs);
         }
-        if (ModuleTypes.isOscillator(s.type)) {
+        if (FileTypes.isOscillator(s.type)) {
             s.stiffness = model.getMatStiffnessAt(i);
             s.damping = model.getMatDampingAt(i);
         }
@@ -60,10 +63,13 @@ final class ModelSnapshot {
 
     private static LinkSpec link(PhysicalModel model, int i) {
         LinkSpec s = new LinkSpec();
-        s.type = ModuleTypes.linkType(model, i);
+        s.type = FileTypes.linkType(model, i);
         s.name = model.getLinkNameAt(i);
         s.index = i;
-        // By name until the model offers the ends by index (getLinkMat1NameAt / getLinkMat2NameAt).
+        // MERGE: by name until the model offers the ends by index; once interaction names can repeat this
+        // must become getLinkMat1NameAt(i) / getLinkMat2NameAt(i) (and the plane and attractor getters below
+        // getPlaneOrientationAt(i) / getPlanePositionAt(i) and an attraction getter by index), or a repeated
+        // name would save the first link's ends and parameters for every link of that name.
         String[] ends = model.getLinkMatNames(s.name);
         s.m1 = ends[0];
         s.m2 = ends[1];

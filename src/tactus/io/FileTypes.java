@@ -8,7 +8,7 @@ import tactus.PhysicalModel;
  * The module type names of the file format, in the order the paper's engine writes its groups, and
  * the one place that turns a model's type (a String label today, a module-type enum later) into them.
  */
-final class ModuleTypes {
+final class FileTypes {
     /** Mass groups of the {@code MAT} section; PosInput3D is a Tactus addition at the end. */
     static final List<String> MASS_GROUPS = Arrays.asList("Ground1D", "Ground3D", "HapticInput3D", "Mass1D",
             "Mass2DPlane", "Mass3D", "Mass3DSimple", "Osc1D", "Osc3D", "PosInput3D");
@@ -16,7 +16,7 @@ final class ModuleTypes {
     static final List<String> LINK_GROUPS = Arrays.asList("Damper3D", "Bubble3D", "Contact3D", "PlaneContact3D",
             "Rope3D", "Spring3D", "SpringDamper1D", "SpringDamper3D", "Attractor3D");
 
-    private ModuleTypes() {
+    private FileTypes() {
     }
 
     /** @return the file type name of mass {@code i} (works whether the model returns a String or an enum). */
