@@ -14,7 +14,8 @@ import tactus.io.ModelXml;
  * loader.loadModel(dataPath("BeamModel.xml"), other);
  * </pre>
  *
- * <p>Relative file names are taken in the sketch folder. Unlike the original, which printed
+ * <p>Outside Processing, use {@link tactus.io.ModelXml} directly: it needs no {@code PApplet}.
+ * Relative file names are taken in the sketch folder. Unlike the original, which printed
  * "oh no." and returned false after a partial load, a load that fails throws a
  * {@link tactus.io.ModelFileException} naming the line and the element, and leaves the model as it was.
  */

@@ -39,7 +39,7 @@ final class ModelApplier {
 
     private void checkUnits(ModelFile f, PhysicalModel target) {
         if (f.paramSystem != null && !f.paramSystem.equals(target.getParamSystem().name())) {
-            throw new ModelFileException(source, -1, "units", "the file was written in " + f.paramSystem
+            throw new ModelFileException(source, f.unitsLine, "units", "the file was written in " + f.paramSystem
                     + " but the model uses " + target.getParamSystem().name()
                     + "; load it into a model created with paramSystem." + f.paramSystem, null);
         }
@@ -129,7 +129,7 @@ final class ModelApplier {
                     m.setGravityDirection(new Vect3D(f.dirX, f.dirY, f.dirZ));
                 }
             } catch (RuntimeException e) {
-                throw new ModelFileException(source, -1, "global", e.getMessage(), e);
+                throw new ModelFileException(source, f.globalLine, "global", e.getMessage(), e);
             }
         }
 

@@ -12,6 +12,9 @@ final class ModelFile {
     String paramSystem;
     /** The simulation rate the file was written at, or 0 when the file does not say. */
     int simRate;
+    /** Lines of the {@code <global>} and {@code <units>} elements, for error messages (-1 when absent). */
+    int globalLine = -1;
+    int unitsLine = -1;
     final List<MassSpec> masses = new ArrayList<>();
     final List<LinkSpec> links = new ArrayList<>();
 }

@@ -61,6 +61,7 @@ final class ModelFileParser {
     }
 
     private void readGlobal(XmlNode g, ModelFile f) {
+        f.globalLine = g.line;
         f.gravity = number(part(g, "gravity"), "gravity");
         f.friction = number(part(g, "friction"), "friction");
         XmlNode v = part(g, "vector");
@@ -69,6 +70,7 @@ final class ModelFileParser {
         f.dirZ = number(v, "pos.z");
         XmlNode u = g.child("units");
         if (u != null) {
+            f.unitsLine = u.line;
             f.paramSystem = text(u, "paramSystem");
             if (!f.paramSystem.equals("ALGO_UNITS") && !f.paramSystem.equals("REAL_UNITS")) {
                 throw fail(u, "paramSystem must be ALGO_UNITS or REAL_UNITS, got \"" + f.paramSystem + "\"");

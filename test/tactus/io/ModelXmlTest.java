@@ -253,6 +253,8 @@ class ModelXmlTest {
         PhysicalModel algo = new PhysicalModel(2000, 50);
         ModelFileException e = assertThrows(ModelFileException.class, () -> ModelXml.load(file, algo));
         assertTrue(e.getMessage().contains("REAL_UNITS"), e.getMessage());
+        assertEquals(7, e.getLine(), e.getMessage());
+        assertEquals("units", e.getElement());
         assertEquals(0, algo.getNumberOfMats());
     }
 
@@ -407,6 +409,12 @@ class ModelXmlTest {
         refused(file(TWO_MASSES, links), 17, "interaction_1", "itself");
         refused(file(TWO_MASSES, "    <Damper3D>\n      <interaction_0 damping=\"NaN\" m1=\"a\" m2=\"b\" name=\"z\"/>\n    </Damper3D>\n"),
                 16, "interaction_0", "Z");
+    }
+
+    @Test
+    void badGlobalsNameTheGlobalElement() {
+        String xml = file(TWO_MASSES, "").replace("<friction friction=\"0.0\"/>", "<friction friction=\"Infinity\"/>");
+        refused(xml, 3, "global", "friction");
     }
 
     @Test
