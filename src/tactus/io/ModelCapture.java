@@ -47,7 +47,8 @@ final class ModelCapture {
         s.z = p.z;
         if (FileTypes.isInertial(s.type)) {
             s.mass = model.getMatMassAt(i);
-            // MERGE: where the model has getMatDelayedPosAt(i), encode from the exact delayed position instead.
+            // MERGE: where the model has getMatDelayedPosAt(i), use VelocityCodec.fromDelayed(p.x, xr.x, fs), ...
+            // with xr = model.getMatDelayedPosAt(i): exact by construction instead of recovered.
             Vect3D v = model.getMatVelAt(i);
             double fs = model.getSimRate();
             s.vx = VelocityCodec.encode(p.x, v.x, fs);

@@ -41,6 +41,17 @@ final class VelocityCodec {
         return velocity;
     }
 
+    /**
+     * @param x the current coordinate X
+     * @param xr the delayed coordinate XR, exactly as the model holds it
+     * @param fs the simulation rate
+     * @return a velocity v with {@code x - v / fs == xr}, or {@code (x - xr) * fs} when none is found
+     */
+    static double fromDelayed(double x, double xr, double fs) {
+        double v = reachable(x, xr, (x - xr) * fs, fs);
+        return Double.isNaN(v) ? (x - xr) * fs : v;
+    }
+
     /** @return a velocity that rebuilds {@code xr} if {@code xr} reports {@code velocity}, else NaN. */
     private static double reachable(double x, double xr, double velocity, double fs) {
         if ((x - xr) * fs != velocity) {

@@ -292,6 +292,7 @@ class ModelXmlTest {
                 }
                 double written = VelocityCodec.encode(x, reported, fs);
                 assertEquals(xr, x - written / fs, 0.0, "x=" + x + " v=" + v + " fs=" + fs);
+                assertEquals(xr, x - VelocityCodec.fromDelayed(x, xr, fs) / fs, 0.0, "x=" + x + " v=" + v + " fs=" + fs);
             }
         }
         assertTrue(naiveMisses > 0, "the sample must contain cases the naive round trip gets wrong");
