@@ -813,6 +813,16 @@ public class PhysicalModel {
         }
     }
 
+    /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
+    public Interaction getInteractionAt(int i) {
+        enter();
+        try {
+            return core.dir.linkHandle(core.dir.linkAt("getInteractionAt", i));
+        } finally {
+            exit();
+        }
+    }
+
     /** @return the name of the mass at an index. */
     public String getMatNameAt(int i) {
         enter();
