@@ -21,7 +21,8 @@ import tactus.matModuleType;
  * <p>Positions come only from {@link PhysicalModel#getSnapshot()}, so drawing never waits for a thread that steps
  * the model. Inertias and length parameters, which the snapshot does not carry, are read under the model's lock
  * once, and again only when the snapshot's topology changes; call {@link #refresh()} after changing masses or
- * lengths of an unchanged topology. Once the first frame of a topology is drawn, drawing allocates nothing.
+ * lengths of an unchanged topology. Once the first frame of a topology is drawn, drawing allocates nothing. Before
+ * the model's {@code init()} its snapshot is empty and nothing is drawn.
  *
  * <p>Use it from one thread (the sketch's animation thread). The painters can be replaced to draw masses or links
  * differently.
