@@ -21,12 +21,16 @@ import java.util.concurrent.locks.LockSupport;
 public class Board implements AutoCloseable {
     /** Default time a read waits for a complete reply frame, in milliseconds. */
     public static final int DEFAULT_TIMEOUT_MS = 100;
+    /** Default number of consecutive reads without a reply after which the link is declared lost. */
+    public static final int DEFAULT_LOST_AFTER_TIMEOUTS = 10;
 
     private final Transport transport;
     private final BoardModel model;
     private final List<Device> devices = new ArrayList<>();
     private final Thread shutdownHook;
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
+    private volatile int lostAfterTimeouts = DEFAULT_LOST_AFTER_TIMEOUTS;
+    private int consecutiveTimeouts;
     private volatile boolean closed;
     private volatile String lostReason;
     private byte[] rx = new byte[64];
@@ -99,6 +103,17 @@ public class Board implements AutoCloseable {
         timeoutMs = ms;
     }
 
+    /**
+     * Sets after how many consecutive reads without any reply (each waiting the timeout) the link is declared
+     * lost and the board closed (>= 1).
+     */
+    public void setLostAfterTimeouts(int n) {
+        if (n < 1) {
+            throw new IllegalArgumentException("Board.setLostAfterTimeouts: count must be >= 1, got " + n);
+        }
+        lostAfterTimeouts = n;
+    }
+
     /** hAPI: sends {@code [type][id][bData...][fData as little-endian float32...]} in one write. */
     public synchronized void transmit(byte communicationType, byte deviceID, byte[] bData, float[] fData) {
         int nb = bData == null ? 0 : bData.length;
@@ -155,12 +170,16 @@ public class Board implements AutoCloseable {
                     timeouts++;
                     if (avail > 0) {
                         discard(avail);
+                    } else if (++consecutiveTimeouts >= lostAfterTimeouts) {
+                        throw lost("reading", new IOException("no reply to " + consecutiveTimeouts
+                                + " reads in a row (" + timeoutMs + " ms each)"));
                     }
                     return false;
                 }
                 LockSupport.parkNanos(20_000);
                 avail = transport.available();
             }
+            consecutiveTimeouts = 0;
             byte[] buf = rxBuffer(frame);
             int complete = avail / frame;
             for (int i = 0; i < complete - 1; i++) {

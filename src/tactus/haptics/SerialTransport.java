@@ -2,12 +2,15 @@ package tactus.haptics;
 
 import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * A {@link Transport} over a serial port through jSerialComm, in non-blocking mode ({@link Board} does the
  * waiting). Works with USB CDC boards and with pseudo-terminals (for the emulator over socat).
  */
 public final class SerialTransport implements Transport {
+    private static final long WRITE_STALL_NANOS = 250_000_000L;
+
     private final SerialPort port;
     private final String name;
     private volatile boolean closed;
@@ -55,10 +58,27 @@ public final class SerialTransport implements Transport {
             throw new IOException("port " + name + " is closed");
         }
         int done = 0;
+        long stalledSince = 0;
         while (done < length) {
             int n = port.writeBytes(data, length - done, offset + done);
             if (n < 0) {
                 throw new IOException("write to " + name + " failed (error " + port.getLastErrorCode() + ")");
+            }
+            if (n == 0) {
+                // a vanished device (or a pty whose other end is gone) accepts nothing: give up after a while
+                long now = System.nanoTime();
+                if (stalledSince == 0) {
+                    stalledSince = now;
+                } else if (now - stalledSince > WRITE_STALL_NANOS) {
+                    throw new IOException("write to " + name + " stalled for "
+                            + WRITE_STALL_NANOS / 1_000_000 + " ms (error " + port.getLastErrorCode() + ")");
+                }
+                if (port.bytesAvailable() < 0) {
+                    throw new IOException("port " + name + " is gone (error " + port.getLastErrorCode() + ")");
+                }
+                LockSupport.parkNanos(100_000);
+            } else {
+                stalledSince = 0;
             }
             done += n;
         }

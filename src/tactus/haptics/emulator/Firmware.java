@@ -341,7 +341,9 @@ final class Firmware {
     float angle(int p) {
         double now = hw.jointDeg(p + 1);
         int sign = encRotSlot[p] == encMount[p] ? 1 : -1;
-        long moved = (long) Math.floor(now * encRes[p] / 360.0) - (long) Math.floor(encSetupDeg[p] * encRes[p] / 360.0);
+        // quadrature edges; the 1e-9 count keeps round-off of the simulated pose from flipping an edge
+        long moved = (long) Math.floor(now * encRes[p] / 360.0 + 1e-9)
+                - (long) Math.floor(encSetupDeg[p] * encRes[p] / 360.0 + 1e-9);
         long count = encPreset[p] + sign * moved;
         return 360f * count / encRes[p];
     }
@@ -354,7 +356,7 @@ final class Firmware {
         double mag = duty[p] * BoardModel.MAX_TORQUE / model.pwmResolution();
         double pin = dirHigh[p] ? -1 : 1;
         double mount = motorMount[p] == 1 ? -1 : 1;
-        return mag * pin * mount;
+        return mag * pin * mount + 0.0;   // never -0.0
     }
 
     int duty(int port) {
