@@ -160,11 +160,26 @@ public class Board implements AutoCloseable {
      * id mismatch; both are counted, and a mismatch or an incomplete frame flushes the input to resynchronise.
      */
     public synchronized boolean readFrame(byte id, int floats, float[] out) {
+        return takeFrame(id, floats, out, true);
+    }
+
+    /**
+     * Like {@link #readFrame} but never waits: returns false at once (nothing counted) if no complete frame
+     * has arrived yet. For a fixed-rate loop that must not block.
+     */
+    public synchronized boolean pollFrame(byte id, int floats, float[] out) {
+        return takeFrame(id, floats, out, false);
+    }
+
+    private boolean takeFrame(byte id, int floats, float[] out, boolean wait) {
         requireOpen();
         int frame = WireFormat.replyLength(floats);
         try {
             long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
             int avail = transport.available();
+            if (!wait && avail < frame) {
+                return false;
+            }
             while (avail < frame) {
                 if (System.nanoTime() - deadline > 0) {
                     timeouts++;
@@ -280,6 +295,24 @@ public class Board implements AutoCloseable {
         }
     }
 
+    /**
+     * Sends zero torques and zero PWM to every configured device now, from any thread (a watchdog); the link
+     * stays open. Returns false if the link is closed or failed.
+     */
+    public synchronized boolean zeroTorques() {
+        if (closed) {
+            return false;
+        }
+        try {
+            for (Device d : devices) {
+                d.writeZeros();
+            }
+            return true;
+        } catch (HaplyLinkException e) {
+            return false;
+        }
+    }
+
     /** Processing calls this when the sketch stops; same as {@link #close()}. */
     public void dispose() {
         close();
@@ -332,6 +365,19 @@ public class Board implements AutoCloseable {
     private HaplyLinkException lost(String what, IOException e) {
         String msg = "lost the link to the Haply board on " + transport.describe() + " while " + what + ": "
                 + e.getMessage() + " (check the USB cable and that no other program uses the port)";
+        if (!closed) {
+            // the board may still listen even if it stopped answering: try to stop the motors
+            for (Device d : devices) {
+                byte[] zeros = d.zeroMessage();
+                if (zeros != null) {
+                    try {
+                        transport.write(zeros, 0, zeros.length);
+                    } catch (IOException ignored) {
+                        break;
+                    }
+                }
+            }
+        }
         lostReason = msg;
         closed = true;
         transport.close();

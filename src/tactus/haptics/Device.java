@@ -42,6 +42,7 @@ public class Device {
     private int[] pwmValues;
     private float[] frame;
     private long nonFiniteTorques;
+    private byte[] zeroMessage;
 
     /** Creates a device with an id (1..255 as an unsigned byte; 0 is refused) on a board. */
     public Device(byte deviceID, Board board) {
@@ -231,6 +232,8 @@ public class Device {
         torquesByPort = new float[nMotors];
         pwmValues = new int[nPwm];
         frame = new float[nSensors + nEncoders];
+        zeroMessage = new byte[writeBuffer.length];
+        WireFormat.encodeWrite(id, new int[nPwm], nPwm, new float[nMotors], nMotors, zeroMessage);
         byte[] setup = WireFormat.setup(id, motorDirs, encDirs, offsets, resolutions, sensorPins, pwmPins);
         board.send(setup, setup.length);
         configured = true;
@@ -248,18 +251,34 @@ public class Device {
      */
     public void device_read_data() {
         requireConfigured(what() + ".device_read_data");
-        if (!board.readFrame(id, frame.length, frame)) {
-            return;
+        if (board.readFrame(id, frame.length, frame)) {
+            takeFrame();
         }
+    }
+
+    private void takeFrame() {
         int k = 0;
-        for (Sensor s : analogs) {
-            s.set_value(frame[k++]);
+        for (int i = 0; i < analogs.size(); i++) {
+            analogs.get(i).set_value(frame[k++]);
         }
         for (int p = 0; p < ports; p++) {
             if (encoderAtPort[p] != 0) {
                 encoders[encoderAtPort[p] - 1].set_value(frame[k++]);
             }
         }
+    }
+
+    /**
+     * Takes the newest reply if a complete one has arrived, without waiting (unlike hAPI's
+     * {@link #device_read_data()}). Returns true if new values were read.
+     */
+    public boolean poll_data() {
+        requireConfigured(what() + ".poll_data");
+        if (!board.pollFrame(id, frame.length, frame)) {
+            return false;
+        }
+        takeFrame();
+        return true;
     }
 
     /** Asks for a reply without force: sends zero torques and the current PWM values. */
@@ -362,15 +381,17 @@ public class Device {
 
     // ------------------------------------------------------------------------------------------ internals
 
-    /** Sends zero torques and zero PWM (used when closing). */
+    /** Sends zero torques and zero PWM from a message of its own (safe beside a loop using the write buffer). */
     void writeZeros() {
-        if (!configured) {
-            return;
+        byte[] zeros = zeroMessage();
+        if (zeros != null) {
+            board.send(zeros, zeros.length);
         }
-        Arrays.fill(torquesByPort, 0f);
-        Arrays.fill(pwmValues, 0);
-        WireFormat.encodeWrite(id, pwmValues, nPwm, torquesByPort, nMotors, writeBuffer);
-        board.send(writeBuffer, writeBuffer.length);
+    }
+
+    /** The write message with zero torques and zero PWM, or null before the setup. */
+    byte[] zeroMessage() {
+        return zeroMessage;
     }
 
     private void sendWrite() {
