@@ -51,7 +51,7 @@ public final class HapticLoop implements AutoCloseable {
     private double torqueLimit = BoardModel.MAX_TORQUE;
     private double forceLimit = 20;
     private int watchdogMillis = 20;
-    private int linkTimeoutMillis = 100;
+    private int linkTimeoutMillis = 500;
     private int spinMicros = 60;
 
     private volatile boolean running;
@@ -164,6 +164,9 @@ public final class HapticLoop implements AutoCloseable {
     /**
      * Calibrated mode for a model in REAL_UNITS: alpha = 1 (metres), beta = 1 (newtons), torque gain 1, no
      * mirroring, so a 1 g virtual mass weighs 1 g in the hand (within the device's own inertia and friction).
+     * In HAPTICS_ONLY mode the loop renders the mean force over the tick's steps; in AUDIO mode the avatar
+     * force is summed over the audio steps since the last tick, so set beta to (haptic rate / audio rate)
+     * after this call.
      */
     public void useRealUnits() {
         beforeStart("useRealUnits");
@@ -209,7 +212,7 @@ public final class HapticLoop implements AutoCloseable {
         watchdogMillis = ms;
     }
 
-    /** Sets after how many milliseconds without a reply the link counts as lost (>= 1; default 100). */
+    /** Sets after how many milliseconds without a reply the link counts as lost (>= 1; default 500). */
     public void setLinkTimeoutMillis(int ms) {
         beforeStart("setLinkTimeoutMillis");
         if (ms < 1) {
@@ -427,8 +430,15 @@ public final class HapticLoop implements AutoCloseable {
             fail("the model failed in the haptic loop, zero torque sent: " + e);
             return false;
         }
-        double fx = sx * beta * force[0];
-        double fy = beta * force[1];
+        // haptics-only: the avatar force is summed over the tick's steps; render its mean
+        double perStep = mode == Mode.HAPTICS_ONLY ? 1.0 / stepsPerTick : 1.0;
+        double fx = sx * beta * perStep * force[0];
+        double fy = beta * perStep * force[1];
+        if (Double.isNaN(x)) {
+            forceX = 0;                      // no position yet (start-up): nothing to render
+            forceY = 0;
+            return writeTorques(0, 0);
+        }
         if (!poseOk || !Double.isFinite(fx) || !Double.isFinite(fy) || Math.hypot(fx, fy) > forceLimit) {
             faults++;
             forceX = 0;

@@ -157,11 +157,15 @@ public final class BoardEmulator implements AutoCloseable {
                 long now = System.nanoTime();
                 if (now - lastPass >= PASS_NANOS) {
                     lastPass = now;
+                    boolean busy;
                     synchronized (this) {
-                        firmware.pass(now);
+                        busy = firmware.pass(now);
+                    }
+                    if (!busy && n <= 0) {
+                        LockSupport.parkNanos(PASS_NANOS);   // idle: the next pass is due in 50 us anyway
                     }
                 } else {
-                    LockSupport.parkNanos(10_000);
+                    LockSupport.parkNanos(PASS_NANOS - (now - lastPass));
                 }
             }
         } catch (IOException e) {
