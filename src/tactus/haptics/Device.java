@@ -250,7 +250,7 @@ public class Device {
      * timeout or a bad frame the previous values are kept (see the board's counters).
      */
     public void device_read_data() {
-        requireConfigured(what() + ".device_read_data");
+        requireConfigured("device_read_data");
         if (board.readFrame(id, frame.length, frame)) {
             takeFrame();
         }
@@ -273,7 +273,7 @@ public class Device {
      * {@link #device_read_data()}). Returns true if new values were read.
      */
     public boolean poll_data() {
-        requireConfigured(what() + ".poll_data");
+        requireConfigured("poll_data");
         if (!board.pollFrame(id, frame.length, frame)) {
             return false;
         }
@@ -283,14 +283,14 @@ public class Device {
 
     /** Asks for a reply without force: sends zero torques and the current PWM values. */
     public void device_read_request() {
-        requireConfigured(what() + ".device_read_request");
+        requireConfigured("device_read_request");
         Arrays.fill(torquesByPort, 0f);
         sendWrite();
     }
 
     /** Sends the stored torques (in port order) and PWM values; the board answers with one reply. */
     public void device_write_torques() {
-        requireConfigured(what() + ".device_write_torques");
+        requireConfigured("device_write_torques");
         int k = 0;
         for (int p = 0; p < ports; p++) {
             if (actuatorAtPort[p] != 0) {
@@ -348,7 +348,7 @@ public class Device {
      * returns the end-effector position {x, y} in metres.
      */
     public float[] get_device_position(float[] angles) {
-        requireMechanism(what() + ".get_device_position");
+        requireMechanism("get_device_position");
         mechanism.forwardKinematics(angles);
         return mechanism.get_coordinate();
     }
@@ -358,7 +358,7 @@ public class Device {
      * PVector.array() is fine), stores one torque per actuator in index order, and returns the torques.
      */
     public float[] set_device_torques(float[] forces) {
-        requireMechanism(what() + ".set_device_torques");
+        requireMechanism("set_device_torques");
         mechanism.torqueCalculation(forces);
         float[] torques = mechanism.get_torque();
         int k = 0;
@@ -422,16 +422,16 @@ public class Device {
         }
     }
 
-    private void requireConfigured(String op) {
+    private void requireConfigured(String method) {
         if (!configured) {
-            throw new IllegalStateException(op + ": call device_set_parameters() first; an unconfigured board "
+            throw new IllegalStateException(what() + "." + method + ": call device_set_parameters() first; an unconfigured board "
                     + "reads the torque bytes as commands");
         }
     }
 
-    private void requireMechanism(String op) {
+    private void requireMechanism(String method) {
         if (mechanism == null) {
-            throw new IllegalStateException(op + ": no mechanism; call set_mechanism() first");
+            throw new IllegalStateException(what() + "." + method + ": no mechanism; call set_mechanism() first");
         }
     }
 

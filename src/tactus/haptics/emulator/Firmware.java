@@ -67,6 +67,7 @@ final class Firmware {
     private int[] pendingIntendedMotor;
     private int[] pendingIntendedEnc;
     private byte[] block = new byte[64];
+    private byte[] replyBuffer = new byte[64];
     private int blockNeed;
     private int blockHave;
     private long blockDeadline;
@@ -319,7 +320,11 @@ final class Firmware {
                 nEnc++;
             }
         }
-        byte[] r = new byte[WireFormat.replyLength(sensors.length + nEnc)];
+        int len = WireFormat.replyLength(sensors.length + nEnc);
+        if (replyBuffer.length < len) {
+            replyBuffer = new byte[len];
+        }
+        byte[] r = replyBuffer;
         r[0] = (byte) pendingId;
         int k = 1;
         for (int n : sensors) {
@@ -333,7 +338,7 @@ final class Firmware {
                 k += 4;
             }
         }
-        out.write(r, 0, r.length);
+        out.write(r, 0, len);
         replies++;
     }
 
