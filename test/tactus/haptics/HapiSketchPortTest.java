@@ -12,6 +12,8 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import processing.core.PApplet;
 import processing.core.PVector;
+import tactus.PhysicalModel;
+import tactus.Vect3D;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PtyPair;
@@ -199,5 +201,72 @@ class HapiSketchPortTest {
             assertTrue(haplyBoard.isClosed());
             emulator.close();
         }
+    }
+
+    @Test
+    void paperStyleHapticThreadDrivesAModelThroughTheEmulator() throws Exception {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        emulator.setHand(Hand.scripted((t, out) -> {
+            out[0] = 0.015 * Math.sin(2 * Math.PI * t);
+            out[1] = 0.08;
+        }));
+        // the paper's haptics-only sketch: its own thread, hAPI calls, setHapticPosition / getHapticForce
+        PhysicalModel mdl = new PhysicalModel(1000);
+        mdl.addHapticInput3D("hapticMass", new Vect3D(), 10);
+        for (int i = 0; i < 10; i++) {
+            mdl.addMass3D("m" + i, 50, new Vect3D(0.1 * (i + 1), 0, 0), new Vect3D());
+        }
+        for (int i = 0; i < 9; i++) {
+            mdl.addSpringDamper3D("k" + i, 0.1, 0.003, 0.05, "m" + i, "m" + (i + 1));
+        }
+        mdl.addSpringDamper3D("grip", 0.1, 0.003, 0.05, "hapticMass", "m0");
+        mdl.init();
+        Board haplyBoard = new Board(emulator.connect());
+        Device widgetOne = new Device((byte) 5, haplyBoard);
+        widgetOne.set_mechanism(new Pantograph());
+        widgetOne.add_actuator(1, 0, 1);
+        widgetOne.add_actuator(2, 0, 2);
+        widgetOne.add_encoder(1, 0, 180, 13824, 1);
+        widgetOne.add_encoder(2, 0, 0, 13824, 2);
+        widgetOne.device_set_parameters();
+        float posGain = 200;
+        float forceGain = 100;
+        PVector angles = new PVector();
+        PVector posEE = new PVector();
+        PVector fEE = new PVector();
+        AtomicInteger ticks = new AtomicInteger();
+        AtomicReference<Throwable> error = new AtomicReference<>();
+        double[] maxForce = {0};
+        ScheduledExecutorService scheduler = Executors.newScheduledThreadPool(1);
+        scheduler.scheduleAtFixedRate(() -> {
+            try {
+                if (haplyBoard.data_available()) {
+                    widgetOne.device_read_data();
+                    angles.set(widgetOne.get_device_angles());
+                    posEE.set(widgetOne.get_device_position(angles.array()));
+                }
+                mdl.setHapticPosition("hapticMass", new Vect3D(-posGain * posEE.x, posGain * (posEE.y - 0.08f), 0));
+                mdl.computeStep();
+                Vect3D f = mdl.getHapticForce("hapticMass");
+                fEE.set((float) (-forceGain * f.x), (float) (forceGain * f.y));
+                maxForce[0] = Math.max(maxForce[0], fEE.mag());
+                widgetOne.set_device_torques(fEE.array());
+                widgetOne.device_write_torques();
+                ticks.incrementAndGet();
+            } catch (Throwable t) {
+                error.compareAndSet(null, t);
+                throw t;
+            }
+        }, 1, 1, MILLISECONDS);
+        Thread.sleep(800);
+        scheduler.shutdown();
+        scheduler.awaitTermination(1, java.util.concurrent.TimeUnit.SECONDS);
+        assertEquals(null, error.get());
+        assertTrue(ticks.get() > 100, "ticks: " + ticks.get());
+        assertTrue(maxForce[0] > 0 && Double.isFinite(maxForce[0]), "the moving handle drags the chain: " + maxForce[0]);
+        assertTrue(emulator.writes() >= ticks.get());
+        haplyBoard.close();
+        assertEquals(0, emulator.duty(1));
+        assertEquals(0, emulator.duty(2));
     }
 }
