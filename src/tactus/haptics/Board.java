@@ -23,6 +23,8 @@ public class Board implements AutoCloseable {
     public static final int DEFAULT_TIMEOUT_MS = 100;
     /** Default number of consecutive reads without a reply after which the link is declared lost. */
     public static final int DEFAULT_LOST_AFTER_TIMEOUTS = 10;
+    /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
+    private static final float PLAUSIBLE = 1e6f;
 
     private final Transport transport;
     private final BoardModel model;
@@ -41,6 +43,9 @@ public class Board implements AutoCloseable {
     private long idMismatches;
     private long timeouts;
     private long bytesDiscarded;
+    private long unexpectedBytes;
+    private long implausibleFrames;
+    private long pendingReplies;
 
     /**
      * Opens the serial port of a Haply board from a Processing sketch (hAPI's constructor). The baud rate is
@@ -185,6 +190,7 @@ public class Board implements AutoCloseable {
                     timeouts++;
                     if (avail > 0) {
                         discard(avail);
+                        pendingReplies = 0;
                     } else if (++consecutiveTimeouts >= lostAfterTimeouts) {
                         throw lost("reading", new IOException("no reply to " + consecutiveTimeouts
                                 + " reads in a row (" + timeoutMs + " ms each)"));
@@ -195,6 +201,14 @@ public class Board implements AutoCloseable {
                 avail = transport.available();
             }
             consecutiveTimeouts = 0;
+            if (devices.size() == 1 && avail > pendingReplies * frame) {
+                // more bytes than the replies still owed: something else is in the stream, so no frame
+                // boundary can be trusted; drop everything and start again from the next reply
+                unexpectedBytes += avail;
+                discard(avail);
+                pendingReplies = 0;
+                return false;
+            }
             byte[] buf = rxBuffer(frame);
             int complete = avail / frame;
             for (int i = 0; i < complete - 1; i++) {
@@ -202,14 +216,21 @@ public class Board implements AutoCloseable {
                 framesSkipped++;
             }
             readFully(buf, frame);
+            pendingReplies = Math.max(0, pendingReplies - complete);
             if (buf[0] != id) {
                 idMismatches++;
                 bytesDiscarded += frame;
-                int rest = transport.available();
-                if (rest > 0) {
-                    discard(rest);
-                }
+                flushRest();
                 return false;
+            }
+            for (int i = 0; i < floats; i++) {
+                float v = WireFormat.getFloat(buf, 1 + 4 * i);
+                if (!(Math.abs(v) <= PLAUSIBLE)) {
+                    implausibleFrames++;
+                    bytesDiscarded += frame;
+                    flushRest();
+                    return false;
+                }
             }
             for (int i = 0; i < floats; i++) {
                 out[i] = WireFormat.getFloat(buf, 1 + 4 * i);
@@ -244,6 +265,19 @@ public class Board implements AutoCloseable {
     /** Number of bytes thrown away while resynchronising. */
     public synchronized long bytesDiscarded() {
         return bytesDiscarded;
+    }
+
+    /**
+     * Number of bytes dropped because more had arrived than the replies still owed (a stray or foreign
+     * frame); counted only with one device on the board.
+     */
+    public synchronized long unexpectedBytes() {
+        return unexpectedBytes;
+    }
+
+    /** Number of frames with the right id but a non-finite or absurd value (above 1e6), dropped with a flush. */
+    public synchronized long implausibleFrames() {
+        return implausibleFrames;
     }
 
     /** True once the board has been closed or the link was lost. */
@@ -348,12 +382,23 @@ public class Board implements AutoCloseable {
         requireOpen();
         try {
             transport.write(data, 0, len);
+            if (len > 0 && data[0] == WireFormat.WRITE) {
+                pendingReplies++;
+            }
         } catch (IOException e) {
             throw lost("writing", e);
         }
     }
 
     // ------------------------------------------------------------------------------------------ internals
+
+    private void flushRest() throws IOException {
+        int rest = transport.available();
+        if (rest > 0) {
+            discard(rest);
+        }
+        pendingReplies = 0;
+    }
 
     private void requireOpen() {
         if (closed) {

@@ -38,13 +38,49 @@ class FrameFaultTest {
             emulator.injectToHost(new byte[] {0x55});          // one stray byte before the next reply
             d.device_read_request();
             d.device_read_data();
-            assertEquals(1, board.idMismatches());
+            assertEquals(10, board.unexpectedBytes(), "the stray byte and the reply behind it");
             assertArrayEquals(good, d.get_device_angles(), "the previous values are kept");
             assertFalse(board.data_available(), "flushed");
             d.device_read_request();
             d.device_read_data();
             assertEquals(2, board.framesRead());
             assertArrayEquals(good, d.get_device_angles());
+        }
+    }
+
+    @Test
+    void aMisalignedFrameThatStartsWithTheRightIdIsNotDecoded() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        emulator.setLockstep(0.001);
+        try (Board board = new Board(emulator.connect())) {
+            Device d = open(emulator, board);
+            d.device_read_request();
+            d.device_read_data();
+            float[] good = d.get_device_angles();
+            emulator.injectToHost(new byte[] {3, 0x10, 0x20});   // 3 stray bytes, the first equal to the id
+            d.device_read_request();
+            d.device_read_data();                                 // 12 bytes: [3 10 20 | 3 a a a a b b] would decode
+            assertArrayEquals(good, d.get_device_angles());
+            assertEquals(12, board.unexpectedBytes());
+            assertEquals(1, board.framesRead());
+            d.device_read_request();
+            d.device_read_data();
+            assertEquals(2, board.framesRead());
+            assertArrayEquals(good, d.get_device_angles());
+        }
+    }
+
+    @Test
+    void anAbsurdValueInAFrameIsRefused() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        try (Board board = new Board(emulator.connect())) {
+            Device d = open(emulator, board);
+            emulator.dropReplies(1);
+            d.device_read_request();
+            emulator.injectToHost(frame(3, Float.NaN, 1e30f));
+            d.device_read_data();
+            assertEquals(1, board.implausibleFrames());
+            assertArrayEquals(new float[] {0f, 0f}, d.get_device_angles());
         }
     }
 
