@@ -5,8 +5,11 @@ package tactus.haptics;
  * which analog pins its firmware actually handles.
  */
 public enum BoardModel {
-    /** Haply M0 (firmware V0.3): ports 1-2, 10-bit motor PWM, analog pins A0-A5 (only A1, A2 are read). */
-    M0(2, 1023, 5, false),
+    /**
+     * Haply M0 (firmware V0.3): ports 1-2, 10-bit motor PWM, analog pins A0-A4 (only A1 and A2 are read; A5
+     * would overrun the firmware's 5-slot table, A6 and up are dropped).
+     */
+    M0(2, 1023, 4, false),
     /** Haply M3 (firmware V1.5): ports 1-4, 12-bit motor PWM, analog pins A0-A11. */
     M3(4, 4095, 11, false),
     /** Haply Modular Development Kit (firmware V0.4): ports 1-4, 12-bit PWM; the firmware inverts motor ports 2 and 4. */

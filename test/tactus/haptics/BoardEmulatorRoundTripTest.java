@@ -204,4 +204,26 @@ class BoardEmulatorRoundTripTest {
             assertEquals(2, r.device.nonFiniteTorques());
         }
     }
+
+    @Test
+    void analogValuesComeFirstThenAnglesInPortOrder() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.TWO_DIY_V3);
+        emulator.setAnalog(0, 111);
+        emulator.setAnalog(1, 2222);
+        emulator.setAnalog(2, 3333);
+        try (Board board = new Board(emulator.connect())) {
+            Device d = new Device((byte) 5, board);
+            HaplyPreset.TWO_DIY_V3.configure(d);
+            d.add_analog_sensor("A2");
+            d.add_analog_sensor("A0");
+            d.add_analog_sensor("A1");
+            d.device_set_parameters();
+            d.device_read_request();
+            d.device_read_data();
+            // in the order added; the M0 reads only A1 and A2 (A0 reports 0)
+            assertArrayEquals(new float[] {3333f, 0f, 2222f}, d.get_sensor_data());
+            // encoder 1 is on port 2: the reply's angles are in port order, get_device_angles in index order
+            assertArrayEquals(new float[] {360f * 1138 / 2440, 360f * 81 / 2440}, d.get_device_angles());
+        }
+    }
 }

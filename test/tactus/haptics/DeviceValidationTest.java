@@ -49,6 +49,7 @@ class DeviceValidationTest {
         refused(IllegalArgumentException.class, "got Infinity", () -> d.add_encoder(1, 0, Float.POSITIVE_INFINITY, 13824, 1));
         refused(IllegalArgumentException.class, "got 4", () -> d.add_encoder(1, 0, 180, 13824, 4));
         refused(IllegalArgumentException.class, "\"A6\"", () -> d.add_analog_sensor("A6"));   // the M0 drops A6+
+        refused(IllegalArgumentException.class, "\"A5\"", () -> d.add_analog_sensor("A5"));   // and overruns with A5
         refused(IllegalArgumentException.class, "\"B1\"", () -> d.add_analog_sensor("B1"));
         refused(IllegalArgumentException.class, "got 14", () -> d.add_pwm_pin(14));
         d.add_actuator(1, 0, 1);

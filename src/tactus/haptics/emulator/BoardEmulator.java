@@ -53,6 +53,7 @@ public final class BoardEmulator implements AutoCloseable {
     private volatile Transport served;
     private volatile Firmware.Output output;
     private int dropReplies;
+    private final double[] analog = new double[12];
 
     /** An M0 board wired as the preset's hardware, the handle at the calibration pose, a following hand there. */
     public BoardEmulator(HaplyPreset preset) {
@@ -203,6 +204,17 @@ public final class BoardEmulator implements AutoCloseable {
     /** Puts raw bytes in front of the host, as if the board had sent them (stray or partial frames). */
     public void injectToHost(byte[] bytes) {
         deliverRaw(bytes, 0, bytes.length);
+    }
+
+    /**
+     * Sets the raw ADC value of analog input An (0..11). The M0 firmware reads only A1 and A2; the others
+     * it reports as 0.
+     */
+    public synchronized void setAnalog(int n, double value) {
+        if (n < 0 || n >= analog.length) {
+            throw new IllegalArgumentException("BoardEmulator.setAnalog: input must be 0..11, got " + n);
+        }
+        analog[n] = value;
     }
 
     /** Swallows the next n replies (the board answers, the bytes never arrive). */
@@ -386,7 +398,7 @@ public final class BoardEmulator implements AutoCloseable {
 
         @Override
         public double analog(int n) {
-            return 0;
+            return n >= 0 && n < analog.length ? analog[n] : 0;
         }
 
         @Override
