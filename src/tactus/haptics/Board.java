@@ -12,7 +12,8 @@ import java.util.concurrent.locks.LockSupport;
  * <p>Differences from hAPI, all on the safe side: a read takes every complete reply frame that has arrived
  * and keeps the newest (hAPI reads one per tick, so every tick without data adds a frame of lag for good);
  * a read waits for exactly 1 + 4n bytes with a timeout, checks the device id and resynchronises by
- * flushing on a mismatch (counted, never printed); each command goes out in one write; {@link #close()}
+ * flushing on a mismatch, on more bytes than the replies still owed, or on an absurd value (all counted,
+ * never printed); each command goes out in one write; {@link #close()}
  * sends zero torques to every configured device before closing, also from a JVM shutdown hook and from
  * Processing's {@code dispose}.
  *
@@ -62,6 +63,11 @@ public class Board implements AutoCloseable {
     /** Opens the serial port of a Haply M0 board from a plain JVM application (baud as for the PApplet constructor). */
     public Board(String portName, int baud) {
         this(SerialTransport.open(portName, baud), BoardModel.M0);
+    }
+
+    /** Opens the serial port of a board of the given model (M3 and Dev-Kit have ports 1-4, the M0 1-2). */
+    public Board(String portName, int baud, BoardModel model) {
+        this(SerialTransport.open(portName, baud), model);
     }
 
     /** Uses an already open transport to a Haply M0 board. */
