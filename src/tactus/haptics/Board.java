@@ -297,8 +297,8 @@ public class Board implements AutoCloseable {
     }
 
     /**
-     * Sends zero torques (and zero PWM) to every configured device, then closes the link. Safe to call more
-     * than once and from any thread.
+     * Sends zero torques (and zero PWM) to every configured device and a reset, then closes the link. Safe to
+     * call more than once and from any thread.
      */
     @Override
     public void close() {
@@ -313,6 +313,12 @@ public class Board implements AutoCloseable {
                     } catch (RuntimeException ignored) {
                         // the link may be half gone; closing goes on
                     }
+                }
+                // then reset: the board forgets the configuration (the duty stays at the zero just sent)
+                try {
+                    transport.write(WireFormat.reset((byte) 0), 0, 2);
+                } catch (IOException ignored) {
+                    // closing anyway
                 }
                 // Let the replies arrive, then drop them.
                 LockSupport.parkNanos(2_000_000);

@@ -182,7 +182,10 @@ class BoardEmulatorRoundTripTest {
         r.device.set_actuator_torque(2, -0.1f);
         r.device.device_write_torques();
         assertTrue(r.emulator.duty(1) > 0 && r.emulator.duty(2) > 0);
+        long resets = r.emulator.resets();
         r.board.close();
+        assertEquals(resets + 1, r.emulator.resets(), "and the board is reset");
+        assertEquals(-1, r.emulator.configuredId());
         assertEquals(0, r.emulator.duty(1));
         assertEquals(0, r.emulator.duty(2));
         assertEquals(0.0, r.emulator.motorTorque(1));
