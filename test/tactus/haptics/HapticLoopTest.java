@@ -461,4 +461,43 @@ class HapticLoopTest {
             loop.stop();
         }
     }
+
+    @Test
+    void calibratedModeRendersAOneGramWeightAsNineMilliNewtons() {
+        // REAL_UNITS: a 1 g mass hanging from the avatar on a spring, gravity 9.81 m/s^2 pulling towards -y
+        PhysicalModel pm = new PhysicalModel(1000, tactus.paramSystem.REAL_UNITS);
+        pm.addHapticInput3D("hapticMass", new Vect3D(), 1);
+        pm.addMass3D("bob", 0.001, new Vect3D(0, -0.05 - 0.001 * 9.81 / 10, 0), new Vect3D());
+        pm.addSpringDamper3D("cord", 0.05, 10, 0.1, "hapticMass", "bob");
+        pm.setGravityDirection(new Vect3D(0, 1, 0));
+        pm.setGravity(9.81);
+        pm.init();
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+            loop.useRealUnits();
+            loop.setOrigin(-rig.x0, -rig.y0, 0);      // the handle is the model's origin, in metres
+            loop.start();
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (loop.ticks() < 1500 && loop.isRunning() && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(2_000_000);
+            }
+            double[] f = new double[2];
+            loop.deviceForce(f);
+            double t1 = loop.torque(1);
+            double t2 = loop.torque(2);
+            loop.stop();
+            assertTrue(loop.ticks() >= 1500, String.valueOf(loop.failure()));
+            assertEquals(0, f[0], 1e-4);
+            assertEquals(-0.001 * 9.81, f[1], 0.02 * 0.001 * 9.81, "the weight of 1 g, in newtons");
+            // torques are J^T F exactly (gain 1), at the handle's pose
+            PantographKinematics k = HaplyPreset.HAPLY_2018.newKinematics();
+            double[] th = new double[2];
+            assertTrue(k.inverse(rig.x0, rig.y0, th));
+            k.forward(th[0], th[1]);
+            double[] tau = new double[2];
+            k.torques(f[0], f[1], 1.0, tau);
+            assertEquals(tau[0], t1, 0.01 * Math.abs(tau[0]) + 1e-6);
+            assertEquals(tau[1], t2, 0.01 * Math.abs(tau[1]) + 1e-6);
+        }
+    }
 }
