@@ -9,9 +9,10 @@ import tactus.haptics.emulator.PtyPair;
 
 /**
  * Measures the haptic loop's telemetry over the pty emulator (not a test; run on demand):
- * {@code java ... tactus.haptics.HapticLoopBench SECONDS haptics|audio}. "haptics": the paper's HeavyMassChain
- * stepped by the haptic thread at 1 kHz. "audio": a 200-mass string at 44.1 kHz stepped by an audio-like
- * thread in bursts of 1024 steps per 23.2 ms, the haptic thread only moving the avatar and taking the force.
+ * {@code java ... tactus.haptics.HapticLoopBench SECONDS haptics|audio|audio-decoupled}. "haptics": the paper's
+ * HeavyMassChain stepped by the haptic thread at 1 kHz. "audio": a 200-mass string at 44.1 kHz stepped by an
+ * audio-like thread in bursts of 1024 steps per 23.2 ms, the haptic thread only moving the avatar and taking
+ * the force (through the model's lock). "audio-decoupled": the same through a {@link DecoupledAvatar}.
  */
 public final class HapticLoopBench {
     private HapticLoopBench() {
@@ -19,7 +20,9 @@ public final class HapticLoopBench {
 
     public static void main(String[] args) throws Exception {
         double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 60;
-        boolean audio = args.length > 1 && args[1].equals("audio");
+        String mode = args.length > 1 ? args[1] : "haptics";
+        boolean audio = mode.startsWith("audio");
+        boolean decoupled = mode.equals("audio-decoupled");
         try (PtyPair pty = PtyPair.open()) {
             BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
             emulator.setHand(Hand.scripted((t, out) -> {
@@ -32,8 +35,10 @@ public final class HapticLoopBench {
             HaplyPreset.HAPLY_2018.configure(device);
             device.device_set_parameters();
             PhysicalModel pm = audio ? string() : chain();
+            AvatarLink avatar = new PhysicalModelAvatar(pm, "hapticMass");
+            DecoupledAvatar exchange = decoupled ? new DecoupledAvatar(avatar) : null;
             HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(),
-                    new PhysicalModelAvatar(pm, "hapticMass"));
+                    decoupled ? exchange : avatar);
             loop.setOrigin(0, -200 * 0.08, 0);
             Thread audioThread = null;
             boolean[] stop = {false};
@@ -60,7 +65,10 @@ public final class HapticLoopBench {
             HapticTelemetry t = loop.telemetry();
             stop[0] = true;
             loop.close();
-            System.out.println((audio ? "audio " : "haptics-only ") + t);
+            if (exchange != null) {
+                exchange.close();
+            }
+            System.out.println(mode + " " + t);
             System.out.println("board: frames " + board.framesRead() + ", skipped " + board.framesSkipped()
                     + ", id mismatches " + board.idMismatches() + ", emulator writes " + emulator.writes()
                     + ", late bytes " + emulator.lateBytes());
