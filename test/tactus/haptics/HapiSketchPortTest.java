@@ -133,7 +133,7 @@ class HapiSketchPortTest {
         try (PtyPair pty = PtyPair.open()) {
             BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
             emulator.setHand(Hand.scripted((t, out) -> {
-                out[0] = 0.01 * Math.sin(2 * Math.PI * t);
+                out[0] = 0.005 * Math.sin(2 * Math.PI * t);   // at most 3 cm/s: 1.5 mm is 50 ms of lag
                 out[1] = 0.08;
             }));
             emulator.serve(SerialTransport.open(pty.boardEnd(), 0));

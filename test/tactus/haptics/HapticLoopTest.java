@@ -349,7 +349,7 @@ class HapticLoopTest {
                 @Override
                 public void step(int n) {
                     if (++ticks == 50) {
-                        LockSupport.parkNanos(200_000_000L);   // the model hangs for 200 ms
+                        LockSupport.parkNanos(500_000_000L);   // the model hangs for 500 ms
                     }
                 }
             };
@@ -360,7 +360,7 @@ class HapticLoopTest {
             while (loop.ticks() < 49 && System.nanoTime() < deadline) {
                 LockSupport.parkNanos(1_000_000);
             }
-            LockSupport.parkNanos(120_000_000L);   // inside the stall
+            LockSupport.parkNanos(150_000_000L);   // inside the stall (the watchdog acts after 20 ms)
             assertEquals(0, rig.emulator.duty(1), "the watchdog zeroed the motors");
             assertEquals(0, rig.emulator.duty(2));
             assertTrue(loop.telemetry().watchdogTrips >= 1);
