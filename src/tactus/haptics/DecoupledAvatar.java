@@ -1,0 +1,148 @@
+package tactus.haptics;
+
+import java.lang.invoke.VarHandle;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * An {@link AvatarLink} that never makes the haptic thread wait for the model: a helper thread does the
+ * (possibly blocking) calls on the wrapped link, and the two threads meet through lock-free single-writer
+ * channels. For {@link HapticLoop.Mode#AUDIO}, where the audio thread holds the model for a whole buffer
+ * of steps at a time.
+ *
+ * <p>{@link #setTarget} publishes the target and wakes the helper, which passes it on and takes the force;
+ * {@link #takeForce} returns everything the helper has collected since the previous call (forces are never
+ * lost, at worst they arrive one tick later). {@link #step} calls the wrapped link directly. If the wrapped
+ * link throws, the force becomes NaN for good, so the loop sends zero torque from then on. Call
+ * {@link #close()} to stop the helper thread.
+ */
+public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
+    private final AvatarLink inner;
+    private final Thread helper;
+    private volatile boolean running = true;
+
+    // target: written by the haptic thread, read by the helper (seqlock)
+    private volatile long targetSeq;
+    private double tx;
+    private double ty;
+    private double tz;
+
+    // cumulative force: written by the helper, read by the haptic thread (seqlock)
+    private volatile long forceSeq;
+    private double cx;
+    private double cy;
+    private double cz;
+
+    // haptic thread only: the totals already handed out
+    private double takenX;
+    private double takenY;
+    private double takenZ;
+
+    private volatile long exchanges;
+
+    /** Wraps a link (typically a {@link PhysicalModelAvatar}) and starts the helper thread. */
+    public DecoupledAvatar(AvatarLink inner) {
+        if (inner == null) {
+            throw new IllegalArgumentException("DecoupledAvatar: inner link must not be null");
+        }
+        this.inner = inner;
+        this.helper = new Thread(this::serve, "tactus-avatar-exchange");
+        helper.setDaemon(true);
+        helper.start();
+    }
+
+    @Override
+    public void setTarget(double x, double y, double z) {
+        long s = targetSeq;
+        targetSeq = s + 1;          // odd: writing
+        VarHandle.storeStoreFence();
+        tx = x;
+        ty = y;
+        tz = z;
+        targetSeq = s + 2;          // even: done
+        LockSupport.unpark(helper);
+    }
+
+    @Override
+    public void takeForce(double[] out) {
+        double x;
+        double y;
+        double z;
+        while (true) {
+            long s1 = forceSeq;
+            if ((s1 & 1) == 0) {
+                x = cx;
+                y = cy;
+                z = cz;
+                VarHandle.loadLoadFence();
+                if (forceSeq == s1) {
+                    break;
+                }
+            }
+            Thread.onSpinWait();
+        }
+        out[0] = x - takenX;
+        out[1] = y - takenY;
+        out[2] = z - takenZ;
+        takenX = x;
+        takenY = y;
+        takenZ = z;
+    }
+
+    @Override
+    public void step(int n) {
+        inner.step(n);
+    }
+
+    /** Number of target/force exchanges the helper has made with the wrapped link. */
+    public long exchanges() {
+        return exchanges;
+    }
+
+    /** Stops the helper thread. */
+    @Override
+    public void close() {
+        running = false;
+        LockSupport.unpark(helper);
+        try {
+            helper.join(1000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void serve() {
+        double[] f = new double[3];
+        long seen = 0;
+        while (running) {
+            long s = targetSeq;
+            if (s == seen || (s & 1) != 0) {
+                LockSupport.parkNanos(1_000_000);
+                continue;
+            }
+            double x = tx;
+            double y = ty;
+            double z = tz;
+            VarHandle.loadLoadFence();
+            if (targetSeq != s) {
+                continue;           // torn: read again
+            }
+            seen = s;
+            try {
+                inner.setTarget(x, y, z);
+                inner.takeForce(f);
+            } catch (RuntimeException e) {
+                f[0] = Double.NaN;  // the loop sees a non-finite force and sends zero torque
+                f[1] = Double.NaN;
+                f[2] = Double.NaN;
+            }
+            long fs = forceSeq;
+            forceSeq = fs + 1;
+            VarHandle.storeStoreFence();
+            cx += f[0];
+            cy += f[1];
+            cz += f[2];
+            forceSeq = fs + 2;
+            exchanges++;
+        }
+    }
+}

@@ -1,0 +1,508 @@
+package tactus.haptics;
+
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,
+ * runs the pantograph kinematics, sets the avatar's target, steps the model (haptics-only mode), takes the
+ * avatar's force, applies the gains, and writes the torques J^T F.
+ *
+ * <p>Mapping (as the paper's sketches): model position = (s alpha x + ox, alpha y + oy, oz) and device force
+ * = (s beta Fx, beta Fy), where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
+ * the sketches draw the device seen from the user) and F the avatar force in model units.
+ * {@link #useRealUnits()} sets alpha = beta = 1 for a model in REAL_UNITS (metres, newtons).
+ *
+ * <p>Safety: torques are scaled down to the torque limit (0.123 N m, the firmware's, by default); a
+ * non-finite force, a force above the runaway limit or an unreachable pose gives zero torque in the same
+ * tick; a model that throws gives zero torque and stops the loop; a watchdog thread zeroes the torque when no
+ * tick has started for a set time; a lost link (or no reply for a set time) stops the loop after zeroing the
+ * motors where the link still allows; {@link #close()} stops the loop and closes the board, which sends
+ * zero torques (the board also does so from a JVM shutdown hook).
+ *
+ * <p>Telemetry ({@link #telemetry()}): achieved rate, missed steps (a period over 1.5 times nominal), period
+ * jitter p50/p99/max, compute time per tick. Configure before {@link #start()}.
+ */
+public final class HapticLoop implements AutoCloseable {
+    /** Number of recent ticks kept for the percentiles. */
+    public static final int WINDOW = 1 << 16;
+
+    /** Who steps the model. */
+    public enum Mode {
+        /** The haptic thread steps the model {@link #setStepsPerTick(int)} times per tick. */
+        HAPTICS_ONLY,
+        /** The audio thread steps the model; the haptic thread only moves the avatar and takes the force. */
+        AUDIO
+    }
+
+    private final Device device;
+    private final PantographKinematics kin;
+    private final AvatarLink avatar;
+
+    private volatile double rateHz = 1000;
+    private Mode mode = Mode.HAPTICS_ONLY;
+    private int stepsPerTick = 1;
+    private double alpha = 200;
+    private double beta = 100;
+    private double ox;
+    private double oy;
+    private double oz;
+    private boolean mirrorX = true;
+    private double torqueGain = 1.0;
+    private double torqueLimit = BoardModel.MAX_TORQUE;
+    private double forceLimit = 20;
+    private int watchdogMillis = 20;
+    private int linkTimeoutMillis = 500;
+    private int spinMicros = 60;
+
+    private volatile boolean running;
+    private volatile Thread thread;
+    private volatile Thread watchdog;
+    private volatile String failure;
+    private volatile long lastTickStart;
+
+    // written by the loop thread, read by anyone (plain longs: statistics)
+    private final long[] periods = new long[WINDOW];
+    private final long[] computes = new long[WINDOW];
+    private volatile long ticks;
+    private long startNanos;
+    private volatile long lastNanos;
+    private long missed;
+    private long jitterMax;
+    private long computeMax;
+    private long stale;
+    private long faults;
+    private long clamped;
+    private volatile long watchdogTrips;
+
+    // per-tick state, loop thread only
+    private final double[] force = new double[3];
+    private final double[] tau = new double[2];
+    private volatile double devX = Double.NaN;
+    private volatile double devY = Double.NaN;
+    private volatile double torque1;
+    private volatile double torque2;
+    private volatile double forceX;
+    private volatile double forceY;
+    private int staleRun;
+
+    /**
+     * Creates a loop over a configured device (encoders 1, 2 give theta1, theta2; actuators 1, 2 take tau1,
+     * tau2), the pantograph kinematics, and a model's avatar.
+     */
+    public HapticLoop(Device device, PantographKinematics kinematics, AvatarLink avatar) {
+        if (device == null || kinematics == null || avatar == null) {
+            throw new IllegalArgumentException("HapticLoop: device, kinematics and avatar must not be null, got "
+                    + device + ", " + kinematics + ", " + avatar);
+        }
+        this.device = device;
+        this.kin = kinematics;
+        this.avatar = avatar;
+    }
+
+    /** Sets the rate in Hz (1..10000; default 1000). */
+    public void setRate(double hz) {
+        beforeStart("setRate");
+        if (!(hz >= 1 && hz <= 10_000)) {
+            throw new IllegalArgumentException("HapticLoop.setRate: rate must be 1..10000 Hz, got " + hz);
+        }
+        rateHz = hz;
+    }
+
+    /** Sets who steps the model (default HAPTICS_ONLY). */
+    public void setMode(Mode mode) {
+        beforeStart("setMode");
+        if (mode == null) {
+            throw new IllegalArgumentException("HapticLoop.setMode: mode must not be null");
+        }
+        this.mode = mode;
+    }
+
+    /** Sets how many model steps a tick runs in HAPTICS_ONLY mode (>= 1; default 1). */
+    public void setStepsPerTick(int n) {
+        beforeStart("setStepsPerTick");
+        if (n < 1) {
+            throw new IllegalArgumentException("HapticLoop.setStepsPerTick: must be >= 1, got " + n);
+        }
+        stepsPerTick = n;
+    }
+
+    /** Sets the position gain alpha (model units per metre; finite, != 0; default 200). */
+    public void setPositionGain(double alpha) {
+        beforeStart("setPositionGain");
+        if (!Double.isFinite(alpha) || alpha == 0) {
+            throw new IllegalArgumentException("HapticLoop.setPositionGain: alpha must be finite and non-zero, got " + alpha);
+        }
+        this.alpha = alpha;
+    }
+
+    /** Sets the force gain beta (newtons per model force unit; finite, >= 0; default 100). */
+    public void setForceGain(double beta) {
+        beforeStart("setForceGain");
+        if (!(beta >= 0) || !Double.isFinite(beta)) {
+            throw new IllegalArgumentException("HapticLoop.setForceGain: beta must be a finite number >= 0, got " + beta);
+        }
+        this.beta = beta;
+    }
+
+    /** Sets the model position of the device origin (model units). */
+    public void setOrigin(double x, double y, double z) {
+        beforeStart("setOrigin");
+        if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
+            throw new IllegalArgumentException("HapticLoop.setOrigin: must be finite, got (" + x + ", " + y + ", " + z + ")");
+        }
+        ox = x;
+        oy = y;
+        oz = z;
+    }
+
+    /** Mirrors x between device and model (default true, as the paper's sketches). */
+    public void setMirrorX(boolean mirror) {
+        beforeStart("setMirrorX");
+        mirrorX = mirror;
+    }
+
+    /**
+     * Calibrated mode for a model in REAL_UNITS: alpha = 1 (metres), beta = 1 (newtons), torque gain 1, no
+     * mirroring, so a 1 g virtual mass weighs 1 g in the hand (within the device's own inertia and friction).
+     * In HAPTICS_ONLY mode the loop renders the mean force over the tick's steps; in AUDIO mode the avatar
+     * force is summed over the audio steps since the last tick, so set beta to (haptic rate / audio rate)
+     * after this call.
+     */
+    public void useRealUnits() {
+        beforeStart("useRealUnits");
+        alpha = 1;
+        beta = 1;
+        torqueGain = 1;
+        mirrorX = false;
+    }
+
+    /** Sets the gain on J^T F (default 1: physical torques; hAPI's 2018 Pantograph used 0.1 / l). */
+    public void setTorqueGain(double gain) {
+        beforeStart("setTorqueGain");
+        if (!(gain >= 0) || !Double.isFinite(gain)) {
+            throw new IllegalArgumentException("HapticLoop.setTorqueGain: gain must be a finite number >= 0, got " + gain);
+        }
+        torqueGain = gain;
+    }
+
+    /** Sets the largest joint torque in N m (> 0; default 0.123, the firmware's limit); larger ones are scaled down. */
+    public void setTorqueLimit(double nm) {
+        beforeStart("setTorqueLimit");
+        if (!(nm > 0) || !Double.isFinite(nm)) {
+            throw new IllegalArgumentException("HapticLoop.setTorqueLimit: limit must be a finite number > 0 N m, got " + nm);
+        }
+        torqueLimit = nm;
+    }
+
+    /** Sets the runaway force in newtons (> 0; default 20): a larger device force gives zero torque. */
+    public void setForceLimit(double newtons) {
+        beforeStart("setForceLimit");
+        if (!(newtons > 0) || !Double.isFinite(newtons)) {
+            throw new IllegalArgumentException("HapticLoop.setForceLimit: limit must be a finite number > 0 N, got " + newtons);
+        }
+        forceLimit = newtons;
+    }
+
+    /** Sets after how many milliseconds without a tick the watchdog zeroes the torque (>= 1; default 20). */
+    public void setWatchdogMillis(int ms) {
+        beforeStart("setWatchdogMillis");
+        if (ms < 1) {
+            throw new IllegalArgumentException("HapticLoop.setWatchdogMillis: must be >= 1 ms, got " + ms);
+        }
+        watchdogMillis = ms;
+    }
+
+    /** Sets after how many milliseconds without a reply the link counts as lost (>= 1; default 500). */
+    public void setLinkTimeoutMillis(int ms) {
+        beforeStart("setLinkTimeoutMillis");
+        if (ms < 1) {
+            throw new IllegalArgumentException("HapticLoop.setLinkTimeoutMillis: must be >= 1 ms, got " + ms);
+        }
+        linkTimeoutMillis = ms;
+    }
+
+    /** Sets how long before each tick the thread spins instead of sleeping, in microseconds (0..1000; default 60). */
+    public void setSpinMicros(int us) {
+        beforeStart("setSpinMicros");
+        if (us < 0 || us > 1000) {
+            throw new IllegalArgumentException("HapticLoop.setSpinMicros: must be 0..1000 us, got " + us);
+        }
+        spinMicros = us;
+    }
+
+    /** Starts the loop thread and its watchdog. The device must be set up. */
+    public synchronized void start() {
+        if (thread != null) {
+            throw new IllegalStateException("HapticLoop.start: already started");
+        }
+        if (!device.isConfigured()) {
+            throw new IllegalStateException("HapticLoop.start: call device_set_parameters() on the device first");
+        }
+        running = true;
+        Thread t = new Thread(this::run, "tactus-haptic-loop");
+        t.setDaemon(true);
+        t.setPriority(Thread.MAX_PRIORITY);
+        thread = t;
+        Thread w = new Thread(this::watch, "tactus-haptic-watchdog");
+        w.setDaemon(true);
+        watchdog = w;
+        lastTickStart = System.nanoTime();
+        t.start();
+        w.start();
+    }
+
+    /** Stops the loop (waits for it) and sends zero torques; the board stays open. */
+    public void stop() {
+        running = false;
+        Thread t = thread;
+        if (t != null && t != Thread.currentThread()) {
+            try {
+                t.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        Thread w = watchdog;
+        if (w != null) {
+            w.interrupt();
+        }
+        device.board().zeroTorques();
+    }
+
+    /** Stops the loop and closes the board (zero torques, then the port). */
+    @Override
+    public void close() {
+        stop();
+        device.board().close();
+    }
+
+    /** Same as {@link #close()}, for Processing's dispose. */
+    public void dispose() {
+        close();
+    }
+
+    /** True while the loop thread runs. */
+    public boolean isRunning() {
+        return running;
+    }
+
+    /** Why the loop stopped by itself (lost link, model failure), or null. */
+    public String failure() {
+        return failure;
+    }
+
+    /** The handle position of the last tick in metres, written into out[0], out[1]. */
+    public void devicePosition(double[] out) {
+        out[0] = devX;
+        out[1] = devY;
+    }
+
+    /** The device force (N) of the last tick, written into out[0], out[1] (zero when a fault was caught). */
+    public void deviceForce(double[] out) {
+        out[0] = forceX;
+        out[1] = forceY;
+    }
+
+    /** The torque (N m) sent to joint j (1 or 2) at the last tick. */
+    public double torque(int joint) {
+        return joint == 1 ? torque1 : torque2;
+    }
+
+    /** Ticks run so far. */
+    public long ticks() {
+        return ticks;
+    }
+
+    /** A snapshot of the telemetry. */
+    public HapticTelemetry telemetry() {
+        long n = ticks;
+        int k = (int) Math.min(Math.max(0, n - 1), WINDOW);
+        long[] p = periods.clone();
+        long[] c = computes.clone();
+        long nominal = Math.round(1e9 / rateHz);
+        // the first tick has no period; the window holds ticks 1..n-1 (periods) and 0..n-1 (computes)
+        return new HapticTelemetry(rateHz, n, (lastNanos - startNanos) / 1e9, missed,
+                p, c, k, nominal, jitterMax, computeMax, stale, faults, clamped, watchdogTrips);
+    }
+
+    /** Prints the telemetry to standard output. */
+    public void printTelemetry() {
+        System.out.println(telemetry());
+    }
+
+    // ------------------------------------------------------------------------------------------ the thread
+
+    private void run() {
+        long period = Math.round(1e9 / rateHz);
+        long spin = spinMicros * 1000L;
+        try {
+            device.device_read_request();   // so that the first tick finds a reply
+        } catch (RuntimeException e) {
+            fail("the first request to the board failed: " + e.getMessage());
+            return;
+        }
+        long next = System.nanoTime() + period;
+        long prevStart = 0;
+        startNanos = next;
+        while (running) {
+            long now = System.nanoTime();
+            long wait = next - now;
+            if (wait > spin) {
+                LockSupport.parkNanos(wait - spin);
+            }
+            while (System.nanoTime() - next < 0) {
+                Thread.onSpinWait();
+            }
+            long start = System.nanoTime();
+            lastTickStart = start;
+            if (prevStart != 0) {
+                long p = start - prevStart;
+                if (p > period + period / 2) {
+                    missed++;
+                }
+                long j = Math.abs(p - period);
+                if (j > jitterMax) {
+                    jitterMax = j;
+                }
+                periods[(int) ((ticks - 1) & (WINDOW - 1))] = p;
+            }
+            prevStart = start;
+            if (!tick(period)) {
+                break;
+            }
+            long end = System.nanoTime();
+            long c = end - start;
+            computes[(int) (ticks & (WINDOW - 1))] = c;
+            if (c > computeMax) {
+                computeMax = c;
+            }
+            lastNanos = end;
+            ticks++;
+            next += period;
+            if (end - next > period) {
+                next = end + period;   // fell behind by more than a period: do not burst to catch up
+            }
+        }
+        running = false;
+    }
+
+    /** One tick; returns false if the loop must stop. */
+    private boolean tick(long period) {
+        boolean fresh;
+        try {
+            fresh = device.poll_data();
+        } catch (HaplyLinkException e) {
+            fail(e.getMessage());
+            return false;
+        }
+        if (fresh) {
+            staleRun = 0;
+            double th1 = Math.toRadians(device.angle(1));
+            double th2 = Math.toRadians(device.angle(2));
+            if (kin.forward(th1, th2)) {
+                devX = kin.x();
+                devY = kin.y();
+            }
+        } else {
+            stale++;
+            staleRun++;
+            if ((long) staleRun * period > linkTimeoutMillis * 1_000_000L) {
+                device.board().close();
+                fail("no reply from the Haply board on " + device.board().describe() + " for " + linkTimeoutMillis
+                        + " ms: check the USB cable and the board's power; the motors were sent zero torque");
+                return false;
+            }
+        }
+        double sx = mirrorX ? -1 : 1;
+        double x = devX;
+        double y = devY;
+        boolean poseOk = !Double.isNaN(x) && kin.isValid();
+        try {
+            if (poseOk) {
+                avatar.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
+            }
+            if (mode == Mode.HAPTICS_ONLY) {
+                avatar.step(stepsPerTick);
+            }
+            avatar.takeForce(force);
+        } catch (RuntimeException e) {
+            writeTorques(0, 0);
+            fail("the model failed in the haptic loop, zero torque sent: " + e);
+            return false;
+        }
+        // haptics-only: the avatar force is summed over the tick's steps; render its mean
+        double perStep = mode == Mode.HAPTICS_ONLY ? 1.0 / stepsPerTick : 1.0;
+        double fx = sx * beta * perStep * force[0];
+        double fy = beta * perStep * force[1];
+        if (Double.isNaN(x)) {
+            forceX = 0;                      // no position yet (start-up): nothing to render
+            forceY = 0;
+            return writeTorques(0, 0);
+        }
+        if (!poseOk || !Double.isFinite(fx) || !Double.isFinite(fy) || Math.hypot(fx, fy) > forceLimit) {
+            faults++;
+            forceX = 0;
+            forceY = 0;
+            return writeTorques(0, 0);
+        }
+        forceX = fx;
+        forceY = fy;
+        kin.torques(fx, fy, torqueGain, tau);
+        double m = Math.max(Math.abs(tau[0]), Math.abs(tau[1]));
+        if (m > torqueLimit) {
+            double s = torqueLimit / m;
+            tau[0] *= s;
+            tau[1] *= s;
+            clamped++;
+        }
+        return writeTorques(tau[0], tau[1]);
+    }
+
+    private boolean writeTorques(double t1, double t2) {
+        torque1 = t1;
+        torque2 = t2;
+        try {
+            device.set_actuator_torque(1, (float) t1);
+            device.set_actuator_torque(2, (float) t2);
+            device.device_write_torques();
+            return true;
+        } catch (HaplyLinkException e) {
+            fail(e.getMessage());
+            return false;
+        }
+    }
+
+    private void fail(String message) {
+        failure = message;
+        running = false;
+        System.err.println("tactus haptic loop stopped: " + message);
+    }
+
+    private void watch() {
+        long limit = watchdogMillis * 1_000_000L;
+        long poll = Math.max(250_000L, limit / 4);
+        boolean tripped = false;
+        while (running) {
+            LockSupport.parkNanos(poll);
+            if (Thread.interrupted()) {
+                break;
+            }
+            long since = System.nanoTime() - lastTickStart;
+            if (since > limit) {
+                if (!tripped && running) {
+                    tripped = true;
+                    watchdogTrips++;
+                    device.board().zeroTorques();
+                }
+            } else {
+                tripped = false;
+            }
+        }
+    }
+
+    private void beforeStart(String op) {
+        if (thread != null) {
+            throw new IllegalStateException("HapticLoop." + op + ": configure the loop before start()");
+        }
+    }
+}

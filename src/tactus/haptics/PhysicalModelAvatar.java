@@ -1,0 +1,48 @@
+package tactus.haptics;
+
+import tactus.PhysicalModel;
+import tactus.Vect3D;
+
+/**
+ * {@link AvatarLink} over the public {@link PhysicalModel} API: a HapticInput3D avatar by name, positioned
+ * with {@code setHapticPosition} and read with {@code getHapticForce}. The only class to change when the
+ * model's haptic API changes. Note: {@code getHapticForce(String)} allocates one Vect3D per call today.
+ */
+public final class PhysicalModelAvatar implements AvatarLink {
+    private final PhysicalModel model;
+    private final String avatar;
+    private final Vect3D target = new Vect3D();
+
+    /** Links to the avatar (a HapticInput3D) of this name in the model. */
+    public PhysicalModelAvatar(PhysicalModel model, String avatar) {
+        if (model == null) {
+            throw new IllegalArgumentException("PhysicalModelAvatar: model must not be null");
+        }
+        if (avatar == null || avatar.isEmpty()) {
+            throw new IllegalArgumentException("PhysicalModelAvatar: avatar name must be a non-empty string, got "
+                    + (avatar == null ? "null" : "\"\""));
+        }
+        this.model = model;
+        this.avatar = avatar;
+        model.getHapticForce(avatar);   // fails now, naming the avatar, if it is not an input module
+    }
+
+    @Override
+    public void setTarget(double x, double y, double z) {
+        target.set(x, y, z);
+        model.setHapticPosition(avatar, target);
+    }
+
+    @Override
+    public void takeForce(double[] out) {
+        Vect3D f = model.getHapticForce(avatar);
+        out[0] = f.x;
+        out[1] = f.y;
+        out[2] = f.z;
+    }
+
+    @Override
+    public void step(int n) {
+        model.computeNSteps(n);
+    }
+}

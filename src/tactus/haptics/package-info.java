@@ -1,0 +1,11 @@
+/**
+ * Haply haptics: an hAPI-compatible device layer ({@link tactus.haptics.Board},
+ * {@link tactus.haptics.Device}, {@link tactus.haptics.Mechanisms}, {@link tactus.haptics.Pantograph},
+ * {@link tactus.haptics.Actuator}, {@link tactus.haptics.Sensor}, {@link tactus.haptics.Pwm}) that speaks
+ * the Haply V2 wire protocol over a {@link tactus.haptics.Transport}, pantograph kinematics with
+ * hardware presets, and port discovery.
+ *
+ * <p>A sketch written for hAPI 2.x ports by deleting the hAPI {@code .java} files from its folder and
+ * adding {@code import tactus.haptics.*;}. The board emulator lives in {@code tactus.haptics.emulator}.
+ */
+package tactus.haptics;

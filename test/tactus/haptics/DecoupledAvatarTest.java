@@ -1,0 +1,105 @@
+package tactus.haptics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.locks.LockSupport;
+import org.junit.jupiter.api.Test;
+
+/** The decoupled avatar: the haptic side never waits, and no force is lost or counted twice. */
+class DecoupledAvatarTest {
+
+    /** A slow model: each exchange holds a lock for a while and adds a known force. */
+    private static final class SlowLink implements AvatarLink {
+        volatile double lastX;
+        long calls;
+        final Object lock = new Object();
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            synchronized (lock) {
+                lastX = x;
+            }
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            synchronized (lock) {
+                LockSupport.parkNanos(300_000);
+                calls++;
+                out[0] = 1;
+                out[1] = 2;
+                out[2] = 0.5;
+            }
+        }
+
+        @Override
+        public void step(int n) {
+        }
+    }
+
+    @Test
+    void everyForceArrivesExactlyOnceAndTheTargetGetsThrough() {
+        SlowLink slow = new SlowLink();
+        double[] sum = new double[3];
+        double[] f = new double[3];
+        try (DecoupledAvatar a = new DecoupledAvatar(slow)) {
+            for (int i = 0; i < 300; i++) {
+                a.setTarget(i, 0, 0);
+                a.takeForce(f);
+                sum[0] += f[0];
+                sum[1] += f[1];
+                sum[2] += f[2];
+                LockSupport.parkNanos(200_000);
+            }
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (slow.lastX != 299 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            LockSupport.parkNanos(20_000_000);
+            a.takeForce(f);
+            sum[0] += f[0];
+            sum[1] += f[1];
+            sum[2] += f[2];
+            assertEquals(299.0, slow.lastX, "the newest target reached the model");
+            long calls;
+            synchronized (slow.lock) {
+                calls = slow.calls;
+            }
+            assertTrue(calls > 10, "exchanges: " + calls);
+            assertEquals(calls, a.exchanges());
+            // the totals handed out equal the totals produced: nothing lost, nothing twice
+            assertEquals(calls * 1.0, sum[0], 1e-9);
+            assertEquals(calls * 2.0, sum[1], 1e-9);
+            assertEquals(calls * 0.5, sum[2], 1e-9);
+        }
+    }
+
+    @Test
+    void aFailingModelGivesANonFiniteForce() {
+        AvatarLink failing = new AvatarLink() {
+            @Override
+            public void setTarget(double x, double y, double z) {
+                throw new IllegalStateException("diverged");
+            }
+
+            @Override
+            public void takeForce(double[] out) {
+            }
+
+            @Override
+            public void step(int n) {
+            }
+        };
+        double[] f = new double[3];
+        try (DecoupledAvatar a = new DecoupledAvatar(failing)) {
+            a.setTarget(1, 2, 3);
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (a.exchanges() == 0 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            a.takeForce(f);
+            assertTrue(Double.isNaN(f[0]) && Double.isNaN(f[1]));
+        }
+    }
+}
