@@ -1,0 +1,77 @@
+package tactus.audio;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import tactus.PhysicalModel;
+import tactus.Vect3D;
+
+/**
+ * Generating audio allocates nothing per sample: a PhyUGen over the plucked string with an avatar coupled
+ * through an AvatarExchange, contacts from the avatar to every mass, and every kind of listening point
+ * (displacement, elongation, tension), in stereo, with and without oversampling. The UGen is ticked the
+ * way Minim ticks it (UGen.tick) while the JVM's per-thread allocation counter is read around the loop;
+ * the counter's own cost is measured and subtracted, and a one-off JIT event is forgiven by repeating
+ * the measurement up to three times (a real per-sample allocation shows in every repetition).
+ */
+class PhyUGenAllocationTest {
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2})
+    void tickAllocatesNothing(int oversampling) {
+        PhysicalModel pm = new PhysicalModel(44100);
+        StringModel.build(pm, 7, 0.001);
+        pm.addHapticInput3D("avatar", new Vect3D(1.5, 0.5, 0), 30);
+        for (int i = 1; i <= StringModel.N; i++) {
+            pm.addContact3D("c" + i, 0.05, 0.01, 0.001, "avatar", StringModel.mass(i));
+        }
+        pm.init();
+        PhyUGen u = new PhyUGen(pm);
+        u.listenToMass(StringModel.mass(3), SteppedModel.Y, 100, -0.5);
+        u.listenToElongation("s5", 10, 0.5);
+        u.listenToTension("s9", 10, 0);
+        u.listenToTension("c10", 10, 0);
+        AvatarExchange ex = new AvatarExchange();
+        u.attachAvatar("avatar", ex);
+        u.setOversampling(oversampling);
+        u.setSampleRate(44100);
+        u.setChannelCount(2);
+        float[] frame = new float[2];
+        double[] force = new double[3];
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        assertTrue(mx.isThreadAllocatedMemorySupported() && mx.isThreadAllocatedMemoryEnabled());
+        long tid = Thread.currentThread().getId();
+        // warm-up; the avatar sweeps through the string so contacts engage and release
+        for (int i = 0; i < 200_000; i++) {
+            if (i % 44 == 0) {
+                ex.publishPosition(1.5, 0.5 - i * 1e-5, 0);
+                ex.takeForce(force);
+            }
+            u.tick(frame);
+        }
+        long[] measured = {-1, -1, -1};
+        long last = -1;
+        for (int attempt = 0; attempt < 3 && last != 0; attempt++) {
+            long b0 = mx.getThreadAllocatedBytes(tid);
+            long b1 = mx.getThreadAllocatedBytes(tid);
+            long baseline = b1 - b0;
+            long a0 = mx.getThreadAllocatedBytes(tid);
+            for (int i = 0; i < 100_000; i++) {
+                if (i % 44 == 0) {
+                    ex.publishPosition(1.5, -1.5 + i * 2e-5, 0);
+                    ex.takeForce(force);
+                }
+                u.tick(frame);
+            }
+            long a1 = mx.getThreadAllocatedBytes(tid);
+            measured[attempt] = (a1 - a0) - baseline;
+            last = measured[attempt];
+        }
+        assertEquals(0, last, "bytes allocated by 10^5 samples: " + measured[0] + ", " + measured[1] + ", "
+                + measured[2]);
+        assertTrue(Float.isFinite(frame[0]) && Float.isFinite(frame[1]));
+    }
+}
