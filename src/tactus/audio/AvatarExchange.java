@@ -121,7 +121,9 @@ public final class AvatarExchange {
         px = x;
         py = y;
         pz = z;
-        POSITION_SEQ.setRelease(this, s + 2);
+        // a volatile store (a full fence on x86): the position is visible to the audio thread before this
+        // method returns, so "published" has a definite moment; 1 kHz makes its cost irrelevant
+        POSITION_SEQ.setVolatile(this, s + 2);
     }
 
     /**
