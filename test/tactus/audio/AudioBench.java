@@ -7,7 +7,9 @@ import tactus.PhysicalModel;
 import tactus.Vect3D;
 
 /**
- * Hand-run benchmark for docs/audio.md (not a test; never run by gradle test). Prints:
+ * Hand-run benchmark for docs/audio.md (not a test; never run by gradle test). Per-call costs are thread CPU
+ * time (ThreadMXBean), so time spent descheduled on a busy machine does not count; buffer times are wall
+ * time, since that is what an audio deadline sees. Prints:
  * <ol>
  * <li>cost per sample of PhyUGen.tick against bare computeStep() on the same string;</li>
  * <li>the real-time factor of PhyUGen for longer strings (the largest one rendered in real time);</li>
@@ -49,7 +51,10 @@ public final class AudioBench {
         return pm;
     }
 
-    /** Median ns per call over rounds of roughly 0.1-0.2 s each, after a warm-up. */
+    /** Thread CPU time: the machine is shared, so time spent descheduled must not count. */
+    private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /** Median CPU ns per call over rounds of roughly 0.1-0.2 s each, after a warm-up. */
     private static double nsPerCall(Runnable r, long callsPerRound) {
         return paired(r, r, callsPerRound)[0];
     }
@@ -68,15 +73,15 @@ public final class AudioBench {
         double[] tb = new double[rounds];
         double[] ratio = new double[rounds];
         for (int k = 0; k < rounds; k++) {
-            long t0 = System.nanoTime();
+            long t0 = CPU.getCurrentThreadCpuTime();
             for (long i = 0; i < callsPerRound; i++) {
                 a.run();
             }
-            long t1 = System.nanoTime();
+            long t1 = CPU.getCurrentThreadCpuTime();
             for (long i = 0; i < callsPerRound; i++) {
                 b.run();
             }
-            long t2 = System.nanoTime();
+            long t2 = CPU.getCurrentThreadCpuTime();
             ta[k] = (t1 - t0) / (double) callsPerRound;
             tb[k] = (t2 - t1) / (double) callsPerRound;
             ratio[k] = tb[k] / ta[k];
@@ -93,10 +98,14 @@ public final class AudioBench {
 
     public static void main(String[] args) throws Exception {
         quick = args.length > 0 && args[0].equals("quick");
+        if (args.length > 0 && args[0].equals("realtime")) {
+            realTime(new int[] {3000, 3500, 4000, 4500, 5000});
+            return;
+        }
         System.out.println("JVM " + System.getProperty("java.vm.name") + " " + System.getProperty("java.version") + ", "
                 + Runtime.getRuntime().availableProcessors() + " cores");
         System.out.println();
-        System.out.println("## PhyUGen cost per sample vs bare computeStep() (paired rounds; overhead = median ratio - 1, min..max)");
+        System.out.println("## PhyUGen cost per sample vs bare computeStep() (CPU ns, paired rounds; overhead = median ratio - 1, min..max)");
         System.out.println("| string masses | computeStep ns | PhyUGen.tick ns | overhead | with avatar + 70 contacts: sketch loop ns | PhyUGen ns | overhead |");
         System.out.println("|---|---|---|---|---|---|---|");
         for (int n : new int[] {70, 1000, 10000}) {
@@ -133,20 +142,24 @@ public final class AudioBench {
                     avatar[0], avatar[1], 100 * (avatar[2] - 1), 100 * (avatar[3] - 1), 100 * (avatar[4] - 1));
         }
         System.out.println();
-        System.out.println("## Real-time factor of PhyUGen (one listening point, mono) on one core");
-        System.out.println("| string masses | ns per sample | real-time factor (22,676 ns per sample at 44.1 kHz) |");
+        realTime(new int[] {1000, 2000, 3000, 4000, 5000, 10000, 20000, 40000});
+        bufferTimes(1000);
+        bufferTimes(10000);
+    }
+
+    private static void realTime(int[] sizes) {
+        System.out.println("## Real-time factor of PhyUGen (one listening point, mono) on one core (CPU ns)");
+        System.out.println("| string masses (elements) | ns per sample | real-time factor (22,676 ns per sample at 44.1 kHz) |");
         System.out.println("|---|---|---|");
-        for (int n : new int[] {1000, 5000, 10000, 20000, 40000, 80000}) {
+        for (int n : sizes) {
             PhyUGen u = new PhyUGen(string(n, false));
             u.listenToMass("m3", SteppedModel.Y, 100, 0);
             u.setSampleRate(RATE);
             float[] frame = new float[1];
             double p = nsPerCall(() -> u.tick(frame), callsFor(n));
-            System.out.printf(Locale.ROOT, "| %d | %.0f | %.2fx |%n", n, p, 1e9 / RATE / p);
+            System.out.printf(Locale.ROOT, "| %d (%d) | %.0f | %.2fx |%n", n, 2 * n + 1, p, 1e9 / RATE / p);
         }
         System.out.println();
-        bufferTimes(1000);
-        bufferTimes(10000);
     }
 
     /** Paced buffers with a haptic and a draw thread running. */
