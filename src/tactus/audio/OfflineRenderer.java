@@ -58,10 +58,15 @@ public final class OfflineRenderer {
      */
     public static Result renderToWav(UGen graph, float sampleRate, int channels, double seconds, File wav,
             WavWriter.Encoding encoding, PrintStream progress) throws IOException {
+        return renderToWav(graph, sampleRate, channels, seconds, wav, encoding, progress, PROGRESS_EVERY_NANOS);
+    }
+
+    static Result renderToWav(UGen graph, float sampleRate, int channels, double seconds, File wav,
+            WavWriter.Encoding encoding, PrintStream progress, long progressEveryNanos) throws IOException {
         long frames = frameCount(sampleRate, seconds);
         try (WavWriter w = new WavWriter(wav, Math.round(sampleRate), channels, frames, encoding)) {
             return render(graph, sampleRate, channels, frames, (frame, i) -> w.writeFrame(frame),
-                    progress, wav.getName());
+                    progress, wav.getName(), progressEveryNanos);
         }
     }
 
@@ -81,7 +86,7 @@ public final class OfflineRenderer {
                 for (int c = 0; c < channels; c++) {
                     out[c][(int) i] = frame[c];
                 }
-            }, null, "array");
+            }, null, "array", PROGRESS_EVERY_NANOS);
         } catch (IOException e) {
             throw new IllegalStateException(e); // the array sink never throws
         }
@@ -97,7 +102,7 @@ public final class OfflineRenderer {
     }
 
     private static Result render(UGen graph, float sampleRate, int channels, long frames, FrameSink sink,
-            PrintStream progress, String label) throws IOException {
+            PrintStream progress, String label, long progressEveryNanos) throws IOException {
         if (graph == null) {
             throw new IllegalArgumentException("OfflineRenderer: the graph must not be null");
         }
@@ -114,7 +119,7 @@ public final class OfflineRenderer {
             float[] frame = new float[channels];
             double peak = 0;
             long start = System.nanoTime();
-            long nextReport = start + PROGRESS_EVERY_NANOS;
+            long nextReport = start + progressEveryNanos;
             for (long i = 0; i < frames; i++) {
                 java.util.Arrays.fill(frame, 0f);
                 root.tick(frame);
@@ -129,13 +134,13 @@ public final class OfflineRenderer {
                         double done = (i + 1) / (double) sampleRate;
                         progress.printf(java.util.Locale.ROOT, "rendering %s: %3.0f%% (%.1f of %.1f s), %.1fx real time%n",
                                 label, 100.0 * (i + 1) / frames, done, frames / (double) sampleRate, done / wall);
-                        nextReport = now + PROGRESS_EVERY_NANOS;
+                        nextReport = now + progressEveryNanos;
                     }
                 }
             }
             double wall = (System.nanoTime() - start) * 1e-9;
             Result r = new Result(frames, peak, wall, sampleRate);
-            if (progress != null && wall * 1e9 >= PROGRESS_EVERY_NANOS) {
+            if (progress != null && wall * 1e9 >= progressEveryNanos) {
                 progress.println("rendered " + label + ": " + r);
             }
             return r;
