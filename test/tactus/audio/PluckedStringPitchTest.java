@@ -34,8 +34,50 @@ class PluckedStringPitchTest {
         }
     }
 
+    /**
+     * A sketch's own PhyUGen as the paper's sketches write it (own mdl field, own sampleRateChanged and
+     * uGenerate with computeStep, a position read and the 0.95 high-pass), with only "extends UGen" turned
+     * into "extends tactus.audio.PhyUGen": it runs unchanged on top of this class.
+     */
+    static final class PaperSketchUGen extends PhyUGen {
+        PhysicalModel mdl;
+        float prevSample;
+        float audioOut;
+
+        PaperSketchUGen(int sampleRate) {
+            super(sampleRate);
+            this.mdl = new PhysicalModel(sampleRate, 60);
+            mdl.setGravity(0);
+            mdl.setFriction(0);
+            StringModel.build(mdl, 7, 0.001);
+            this.mdl.init();
+        }
+
+        @Override
+        protected void sampleRateChanged() {
+            this.mdl.setSimRate((int) sampleRate());
+        }
+
+        @Override
+        protected void uGenerate(float[] channels) {
+            float sample;
+            synchronized (mdl.getLock()) {
+                this.mdl.computeStep();
+                sample = (float) (300 * this.mdl.getMatPosition(StringModel.mass(3)).y);
+                audioOut = sample - prevSample + 0.95f * audioOut;
+                prevSample = sample;
+            }
+            java.util.Arrays.fill(channels, audioOut);
+        }
+    }
+
     @TempDir
     Path dir;
+
+    @Test
+    void aSketchWrittenThePapersWayRunsOnTopOfIt() throws Exception {
+        assertPartials(new PaperSketchUGen(RATE), 1, 1, "paper-sketch");
+    }
 
     @Test
     void partialsMatchDiscreteTheoryWithinOneCent() throws Exception {
