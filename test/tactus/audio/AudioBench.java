@@ -102,6 +102,18 @@ public final class AudioBench {
             realTime(new int[] {3000, 3500, 4000, 4500, 5000});
             return;
         }
+        if (args.length > 0 && args[0].equals("threads")) {
+            // the same paced buffers with no other thread, with the haptic thread, and with haptic + draw
+            System.out.println("## Per-buffer time of a 1000-mass string with avatar, by the other threads running");
+            System.out.println("| other threads | buffer frames | period ms | buffers | p50 ms | p99.9 ms | max ms | buffers over their period |");
+            System.out.println("|---|---|---|---|---|---|---|---|");
+            for (int bs : new int[] {256, 1024}) {
+                for (int mode = 0; mode < 3; mode++) {
+                    bufferRun(1000, bs, mode >= 1, mode >= 2, new String[] {"alone", "haptic", "haptic + draw"}[mode]);
+                }
+            }
+            return;
+        }
         System.out.println("JVM " + System.getProperty("java.vm.name") + " " + System.getProperty("java.version") + ", "
                 + Runtime.getRuntime().availableProcessors() + " cores");
         System.out.println();
@@ -168,6 +180,16 @@ public final class AudioBench {
         System.out.println("| buffer frames | period ms | buffers | p50 ms | p99.9 ms | max ms | buffers over their period |");
         System.out.println("|---|---|---|---|---|---|---|");
         for (int bs : new int[] {128, 256, 512, 1024, 2048}) {
+            bufferRun(n, bs, true, true, null);
+        }
+        System.out.println();
+    }
+
+    private static void bufferRun(int n, int bs, boolean withHaptic, boolean withDraw, String label) throws Exception {
+        {
+            if (label != null) {
+                System.out.print("| " + label + " ");
+            }
             PhysicalModel pm = string(n, true);
             PhyUGen u = new PhyUGen(pm);
             u.listenToMass("m3", SteppedModel.Y, 100, 0);
@@ -182,12 +204,12 @@ public final class AudioBench {
             int buffers = (int) (seconds * RATE / bs);
             long[] times = new long[buffers];
             long period = Math.round(bs * 1e9 / RATE);
-            final boolean[] stop = {false};
+            final java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
             Thread haptic = new Thread(() -> {
                 double[] f = new double[3];
                 long next = System.nanoTime();
                 int k = 0;
-                while (!stop[0]) {
+                while (!stop.get()) {
                     ex.publishPosition(0.5 + 0.001 * Math.sin(k++ * 0.01), 0.5, 0);
                     ex.takeForce(f);
                     next += 1_000_000;
@@ -197,7 +219,7 @@ public final class AudioBench {
             Thread draw = new Thread(() -> {
                 Vect3D v = new Vect3D();
                 long next = System.nanoTime();
-                while (!stop[0]) {
+                while (!stop.get()) {
                     for (int i = 1; i <= n; i++) {
                         pm.getMatPosition("m" + i, v);
                     }
@@ -207,8 +229,12 @@ public final class AudioBench {
             }, "draw");
             haptic.setDaemon(true);
             draw.setDaemon(true);
-            haptic.start();
-            draw.start();
+            if (withHaptic) {
+                haptic.start();
+            }
+            if (withDraw) {
+                draw.start();
+            }
             long deadline = System.nanoTime();
             int over = 0;
             for (int b = 0; b < buffers; b++) {
@@ -226,14 +252,17 @@ public final class AudioBench {
                     LockSupport.parkNanos(wait);
                 }
             }
-            stop[0] = true;
-            haptic.join();
-            draw.join();
+            stop.set(true);
+            if (withHaptic) {
+                haptic.join();
+            }
+            if (withDraw) {
+                draw.join();
+            }
             Arrays.sort(times);
             System.out.printf(Locale.ROOT, "| %d | %.2f | %d | %.3f | %.3f | %.3f | %d |%n", bs, period / 1e6, buffers,
                     times[buffers / 2] / 1e6, times[(int) Math.min(buffers - 1, Math.floor(buffers * 0.999))] / 1e6,
                     times[buffers - 1] / 1e6, over);
         }
-        System.out.println();
     }
 }
