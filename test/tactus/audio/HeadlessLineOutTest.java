@@ -60,7 +60,9 @@ class HeadlessLineOutTest {
             assertNotNull(out);
             String message = text.toString(StandardCharsets.UTF_8);
             assertTrue(message.contains("no sound output") && message.contains("OfflineRenderer"), message);
-            assertNotNull(LineOut.orSilent(null, Minim.MONO, 256, 22050f));
+            AudioOutput fallback = LineOut.orSilent(null, Minim.MONO, 256, 22050f);
+            assertNotNull(fallback);
+            fallback.close();
 
             PhysicalModel pm = new PhysicalModel(44100);
             StringModel.build(pm, 7, 0.001);
