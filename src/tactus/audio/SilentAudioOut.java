@@ -63,7 +63,7 @@ public final class SilentAudioOut implements AudioOut {
         }
         if (t != null && t != Thread.currentThread()) {
             try {
-                t.join(2000);
+                t.join(5000);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
