@@ -17,7 +17,7 @@ import tactus.Vect3D;
  * sizes, paced in real time, while a 1 kHz haptic thread uses the AvatarExchange and a 60 fps "draw"
  * thread reads every mass position through the model's locked getters.</li>
  * </ol>
- * Usage: java -cp CLASSPATH tactus.audio.AudioBench [quick]
+ * Usage: java -cp CLASSPATH tactus.audio.AudioBench [quick | realtime | buffers | threads]
  */
 public final class AudioBench {
     private static final int RATE = 44100;
@@ -100,6 +100,10 @@ public final class AudioBench {
         quick = args.length > 0 && args[0].equals("quick");
         if (args.length > 0 && args[0].equals("realtime")) {
             realTime(new int[] {3000, 3500, 4000, 4500, 5000});
+            return;
+        }
+        if (args.length > 0 && args[0].equals("buffers")) {
+            bufferTimes(1000);
             return;
         }
         if (args.length > 0 && args[0].equals("threads")) {
