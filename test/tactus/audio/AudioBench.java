@@ -17,7 +17,7 @@ import tactus.Vect3D;
  * sizes, paced in real time, while a 1 kHz haptic thread uses the AvatarExchange and a 60 fps "draw"
  * thread reads every mass position through the model's locked getters.</li>
  * </ol>
- * Usage: java -cp CLASSPATH tactus.audio.AudioBench [quick | realtime | buffers | threads]
+ * Usage: java -cp CLASSPATH tactus.audio.AudioBench [quick | overhead | realtime | buffers | threads]
  */
 public final class AudioBench {
     private static final int RATE = 44100;
@@ -102,6 +102,7 @@ public final class AudioBench {
             realTime(new int[] {3000, 3500, 4000, 4500, 5000});
             return;
         }
+        boolean overheadOnly = args.length > 0 && args[0].equals("overhead");
         if (args.length > 0 && args[0].equals("buffers")) {
             bufferTimes(1000);
             return;
@@ -158,6 +159,9 @@ public final class AudioBench {
                     avatar[0], avatar[1], 100 * (avatar[2] - 1), 100 * (avatar[3] - 1), 100 * (avatar[4] - 1));
         }
         System.out.println();
+        if (overheadOnly) {
+            return;
+        }
         realTime(new int[] {1000, 2000, 3000, 4000, 5000, 10000, 20000, 40000});
         bufferTimes(1000);
         bufferTimes(10000);
