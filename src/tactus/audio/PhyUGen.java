@@ -1,0 +1,409 @@
+package tactus.audio;
+
+import ddf.minim.UGen;
+import tactus.PhysicalModel;
+
+/**
+ * A Minim unit generator that plays a mass-interaction model: each audio sample it steps the model once
+ * (or k times, with a decimation low-pass, see {@link #setOversampling(int)}), reads its listening points
+ * and writes them, DC-blocked, to mono or stereo output. It patches like any UGen: into a {@code Gain},
+ * effects, an {@code AudioOutput} ({@link LineOut} gives one even without a sound card) or an
+ * {@code AudioRecorder}; {@link OfflineRenderer} writes it to a WAV file.
+ *
+ * <p>Two ways to use it:
+ * <pre>
+ * // the paper's way: subclass it and build the model in the constructor
+ * class StringUGen extends PhyUGen {
+ *   StringUGen() {
+ *     super(44100);                 // creates mdl = new PhysicalModel(44100)
+ *     mdl.addMass2DPlane("m1", 1, new Vect3D(0.1, 0, 0), new Vect3D());
+ *     ...
+ *     mdl.init();
+ *     listenToMass("m4", SteppedModel.Y, 100, 0);
+ *   }
+ * }
+ * // the direct way: wrap a model built elsewhere
+ * PhyUGen ugen = new PhyUGen(model);
+ * </pre>
+ * A subclass may assign its own {@code mdl} in its constructor (as the paper's sketches do) and may
+ * override {@link #uGenerate(float[])}; {@link #stepModel()} and {@link #mix()} are its building blocks.
+ *
+ * <p>{@link #sampleRateChanged()} keeps the model's rate at k times the output's. In ALGO_UNITS the
+ * coefficients are per step, so a different output rate changes the pitch (as in the paper); in
+ * REAL_UNITS the model keeps its physical meaning.
+ *
+ * <p>Threads: the audio thread steps the model. Listening points, gains, pans, the DC blocker and the
+ * oversampling factor may be changed from any thread; the audio thread picks up each change whole at the
+ * start of a sample. The haptic thread talks to the model only through an {@link AvatarExchange}.
+ */
+public class PhyUGen extends UGen {
+    /** Default pole of the output DC blocker: 0.95, as in the paper's sketches (corner about 343 Hz at 44.1 kHz). */
+    public static final double DEFAULT_DC_COEFFICIENT = 0.95;
+
+    /** The model, in the paper's style; a subclass builds it in its constructor. Null for a non-facade model. */
+    protected PhysicalModel mdl;
+
+    private final int nominalRate;
+    private PhysicalModel boundModel;
+    private SteppedModel model;
+    private volatile ListeningPoint[] points = new ListeningPoint[0];
+    private volatile Oversampler oversampler;
+    private volatile double dcCoefficient = DEFAULT_DC_COEFFICIENT;
+    private volatile boolean dcEnabled = true;
+    private volatile boolean forceMono;
+    private final DcBlocker dcLeft = new DcBlocker(DEFAULT_DC_COEFFICIENT);
+    private final DcBlocker dcRight = new DcBlocker(DEFAULT_DC_COEFFICIENT);
+    private volatile AvatarExchange exchange;
+    private String avatarName;
+    private int avatar = -1;
+    private final double[] target = new double[3];
+    private final double[] force = new double[3];
+    private double mixLeft;
+    private double mixRight;
+    private double mixMono;
+
+    /** Decimation state for one oversampling factor, swapped in whole. */
+    private static final class Oversampler {
+        final int factor;
+        final DecimationFilter left;
+        final DecimationFilter right;
+
+        Oversampler(int factor) {
+            this.factor = factor;
+            this.left = new DecimationFilter(factor);
+            this.right = new DecimationFilter(factor);
+        }
+    }
+
+    /**
+     * The paper's way: creates {@link #mdl} as {@code new PhysicalModel(sampleRate)} (ALGO_UNITS) for the
+     * subclass constructor to fill.
+     *
+     * @param sampleRate the audio rate the model is built for, in Hz (&gt; 0)
+     */
+    protected PhyUGen(int sampleRate) {
+        super();
+        if (sampleRate <= 0) {
+            throw new IllegalArgumentException("PhyUGen: sampleRate must be > 0 Hz, got " + sampleRate);
+        }
+        this.nominalRate = sampleRate;
+        this.mdl = new PhysicalModel(sampleRate);
+    }
+
+    /** The direct way: plays a model built elsewhere; its current rate is taken as the nominal audio rate. */
+    public PhyUGen(PhysicalModel model) {
+        super();
+        if (model == null) {
+            throw new IllegalArgumentException("PhyUGen: the model must not be null");
+        }
+        this.mdl = model;
+        this.nominalRate = model.getSimRate();
+        bind();
+    }
+
+    /** Plays any {@link SteppedModel}; {@link #mdl} stays null. */
+    public PhyUGen(SteppedModel model) {
+        super();
+        if (model == null) {
+            throw new IllegalArgumentException("PhyUGen: the model must not be null");
+        }
+        this.model = model;
+        this.nominalRate = model.stepRate();
+    }
+
+    // ------------------------------------------------------------------ binding (never on the audio path in steady state)
+
+    /** @return the stepped view of the model, binding {@link #mdl} first if the subclass replaced it. */
+    protected final SteppedModel steppedModel() {
+        if (mdl != boundModel) {
+            bind();
+        }
+        if (model == null) {
+            throw new IllegalStateException("PhyUGen: no model; build mdl in the constructor or pass a model");
+        }
+        return model;
+    }
+
+    private synchronized void bind() {
+        if (mdl == null || mdl == boundModel) {
+            return;
+        }
+        SteppedModel m = new PhysicalModelStepper(mdl);
+        for (ListeningPoint p : points) {
+            p.bind(m);
+        }
+        if (avatarName != null) {
+            avatar = m.resolveAvatar(avatarName);
+        }
+        model = m;
+        boundModel = mdl;
+    }
+
+    // ------------------------------------------------------------------ listening points
+
+    /**
+     * Listens to a mass's displacement along an axis, measured from where it is now.
+     *
+     * @param axis {@link SteppedModel#X}, {@link SteppedModel#Y} or {@link SteppedModel#Z}
+     * @param gain output units per model unit
+     * @param pan -1 (left) .. 1 (right)
+     */
+    public ListeningPoint listenToMass(String mass, int axis, double gain, double pan) {
+        if (axis < 0 || axis > 2) {
+            throw new IllegalArgumentException("listenToMass(\"" + mass + "\"): axis must be 0, 1 or 2, got " + axis);
+        }
+        return add(new ListeningPoint(ListeningPoint.Kind.MASS_DISPLACEMENT, mass, axis, gain, pan));
+    }
+
+    /** Listens to an interaction's elongation (distance minus its length parameter). */
+    public ListeningPoint listenToElongation(String link, double gain, double pan) {
+        return add(new ListeningPoint(ListeningPoint.Kind.LINK_ELONGATION, link, -1, gain, pan));
+    }
+
+    /** Listens to an interaction's tension, K e + Z de/dt (spring-type links, contacts, ropes and bubbles). */
+    public ListeningPoint listenToTension(String link, double gain, double pan) {
+        return add(new ListeningPoint(ListeningPoint.Kind.LINK_TENSION, link, -1, gain, pan));
+    }
+
+    private synchronized ListeningPoint add(ListeningPoint p) {
+        SteppedModel m = steppedModel();
+        synchronized (m.sampleLock()) {
+            p.bind(m);
+        }
+        ListeningPoint[] old = points;
+        ListeningPoint[] next = java.util.Arrays.copyOf(old, old.length + 1);
+        next[old.length] = p;
+        points = next;
+        return p;
+    }
+
+    /** Stops listening to a point. */
+    public synchronized void removeListeningPoint(ListeningPoint p) {
+        ListeningPoint[] old = points;
+        for (int i = 0; i < old.length; i++) {
+            if (old[i] == p) {
+                ListeningPoint[] next = new ListeningPoint[old.length - 1];
+                System.arraycopy(old, 0, next, 0, i);
+                System.arraycopy(old, i + 1, next, i, old.length - i - 1);
+                points = next;
+                return;
+            }
+        }
+        throw new IllegalArgumentException("removeListeningPoint: " + p + " is not a listening point of this PhyUGen");
+    }
+
+    /** @return the listening points, in the order they were added. */
+    public ListeningPoint[] listeningPoints() {
+        return points.clone();
+    }
+
+    // ------------------------------------------------------------------ output settings
+
+    /** Sums every point to all channels (pans ignored) when true; otherwise channel 0 is left, 1 is right. */
+    public void setMono(boolean mono) {
+        forceMono = mono;
+    }
+
+    /** Sets the pole of the output DC blocker (0 &le; r &lt; 1; default {@value #DEFAULT_DC_COEFFICIENT}). */
+    public void setDcBlocker(double r) {
+        if (!(r >= 0 && r < 1)) {
+            throw new IllegalArgumentException("setDcBlocker: the coefficient must be in [0, 1), got " + r);
+        }
+        dcCoefficient = r;
+        dcEnabled = true;
+    }
+
+    /** Turns the DC blocker on or off (on by default). */
+    public void setDcBlockerEnabled(boolean enabled) {
+        dcEnabled = enabled;
+    }
+
+    /** @return the pole of the DC blocker. */
+    public double dcBlockerCoefficient() {
+        return dcCoefficient;
+    }
+
+    /**
+     * Runs k model steps per audio sample (k = 1 turns oversampling off) and decimates them with a
+     * {@link DecimationFilter}. The model's rate becomes k times the output rate. Call it while setting up:
+     * it designs the filter and changes the model rate.
+     */
+    public synchronized void setOversampling(int k) {
+        if (k < 1 || k > 16) {
+            throw new IllegalArgumentException("setOversampling: k must be in 1..16, got " + k);
+        }
+        Oversampler next = k == 1 ? null : new Oversampler(k);
+        SteppedModel m = steppedModel();
+        synchronized (m.sampleLock()) {
+            oversampler = next;
+            m.setStepRate(Math.round(outputRate() * k));
+        }
+    }
+
+    /** @return the oversampling factor k (model steps per audio sample). */
+    public int oversampling() {
+        Oversampler o = oversampler;
+        return o == null ? 1 : o.factor;
+    }
+
+    /** @return the group delay of the decimation filter, in audio samples (0 without oversampling). */
+    public double decimationDelaySamples() {
+        Oversampler o = oversampler;
+        return o == null ? 0 : o.left.delaySteps() / o.factor;
+    }
+
+    private float outputRate() {
+        float sr = sampleRate();
+        return sr > 0 ? sr : nominalRate;
+    }
+
+    /**
+     * Couples a haptic avatar (a HapticInput3D of the model) to a haptic thread: every step the avatar's
+     * target is set from the exchange's latest position and the force on the avatar is added to it.
+     */
+    public synchronized void attachAvatar(String avatarName, AvatarExchange exchange) {
+        if (exchange == null) {
+            throw new IllegalArgumentException("attachAvatar(\"" + avatarName + "\"): the exchange must not be null");
+        }
+        SteppedModel m = steppedModel();
+        int handle = m.resolveAvatar(avatarName);
+        synchronized (m.sampleLock()) {
+            m.takeAvatarForce(handle, force); // start from an empty accumulator
+            this.avatarName = avatarName;
+            this.avatar = handle;
+            this.exchange = exchange;
+        }
+    }
+
+    /** Uncouples the avatar; the model keeps its last target. */
+    public synchronized void detachAvatar() {
+        exchange = null;
+        avatarName = null;
+        avatar = -1;
+    }
+
+    // ------------------------------------------------------------------ UGen
+
+    @Override
+    protected void sampleRateChanged() {
+        float sr = sampleRate();
+        if (sr <= 0 || (mdl == null && model == null)) {
+            return;
+        }
+        SteppedModel m = steppedModel();
+        int rate = Math.round(sr * oversampling());
+        if (m.stepRate() != rate) {
+            m.setStepRate(rate);
+        }
+    }
+
+    /**
+     * Steps the model (k times with oversampling), mixes the listening points, DC-blocks and writes them:
+     * channel 0 left and 1 right in stereo, the mono mix in every channel otherwise (and in channels past 1).
+     */
+    @Override
+    protected void uGenerate(float[] channels) {
+        SteppedModel m = steppedModel();
+        Oversampler o = oversampler;
+        boolean stereo = channels.length >= 2 && !forceMono;
+        double left;
+        double right;
+        synchronized (m.sampleLock()) {
+            if (o == null) {
+                stepAndMix(m);
+                left = stereo ? mixLeft : mixMono;
+                right = mixRight;
+            } else {
+                for (int i = 0; i < o.factor; i++) {
+                    stepAndMix(m);
+                    o.left.push(stereo ? mixLeft : mixMono);
+                    o.right.push(mixRight);
+                }
+                left = o.left.output();
+                right = stereo ? o.right.output() : 0;
+            }
+        }
+        if (dcEnabled) {
+            double r = dcCoefficient;
+            dcLeft.setCoefficient(r);
+            left = dcLeft.process(left);
+            if (stereo) {
+                dcRight.setCoefficient(r);
+                right = dcRight.process(right);
+            }
+        }
+        float l = finite(left);
+        if (stereo) {
+            channels[0] = l;
+            channels[1] = finite(right);
+            for (int c = 2; c < channels.length; c++) {
+                channels[c] = l;
+            }
+        } else {
+            for (int c = 0; c < channels.length; c++) {
+                channels[c] = l;
+            }
+        }
+    }
+
+    private static float finite(double v) {
+        // a diverged model must not send NaN or infinities to the sound card
+        return Math.abs(v) < 1e9 ? (float) v : 0f;
+    }
+
+    private void stepAndMix(SteppedModel m) {
+        stepOnce(m);
+        mixPoints(m);
+    }
+
+    private void stepOnce(SteppedModel m) {
+        AvatarExchange ex = exchange;
+        if (ex != null) {
+            if (ex.readPosition(target)) {
+                m.setAvatarTarget(avatar, target[0], target[1], target[2]);
+            }
+            m.step();
+            m.takeAvatarForce(avatar, force);
+            ex.addForce(force[0], force[1], force[2]);
+        } else {
+            m.step();
+        }
+    }
+
+    private void mixPoints(SteppedModel m) {
+        ListeningPoint[] pts = points;
+        double l = 0;
+        double r = 0;
+        double mono = 0;
+        for (ListeningPoint p : pts) {
+            double v = p.read(m);
+            ListeningPoint.Gains g = p.gains();
+            l += g.left * v;
+            r += g.right * v;
+            mono += g.gain * v;
+        }
+        mixLeft = l;
+        mixRight = r;
+        mixMono = mono;
+    }
+
+    /**
+     * For subclasses that override {@link #uGenerate(float[])}: runs one model step with the avatar
+     * exchange (if any), under the model's sample lock.
+     */
+    protected final void stepModel() {
+        SteppedModel m = steppedModel();
+        synchronized (m.sampleLock()) {
+            stepOnce(m);
+        }
+    }
+
+    /** For subclasses: the mono mix of every listening point (gain applied, pan ignored) at the current step. */
+    protected final double mix() {
+        SteppedModel m = steppedModel();
+        synchronized (m.sampleLock()) {
+            mixPoints(m);
+            return mixMono;
+        }
+    }
+}

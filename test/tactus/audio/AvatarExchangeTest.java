@@ -1,0 +1,223 @@
+package tactus.audio;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import tactus.PhysicalModel;
+import tactus.Vect3D;
+
+/** The multirate hand-off: impulse bookkeeping, force modes, latency of a position step, no torn reads. */
+class AvatarExchangeTest {
+
+    /**
+     * Whatever the two rates and however irregular the takes, average x steps spanned adds up to the sum of
+     * the per-step forces: the impulse the haptic side accounts for is the one the model produced.
+     */
+    @ParameterizedTest
+    @CsvSource({"44100, 1000", "48000, 1000", "96000, 250", "22050, 3000"})
+    void impulseIsConservedAcrossTheRates(int audioRate, int hapticRate) {
+        Random rnd = new Random(audioRate + hapticRate);
+        AvatarExchange ex = new AvatarExchange();
+        double[] out = new double[3];
+        double produced = 0;
+        double accounted = 0;
+        double producedY = 0;
+        double accountedY = 0;
+        double audioTime = 0;
+        double nextTake = 0;
+        for (int n = 0; n < 2_000_000; n++) {
+            double fx = Math.sin(n * 0.001) * 3 + rnd.nextGaussian();
+            double fy = 1e-3 * rnd.nextGaussian() + 5;
+            ex.addForce(fx, fy, 0);
+            produced += fx / audioRate;
+            producedY += fy / audioRate;
+            audioTime += 1.0 / audioRate;
+            if (audioTime >= nextTake) {
+                long steps = ex.takeForce(out);
+                accounted += out[0] * steps / audioRate;
+                accountedY += out[1] * steps / audioRate;
+                // jittery haptic period, and sometimes a burst: the audio runs a whole buffer between two takes
+                nextTake += (1.0 + 0.5 * rnd.nextGaussian()) / hapticRate + (rnd.nextInt(20) == 0 ? 0.023 : 0);
+            }
+        }
+        long steps = ex.takeForce(out);
+        accounted += out[0] * steps / audioRate;
+        accountedY += out[1] * steps / audioRate;
+        assertEquals(produced, accounted, 1e-9 * (1 + Math.abs(produced)));
+        assertEquals(producedY, accountedY, 1e-9 * producedY);
+        assertEquals(5, out[1], 0.01, "the average is the force itself, independent of both rates");
+    }
+
+    @Test
+    void averageHoldsAndSumEmptiesWhenNoStepRan() {
+        AvatarExchange avg = new AvatarExchange();
+        AvatarExchange sum = new AvatarExchange(AvatarExchange.ForceMode.SUM);
+        double[] out = new double[3];
+        for (int i = 0; i < 10; i++) {
+            avg.addForce(2, -4, 6);
+            sum.addForce(2, -4, 6);
+        }
+        assertEquals(10, avg.takeForce(out));
+        assertEquals(2, out[0], 0);
+        assertEquals(-4, out[1], 0);
+        assertEquals(0, avg.takeForce(out), "no step since");
+        assertEquals(6, out[2], 0, "AVERAGE repeats the last average");
+        assertEquals(10, sum.takeForce(out));
+        assertEquals(20, out[0], 0);
+        assertEquals(-40, out[1], 0);
+        assertEquals(0, sum.takeForce(out));
+        assertEquals(0, out[0], 0, "SUM of no step is zero");
+        assertFalse(new AvatarExchange().readPosition(out), "nothing published yet");
+    }
+
+    /**
+     * A step in the device position reaches the audio at the first model step after it is published, then
+     * the avatar follows its EWMA exactly: after j steps it has covered 1 - (1 - w)^j of the step (w = 1/s).
+     */
+    @Test
+    void aPositionStepReachesTheAudioAtTheNextStepThroughTheEwma() {
+        int smoothing = 30;
+        PhysicalModel pm = new PhysicalModel(44100);
+        pm.addHapticInput3D("avatar", new Vect3D(0, 0, 0), smoothing);
+        pm.init();
+        PhyUGen u = new PhyUGen(pm);
+        u.setDcBlockerEnabled(false);
+        u.listenToMass("avatar", SteppedModel.X, 1, 0);
+        AvatarExchange ex = new AvatarExchange();
+        u.attachAvatar("avatar", ex);
+        u.setSampleRate(44100);
+        float[] frame = new float[1];
+        for (int i = 0; i < 100; i++) {
+            u.tick(frame);
+            assertEquals(0, frame[0], 0f);
+        }
+        ex.publishPosition(1, 0, 0);
+        double w = 1.0 / smoothing;
+        for (int j = 1; j <= 200; j++) {
+            u.tick(frame);
+            assertEquals(1 - Math.pow(1 - w, j), frame[0], 1e-6, "sample " + j + " after the step");
+        }
+    }
+
+    /**
+     * The same with real threads: the haptic thread publishes steps at random moments while the audio
+     * thread runs; the audio step that first sees a new position lies between the audio step counts read
+     * just before and just after the publish, plus one (the step in progress). No wall-clock assertions. The audio loop fences after each step so its
+     * step counter is never seen late (that would be a measurement artefact, not latency).
+     */
+    @Test
+    void withRealThreadsTheNewPositionIsSeenWithinOneStep() throws Exception {
+        AvatarExchange ex = new AvatarExchange();
+        int rounds = 300;
+        long[] seenAt = new long[rounds + 1];
+        long[] before = new long[rounds + 1];
+        long[] after = new long[rounds + 1];
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread audio = new Thread(() -> {
+            double[] p = new double[3];
+            long step = 0;
+            int expected = 1;
+            while (expected <= rounds) {
+                // one "model step": read the target, then report the force of this step
+                if (ex.readPosition(p) && (int) p[0] == expected) {
+                    seenAt[expected] = step;
+                    expected++;
+                }
+                ex.addForce(0, 0, 0);
+                // the step counter must be visible before the next read of the position, or the haptic
+                // thread's "after" count could lag the audio thread's real progress by its store buffer
+                java.lang.invoke.VarHandle.fullFence();
+                step++;
+            }
+        }, "audio");
+        audio.start();
+        Random rnd = new Random(7);
+        for (int r = 1; r <= rounds; r++) {
+            Thread.sleep(0, rnd.nextInt(500_000));
+            before[r] = ex.audioSteps();
+            ex.publishPosition(r, 0, 0);
+            after[r] = ex.audioSteps();
+            while (seenAt[r] == 0 && audio.isAlive()) {
+                Thread.onSpinWait();
+            }
+        }
+        audio.join(10_000);
+        for (int r = 1; r <= rounds; r++) {
+            assertTrue(seenAt[r] >= before[r] && seenAt[r] <= after[r] + 1, "round " + r + ": published between steps "
+                    + before[r] + " and " + after[r] + ", seen at step " + seenAt[r]);
+        }
+        assertTrue(failure.get() == null);
+    }
+
+    /**
+     * Three threads for three seconds: a haptic writer publishes positions (k, 2k, -3k) and takes forces; the
+     * audio thread reads positions and adds forces (1, a, 2a); a display thread peeks positions. Every read
+     * must be one whole write: y = 2x and z = -3x, x never going back, and every take satisfying
+     * sum_x = steps, sum_z = 2 sum_y (exact in double: the values are small integers).
+     */
+    @Test
+    void threeThreadsNeverSeeTornValues() throws Exception {
+        AvatarExchange ex = new AvatarExchange(AvatarExchange.ForceMode.SUM);
+        long end = System.nanoTime() + 3_000_000_000L;
+        AtomicReference<String> torn = new AtomicReference<>();
+        long[] counts = new long[4];
+        Thread audio = new Thread(() -> {
+            double[] p = new double[3];
+            double lastX = 0;
+            long n = 0;
+            while (System.nanoTime() < end && torn.get() == null) {
+                for (int i = 0; i < 1000; i++, n++) {
+                    if (ex.readPosition(p)) {
+                        if (p[1] != 2 * p[0] || p[2] != -3 * p[0] || p[0] < lastX) {
+                            torn.compareAndSet(null, "audio read " + p[0] + ", " + p[1] + ", " + p[2]);
+                        }
+                        lastX = p[0];
+                    }
+                    double a = n % 7;
+                    ex.addForce(1, a, 2 * a);
+                }
+            }
+            counts[0] = n;
+        }, "audio");
+        Thread display = new Thread(() -> {
+            double[] p = new double[3];
+            long reads = 0;
+            while (System.nanoTime() < end && torn.get() == null) {
+                if (ex.peekPosition(p) && (p[1] != 2 * p[0] || p[2] != -3 * p[0])) {
+                    torn.compareAndSet(null, "display read " + p[0] + ", " + p[1] + ", " + p[2]);
+                }
+                reads++;
+            }
+            counts[1] = reads;
+        }, "display");
+        audio.start();
+        display.start();
+        double[] f = new double[3];
+        long k = 0;
+        long takes = 0;
+        long stepsTaken = 0;
+        while (System.nanoTime() < end && torn.get() == null) {
+            k++;
+            ex.publishPosition(k, 2 * k, -3 * k);
+            long steps = ex.takeForce(f);
+            stepsTaken += steps;
+            if (f[0] != steps || f[2] != 2 * f[1]) {
+                torn.compareAndSet(null, "haptic took " + f[0] + ", " + f[1] + ", " + f[2] + " over " + steps + " steps");
+            }
+            takes++;
+        }
+        audio.join();
+        display.join();
+        stepsTaken += ex.takeForce(f);
+        assertEquals(null, torn.get());
+        assertEquals(counts[0], stepsTaken, "every step's force was taken exactly once");
+        assertTrue(k > 1000 && takes > 1000 && counts[0] > 100_000 && counts[1] > 1000,
+                "enough overlap: " + k + " publishes, " + counts[0] + " audio steps, " + counts[1] + " display reads");
+    }
+}
