@@ -167,8 +167,12 @@ public class PhyUGen extends UGen {
 
     private synchronized ListeningPoint add(ListeningPoint p) {
         SteppedModel m = steppedModel();
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             p.bind(m);
+        } finally {
+            sampleLock.unlock();
         }
         ListeningPoint[] old = points;
         ListeningPoint[] next = java.util.Arrays.copyOf(old, old.length + 1);
@@ -234,9 +238,13 @@ public class PhyUGen extends UGen {
         }
         Oversampler next = k == 1 ? null : new Oversampler(k);
         SteppedModel m = steppedModel();
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             oversampler = next;
             m.setStepRate(Math.round(outputRate() * k));
+        } finally {
+            sampleLock.unlock();
         }
     }
 
@@ -267,11 +275,15 @@ public class PhyUGen extends UGen {
         }
         SteppedModel m = steppedModel();
         int handle = m.resolveAvatar(avatarName);
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             m.takeAvatarForce(handle, force); // start from an empty accumulator
             this.avatarName = avatarName;
             this.avatar = handle;
             this.exchange = exchange;
+        } finally {
+            sampleLock.unlock();
         }
     }
 
@@ -308,7 +320,9 @@ public class PhyUGen extends UGen {
         boolean stereo = channels.length >= 2 && !forceMono;
         double left;
         double right;
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             if (o == null) {
                 stepAndMix(m);
                 left = stereo ? mixLeft : mixMono;
@@ -322,6 +336,8 @@ public class PhyUGen extends UGen {
                 left = o.left.output();
                 right = stereo ? o.right.output() : 0;
             }
+        } finally {
+            sampleLock.unlock();
         }
         if (dcEnabled) {
             double r = dcCoefficient;
@@ -393,17 +409,25 @@ public class PhyUGen extends UGen {
      */
     protected final void stepModel() {
         SteppedModel m = steppedModel();
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             stepOnce(m);
+        } finally {
+            sampleLock.unlock();
         }
     }
 
     /** For subclasses: the mono mix of every listening point (gain applied, pan ignored) at the current step. */
     protected final double mix() {
         SteppedModel m = steppedModel();
-        synchronized (m.sampleLock()) {
+        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+        sampleLock.lock();
+        try {
             mixPoints(m);
             return mixMono;
+        } finally {
+            sampleLock.unlock();
         }
     }
 }

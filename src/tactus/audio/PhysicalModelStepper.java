@@ -1,8 +1,5 @@
 package tactus.audio;
 
-import java.lang.invoke.MethodHandle;
-import java.lang.invoke.MethodHandles;
-import java.lang.invoke.MethodType;
 import java.util.Arrays;
 import tactus.Mass;
 import tactus.PhysicalModel;
@@ -13,17 +10,10 @@ import tactus.paramSystem;
  * The one adapter from {@link SteppedModel} to today's public {@link PhysicalModel} API. Names are resolved
  * once into handles; the per-sample methods reuse scratch vectors and allocate nothing of their own.
  *
- * <p>Cost note: every {@code PhysicalModel} call takes the model's monitor (about 20-40 ns uncontended).
- * {@link #sampleLock()} returns that monitor, so {@link PhyUGen} holds it once per sample and the inner
- * calls re-enter it cheaply. Interaction reads still look the name up in a hash table per call.
- *
- * <p>Allocation: {@link #takeAvatarForce(int, double[])} uses {@code PhysicalModel.getHapticForce(String,
- * Vect3D out)} when the model class has it (found once, by reflection, when this class loads); today's
- * model only has {@code getHapticForce(String)}, which returns a new 40-byte {@code Vect3D} per call. The
- * JIT's escape analysis removes that allocation when it inlines the call (it does when PhyUGen is the
- * only caller), but not reliably (not in the whole test suite's JVM), so with an avatar attached a sample
- * may allocate 40 bytes per step until the model offers the out-parameter form. Everything else on the
- * per-sample path allocates nothing ({@code PhyUGenAllocationTest}).
+ * <p>Cost note: {@link #sampleLock()} is the model's lock, so {@link PhyUGen} takes it once per sample and the
+ * inner calls re-enter it cheaply (about 20-40 ns uncontended). Interaction reads still look the name up in a
+ * hash table per call. Nothing on the per-sample path allocates: avatar forces are read with
+ * {@code getHapticForce(String, Vect3D out)} ({@code PhyUGenAllocationTest}).
  */
 public final class PhysicalModelStepper implements SteppedModel {
     private final PhysicalModel model;
@@ -39,9 +29,6 @@ public final class PhysicalModelStepper implements SteppedModel {
     private String[] avatars = new String[2];
     private int avatarCount;
     private int rate;
-
-    /** PhysicalModel.getHapticForce(String, Vect3D), or null when the model class does not have it. */
-    private static final MethodHandle FORCE_INTO = findForceInto();
 
     private static final int RULE_ALWAYS = 0;
     private static final int RULE_COMPRESSED = 1;
@@ -81,7 +68,7 @@ public final class PhysicalModelStepper implements SteppedModel {
     }
 
     @Override
-    public Object sampleLock() {
+    public java.util.concurrent.locks.Lock sampleLock() {
         return model.getLock();
     }
 
@@ -107,7 +94,7 @@ public final class PhysicalModelStepper implements SteppedModel {
         }
         int rule = RULE_ALWAYS;
         if (withForce) {
-            String type = model.getLinkTypeAt(model.getLinkIndex(name));
+            String type = model.getLinkTypeAt(model.getLinkIndex(name)).name();
             switch (type) {
                 case "Spring3D":
                 case "Damper3D":
@@ -140,7 +127,7 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     @Override
     public int resolveAvatar(String name) {
-        String type = model.getMatTypeAt(indexOfMass(name));
+        String type = model.getMatTypeAt(indexOfMass(name)).name();
         if (!"HapticInput3D".equals(type)) {
             throw new IllegalArgumentException("resolveAvatar(\"" + name + "\"): not a HapticInput3D, this is a " + type);
         }
@@ -196,34 +183,10 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     @Override
     public void takeAvatarForce(int avatar, double[] out) {
-        Vect3D f;
-        if (FORCE_INTO != null) {
-            try {
-                f = (Vect3D) FORCE_INTO.invokeExact(model, avatars[avatar], scratch);
-            } catch (RuntimeException | Error e) {
-                throw e;
-            } catch (Throwable t) {
-                throw new IllegalStateException(t);
-            }
-        } else {
-            f = model.getHapticForce(avatars[avatar]);
-        }
+        Vect3D f = model.getHapticForce(avatars[avatar], scratch);
         out[0] = f.x;
         out[1] = f.y;
         out[2] = f.z;
     }
 
-    /** @return true if avatar forces are read without allocating (the model has getHapticForce(String, Vect3D)). */
-    public static boolean readsAvatarForceWithoutAllocating() {
-        return FORCE_INTO != null;
-    }
-
-    private static MethodHandle findForceInto() {
-        try {
-            return MethodHandles.publicLookup().findVirtual(PhysicalModel.class, "getHapticForce",
-                    MethodType.methodType(Vect3D.class, String.class, Vect3D.class));
-        } catch (NoSuchMethodException | IllegalAccessException e) {
-            return null;
-        }
-    }
 }

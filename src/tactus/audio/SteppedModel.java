@@ -31,7 +31,7 @@ public interface SteppedModel {
      *     that locks per call pays for one lock per sample instead of several; a private object if the
      *     model needs no lock
      */
-    Object sampleLock();
+    java.util.concurrent.locks.Lock sampleLock();
 
     /** @return a handle for the mass with this name; throws IllegalArgumentException naming it if absent. */
     int resolveMass(String name);

@@ -6,12 +6,13 @@ import tactus.Vect3D;
 /**
  * {@link AvatarLink} over the public {@link PhysicalModel} API: a HapticInput3D avatar by name, positioned
  * with {@code setHapticPosition} and read with {@code getHapticForce}. The only class to change when the
- * model's haptic API changes. Note: {@code getHapticForce(String)} allocates one Vect3D per call today.
+ * model's haptic API changes. Nothing here allocates per tick.
  */
 public final class PhysicalModelAvatar implements AvatarLink {
     private final PhysicalModel model;
     private final String avatar;
     private final Vect3D target = new Vect3D();
+    private final Vect3D force = new Vect3D();
 
     /** Links to the avatar (a HapticInput3D) of this name in the model. */
     public PhysicalModelAvatar(PhysicalModel model, String avatar) {
@@ -35,7 +36,7 @@ public final class PhysicalModelAvatar implements AvatarLink {
 
     @Override
     public void takeForce(double[] out) {
-        Vect3D f = model.getHapticForce(avatar);
+        Vect3D f = model.getHapticForce(avatar, force);
         out[0] = f.x;
         out[1] = f.y;
         out[2] = f.z;

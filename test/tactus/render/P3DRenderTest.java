@@ -59,7 +59,7 @@ class P3DRenderTest {
         Assumptions.assumeTrue(onPath("xvfb-run"), "xvfb-run is not installed");
         Path png = tmp.resolve("p3d.png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new ArrayList<>(List.of("xvfb-run", "-a", "-s", "-screen 0 640x480x24", java,
+        List<String> cmd = new ArrayList<>(List.of("env", "--default-signal=USR1", "xvfb-run", "-a", "-s", "-screen 0 640x480x24", java,
                 "-cp", System.getProperty("java.class.path"), P3DSketch.class.getName(), png.toString()));
         Path log = tmp.resolve("child.log");
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();

@@ -371,7 +371,10 @@ public final class SketchHarness {
         Path xvfbRun = requireXvfb();
         String runnerLocation = location(SketchRunner.class);
         String java = Paths.get(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new ArrayList<>(List.of(xvfbRun.toString(), "-a", "-s", "-screen 0 1280x1024x24",
+        // xvfb-run waits for Xvfb's SIGUSR1, which a shell cannot catch when it starts with SIGUSR1 ignored, as
+        // children of this JVM do once a native library (jSerialComm) has set it to ignored: reset it first.
+        List<String> cmd = new ArrayList<>(List.of("env", "--default-signal=USR1", xvfbRun.toString(), "-a", "-s",
+                "-screen 0 1280x1024x24",
                 java, "-Xmx512m", "-Dfile.encoding=UTF-8",
                 "-cp", classes + File.pathSeparator + runnerLocation + File.pathSeparator + classpath,
                 SketchRunner.class.getName(), className, Integer.toString(frames), png.toString()));
