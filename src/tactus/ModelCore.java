@@ -23,7 +23,9 @@ final class ModelCore {
     final SnapshotWriter snapshots;
     final PaperQueries paper;
     /** Parameter controllers by name, in creation order (see {@link ParamController}). */
-    final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
+    private final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
+    /** The same controllers as an array, so that the stepping path checks them without allocating an iterator. */
+    private ParamController[] controllerArray = new ParamController[0];
     /** True once init() has run: from then on topology edits compile at once, on the editing thread. */
     boolean initialized;
 
@@ -40,9 +42,25 @@ final class ModelCore {
         this.paper = new PaperQueries(this);
     }
 
+    /** Adds or replaces a named parameter controller. */
+    void putController(String name, ParamController pc) {
+        controllers.put(name, pc);
+        controllerArray = controllers.values().toArray(new ParamController[0]);
+    }
+
+    /** @return the named parameter controller, or null. */
+    ParamController controller(String name) {
+        return controllers.get(name);
+    }
+
+    void clearControllers() {
+        controllers.clear();
+        controllerArray = new ParamController[0];
+    }
+
     /** @return true when some parameter controller is in the middle of a ramp. */
     boolean ramping() {
-        for (ParamController pc : controllers.values()) {
+        for (ParamController pc : controllerArray) {
             if (pc.isRamping()) {
                 return true;
             }
@@ -54,7 +72,7 @@ final class ModelCore {
     void advanceRamps() {
         guard.defer();
         try {
-            for (ParamController pc : controllers.values()) {
+            for (ParamController pc : controllerArray) {
                 pc.updateParams();
             }
         } finally {

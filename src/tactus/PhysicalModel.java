@@ -1288,7 +1288,7 @@ public class PhysicalModel {
         ParamController pc = new ParamController(this, rampTime, subsetName, paramName);
         enter();
         try {
-            core.controllers.put(name, pc);
+            core.putController(name, pc);
         } finally {
             exit();
         }
@@ -1298,7 +1298,7 @@ public class PhysicalModel {
     public ParamController getParamController(String name) {
         enter();
         try {
-            return core.controllers.get(name);
+            return core.controller(name);
         } finally {
             exit();
         }

@@ -72,7 +72,7 @@ final class TopologyEditor {
         c.dir.clear();
         engine.clear();
         c.subsets.clear();
-        c.controllers.clear();
+        c.clearControllers();
         c.watch.clear();
         compileIfRunning();
     }
