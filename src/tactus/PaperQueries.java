@@ -133,7 +133,7 @@ final class PaperQueries {
     }
 
     /** @return the ids of the live modules whose name contains {@code tag}, in index order. */
-    private static int[] matching(Registry r, String tag) {
+    private static List<Integer> matching(Registry r, String tag) {
         List<Integer> ids = new ArrayList<>();
         for (int i = 0; i < r.size(); i++) {
             int id = r.idAt(i);
@@ -141,31 +141,12 @@ final class PaperQueries {
                 ids.add(id);
             }
         }
-        return ids.stream().mapToInt(Integer::intValue).toArray();
+        return ids;
     }
 
     /** Sets the inertia of every mass whose name contains {@code tag}; checked first, analysed once. */
     void setMassForName(String op, String tag, double mass) {
-        int[] ids = matching(c.dir.mats, tag);
-        for (int id : ids) {
-            c.params.requireInertial(op, id);
-            Check.positive(op, c.dir.massName(id), "mass", mass);
-        }
-        double[] old = new double[ids.length];
-        c.guard.defer();
-        try {
-            for (int k = 0; k < ids.length; k++) {
-                old[k] = engine.mass(ids[k]);
-                engine.setMass(ids[k], mass);
-            }
-        } finally {
-            c.guard.resume();
-        }
-        c.guard.afterChange(() -> {
-            for (int k = 0; k < ids.length; k++) {
-                engine.setMass(ids[k], old[k]);
-            }
-        });
+        c.subsets.changeParamOf(op, true, matching(c.dir.mats, tag), "mass", mass);
     }
 
     /**
@@ -173,35 +154,28 @@ final class PaperQueries {
      * spring takes no damping, a damper no stiffness or length); checked first, analysed once.
      */
     void setLinkParamsForName(String op, String tag, double K, double Z, double dist) {
-        int[] ids = matching(c.dir.links, tag);
+        List<Integer> ids = matching(c.dir.links, tag);
         for (int id : ids) {
             LinkKind k = engine.linkKind(id);
             if (k.hasLength()) {
                 ParamEditor.checkLength(op, c.dir.linkName(id), k, dist);
             }
         }
-        double[] old = new double[3 * ids.length];
+        List<Runnable> undo = new ArrayList<>();
         UnitScale u = c.units();
         c.guard.defer();
         try {
-            for (int k = 0; k < ids.length; k++) {
-                int id = ids[k];
+            for (int id : ids) {
                 LinkKind kind = engine.linkKind(id);
-                old[3 * k] = engine.linkStiffness(id);
-                old[3 * k + 1] = engine.linkDamping(id);
-                old[3 * k + 2] = engine.linkLength(id);
-                engine.setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : old[3 * k],
-                        kind.hasDamping() ? u.dampingIn(Z) : old[3 * k + 1],
-                        kind.hasLength() ? dist : old[3 * k + 2]);
+                undo.add(c.subsets.snapshot(false, id));
+                engine.setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : engine.linkStiffness(id),
+                        kind.hasDamping() ? u.dampingIn(Z) : engine.linkDamping(id),
+                        kind.hasLength() ? dist : engine.linkLength(id));
             }
         } finally {
             c.guard.resume();
         }
-        c.guard.afterChange(() -> {
-            for (int k = 0; k < ids.length; k++) {
-                engine.setLinkParams(ids[k], old[3 * k], old[3 * k + 1], old[3 * k + 2]);
-            }
-        });
+        c.guard.afterChange(() -> undo.forEach(Runnable::run));
     }
 
     /**
@@ -209,8 +183,7 @@ final class PaperQueries {
      * from it), at rest, in subset order.
      */
     void spaceAlongX(String op, Vect3D center, double d, String subset) {
-        int[] ids = c.subsets.members(op, c.subsets.requireMatSubset(op, subset)).stream()
-                .mapToInt(Integer::intValue).toArray();
+        int[] ids = c.subsets.memberIds(c.subsets.requireMatSubset(op, subset));
         int n = ids.length;
         for (int k = 0; k < n; k++) {
             engine.setPosition(ids[k], center.x + d * (k - (n - 1) / 2.0), center.y, center.z);

@@ -134,7 +134,14 @@ final class SubsetBook {
                     + param + "\"");
         }
         Check.finite(op, subset, param, value);
-        Set<Integer> members = isMat ? mats.members(subset) : links.members(subset);
+        changeParamOf(op, isMat, isMat ? mats.members(subset) : links.members(subset), param, value);
+    }
+
+    /**
+     * Sets one parameter on the given masses (or interactions): every one is checked before any is changed, and
+     * the whole change is analysed (and undone under THROW) as one.
+     */
+    void changeParamOf(String op, boolean isMat, java.util.Collection<Integer> members, String param, double value) {
         for (int id : members) {
             checkMember(op, isMat, id, param, value);
         }
@@ -209,7 +216,8 @@ final class SubsetBook {
         }
     }
 
-    private Runnable snapshot(boolean isMat, int id) {
+    /** @return an undo that restores the parameters a mass or interaction has now. */
+    Runnable snapshot(boolean isMat, int id) {
         if (isMat) {
             double m = engine.mass(id);
             if (engine.massKind(id).isOscillator()) {
@@ -296,7 +304,8 @@ final class SubsetBook {
         return gid;
     }
 
-    private int[] memberIds(String subset) {
+    /** @return the ids of a mass subset's members, in subset order. */
+    int[] memberIds(String subset) {
         return mats.members(subset).stream().mapToInt(Integer::intValue).toArray();
     }
 
