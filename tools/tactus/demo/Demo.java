@@ -9,6 +9,9 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 
 import tactus.DivergenceException;
@@ -19,8 +22,10 @@ import tactus.paramSystem;
 import tactus.report.LineChart;
 
 /**
- * The headless demo behind {@code gradle demo}: two small models from the paper, simulated for two
- * seconds each, with a printed summary, CSV files and PNG plots.
+ * The headless demo behind {@code gradle demo}: three models from the paper, with a printed summary,
+ * CSV files, PNG plots and a WAV file. The first two are simulated offline for two seconds each; the
+ * third, the audio-haptic plucked string ({@link AudioHapticPluck}), runs in real time through the whole
+ * chain: an emulated Haply, the 1 kHz haptic loop and a 44.1 kHz {@code PhyUGen}.
  *
  * <ol>
  *   <li><b>Figure 4</b> of the paper, in algorithmic units: one {@code Mass3D} ("mass", m = 100) at
@@ -35,6 +40,11 @@ import tactus.report.LineChart;
  *       string is under about 490 N of tension). Air friction 0.0002 N&middot;s/m makes it ring
  *       for a few seconds. It is plucked by starting it from a triangle, 3 mm high in the middle,
  *       at rest. Its lowest note is close to A3 (220 Hz).</li>
+ *   <li><b>The audio-haptic plucked string</b> of the paper ({@link PluckScene}): a string plucked by a
+ *       plectrum with a sphere of action, held by an emulated Haply whose scripted hand goes down through
+ *       the string, back up, then strums. It writes {@code pluck.wav}, a frame of the scene drawn by the
+ *       library's renderer, the hand path with the force felt along it, the waveform and the haptic
+ *       telemetry, and compares the pitch of the WAV with theory.</li>
  * </ol>
  *
  * <p>The string's measured fundamental (from the upward zero crossings of its middle bead) is
@@ -123,7 +133,7 @@ public final class Demo {
     }
 
     /**
-     * Runs the demo without exiting: parses the arguments, runs both models, writes the files and
+     * Runs the demo without exiting: parses the arguments, runs the three models, writes the files and
      * prints the summary to {@code out}; problems are printed to {@code err}.
      *
      * @return 0 on success, 1 if something failed, 2 for a usage error
@@ -131,7 +141,8 @@ public final class Demo {
     public static int run(String[] args, PrintStream out, PrintStream err) {
         if (args.length > 1 || (args.length == 1 && (args[0].equals("-h") || args[0].equals("--help")))) {
             err.println("usage: java -Djava.awt.headless=true tactus.demo.Demo [outputFolder]");
-            err.println("  writes figure4.csv, figure4.png, string.csv, string.png and string-shape.png");
+            err.println("  writes figure4.csv, figure4.png, string.csv, string.png, string-shape.png, pluck.wav,");
+            err.println("  pluck-scene.png, pluck-path.png, pluck-waveform.png, pluck-telemetry.csv and .txt");
             err.println("  into outputFolder (default " + DEFAULT_OUTPUT + ")");
             return 2;
         }
@@ -187,6 +198,8 @@ public final class Demo {
     public static final class Result {
         /** The files written, as absolute paths. */
         public final Path figure4Csv, figure4Png, stringCsv, stringPng, stringShapePng;
+        /** What the audio-haptic plucked string produced (its files, pitch and telemetry). */
+        public AudioHapticPluck.Result pluck;
         /** The string's fundamental from its zero crossings, Hz. */
         public final double measuredHz;
         /** The string's fundamental from the discrete-scheme theory, Hz. */
@@ -207,7 +220,7 @@ public final class Demo {
     }
 
     /**
-     * Runs both models, writes their files into {@code dir} (created if needed) and prints the
+     * Runs the three models, writes their files into {@code dir} (created if needed) and prints the
      * summary to {@code out}.
      *
      * @return the files written and the string's pitch figures
@@ -222,14 +235,18 @@ public final class Demo {
         }
         Files.createDirectories(dir);
         out.println("Tactus " + PhysicalModel.version()
-                + " demo: two models from \"Fast audio-haptic prototyping with mass-interaction physics\"");
+                + " demo: three models from \"Fast audio-haptic prototyping with mass-interaction physics\"");
         out.println("Output folder: " + dir);
         out.println();
         runFigure4(dir, out);
         out.println();
         Result r = runString(dir, out);
         out.println();
-        Path[] files = {r.figure4Csv, r.figure4Png, r.stringCsv, r.stringPng, r.stringShapePng};
+        r.pluck = AudioHapticPluck.run(dir, out);
+        out.println();
+        List<Path> files = new ArrayList<>(Arrays.asList(r.figure4Csv, r.figure4Png, r.stringCsv, r.stringPng,
+                r.stringShapePng));
+        files.addAll(Arrays.asList(r.pluck.files()));
         out.println("Files written:");
         for (Path f : files) {
             if (!Files.isRegularFile(f) || Files.size(f) == 0) {
@@ -243,7 +260,17 @@ public final class Demo {
                             + "(tolerance %.1f cents)", r.measuredHz, r.errorCents, r.theoryHz,
                     PITCH_TOLERANCE_CENTS));
         }
-        out.println("Demo finished: all files written, the string's pitch matches theory.");
+        AudioHapticPluck.Result p = r.pluck;
+        if (!(Math.abs(p.errorCents()) <= p.toleranceCents)) {
+            throw new DemoFailure(String.format(Locale.ROOT,
+                    "the plucked string's measured fundamental %.3f Hz (pluck.wav) is %+.2f cents from the "
+                            + "theoretical %.3f Hz (tolerance %.2f cents)", p.measuredHz[0], p.errorCents(),
+                    p.theoryHz[0], p.toleranceCents));
+        }
+        out.printf(Locale.ROOT, "Audio-haptic pluck: %.2f s of audio in %.2f s of wall time; fundamental of "
+                + "pluck.wav %.3f Hz, theory %.3f Hz (%+.2f cents)%n", p.audioSeconds, p.wallSeconds,
+                p.measuredHz[0], p.theoryHz[0], p.errorCents());
+        out.println("Demo finished: all files written, the strings' pitches match theory.");
         return r;
     }
 
@@ -271,7 +298,7 @@ public final class Demo {
     }
 
     private static void runFigure4(Path dir, PrintStream out) throws IOException {
-        out.println("[1/2] Figure 4: one Mass3D between two Ground3D, joined by two SpringDamper3D (ALGO_UNITS)");
+        out.println("[1/3] Figure 4: one Mass3D between two Ground3D, joined by two SpringDamper3D (ALGO_UNITS)");
         out.printf(Locale.ROOT, "  simRate %d Hz, dispRate %d Hz, m = %s, grounds at x = +/-%s, "
                         + "springs: rest %s, K %s and %s, Z %s%n", FIG4_SIM_RATE, FIG4_DISPLAY_RATE,
                 num(FIG4_MASS), num(FIG4_DIST), num(FIG4_REST), num(FIG4_K1), num(FIG4_K2), num(FIG4_Z));
@@ -389,7 +416,7 @@ public final class Demo {
 
     private static Result runString(Path dir, PrintStream out) throws IOException {
         int n = STRING_BEADS;
-        out.printf(Locale.ROOT, "[2/2] Plucked string: %d Mass2DPlane beads, %d SpringDamper3D, 2 Ground3D "
+        out.printf(Locale.ROOT, "[2/3] Plucked string: %d Mass2DPlane beads, %d SpringDamper3D, 2 Ground3D "
                 + "(REAL_UNITS, SI)%n", n, n + 1);
         out.printf(Locale.ROOT, "  simRate %d Hz; length %s m; beads %s g, %s cm apart; springs K %s N/m, "
                         + "Z %s N*s/m, rest %s mm; air friction %s N*s/m%n", STRING_RATE, num(stringLength()),
