@@ -295,18 +295,18 @@ public final class AudioHapticPluck {
             StringBuilder line = new StringBuilder(200);
             for (int i = 0; i < n; i++) {
                 line.setLength(0);
-                line.append(String.format(Locale.ROOT, "%.6f", t[i]));
+                CsvNumbers.fixed(line, t[i], 6);
                 for (int c : cols) {
                     double v = avatar.column(c)[i];
                     line.append(',');
                     if (c == ExchangeAvatar.AUDIO_STEPS || c == ExchangeAvatar.STEPS_SPANNED) {
                         line.append((long) v);
                     } else {
-                        line.append(String.format(Locale.ROOT, "%.6e", v));
+                        CsvNumbers.scientific(line, v, 6);
                     }
                 }
                 line.append('\n');
-                w.write(line.toString());
+                w.append(line);
             }
         }
         HapticTelemetry tel = r.telemetry;

@@ -347,7 +347,7 @@ public final class Demo {
                         + "(2 (1 - cos w) m = K1 + K2), error %+.1f cents%n",
                 xEq, measuredX, theoryX, cents(measuredX, theoryX));
 
-        writeCsv(dir.resolve("figure4.csv"), "t_s,mass_x,mass_y,mass_z", t, pos, "%.7f");
+        writeCsv(dir.resolve("figure4.csv"), "t_s,mass_x,mass_y,mass_z", t, pos, 7);
         new LineChart("Figure 4: position of \"mass\" (simRate 300 Hz, ALGO_UNITS)", "time (s)",
                 "position (model units)")
                 .series("x", t, pos[0])
@@ -520,7 +520,7 @@ public final class Demo {
             names[j] = bead(listened[j]);
             header.append(',').append(names[j]).append("_y_m");
         }
-        writeCsv(r.stringCsv, header.toString(), t, ys, "%.8f");
+        writeCsv(r.stringCsv, header.toString(), t, ys, 8);
 
         // The first 20 ms, in milliseconds and millimetres.
         int shown = (int) Math.round(0.020 * STRING_RATE);
@@ -624,7 +624,8 @@ public final class Demo {
 
     // ================================================================ output
 
-    private static void writeCsv(Path file, String header, double[] t, double[][] columns, String timeFormat)
+    /** Writes a CSV: the time with {@code timeDecimals} decimals, then each column as {@code %.7e}. */
+    private static void writeCsv(Path file, String header, double[] t, double[][] columns, int timeDecimals)
             throws IOException {
         try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
             w.write(header);
@@ -632,12 +633,12 @@ public final class Demo {
             StringBuilder line = new StringBuilder(96);
             for (int i = 0; i < t.length; i++) {
                 line.setLength(0);
-                line.append(String.format(Locale.ROOT, timeFormat, t[i]));
+                CsvNumbers.fixed(line, t[i], timeDecimals);
                 for (double[] c : columns) {
-                    line.append(',').append(String.format(Locale.ROOT, "%.7e", c[i]));
+                    CsvNumbers.scientific(line.append(','), c[i], 7);
                 }
                 line.append('\n');
-                w.write(line.toString());
+                w.append(line);
             }
         }
     }

@@ -20,7 +20,7 @@ import tactus.render.ModelDrawer;
 /**
  * One frame of the plucked-string scene, drawn headless by the library's generic renderer
  * ({@link ModelDrawer}, the engine of {@code ModelRenderer}) into an off-screen JAVA2D {@code PGraphics}: the
- * string's links coloured by strain, its masses, the fixed ends, and the plectrum drawn as its sphere of
+ * string's links, its masses, the fixed ends, and the plectrum drawn as its sphere of
  * action. The force on the plectrum (an arrow) and a caption are added afterwards with Java2D. The drawer
  * reads the model's lock-free snapshot, so a frame can be drawn while the audio thread steps the model.
  */
@@ -122,7 +122,7 @@ final class SceneFrame {
             g2.drawString(caption, 14, 46);
             g2.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
             g2.drawString("red disc: the plectrum (HapticInput3D) and its sphere of action", 14, HEIGHT - 32);
-            g2.drawString("yellow arrow: the force felt on the handle (60 px per N); links redden with strain", 14,
+            g2.drawString("yellow arrow: the force felt on the handle (60 px per N)", 14,
                     HEIGHT - 14);
         } finally {
             g2.dispose();
