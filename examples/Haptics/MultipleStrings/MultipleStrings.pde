@@ -96,9 +96,11 @@ void setup() {
   ugen.attachAvatar("plectrum", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);      // a silent real-time output when there is no sound card
+  strum(0.03);                    // strum once, so that you hear at once that the sound works
   ugen.patch(out);
 
-  // Haptics: the first Haply found, or an emulated one that follows the mouse.
+  // Haptics: the first Haply found, or an emulated one that follows the mouse. Other hardware: change the
+  // preset (TWO_DIY_V2, TWO_DIY_V3) and move ox, oy to the middle of its workspace.
   haply = HaplyConnection.open(HaplyPreset.HAPLY_2018);
   Device device = new Device((byte) 5, haply.board());
   HaplyPreset.HAPLY_2018.configure(device);
@@ -162,13 +164,24 @@ void draw() {
   textSize(14);
   text("Pluck one string, or sweep the plectrum (red) across all five to strum them.", 16, 24);
   text("[ and ]: sphere of action (" + nf(sphere, 1, 2) + ")   UP / DOWN: volume (" + nf(volume, 1, 0)
-    + ")   R: still the strings", 16, 44);
+    + ")   SPACE: strum for you   R: still the strings", 16, 44);
   text(String.format("force on the handle %.2f N", Math.hypot(force[0], force[1])), 16, height - 16);
   fill(haply.isEmulated() ? color(255, 170, 60) : color(220));
   text(haply.status(), 16, height - 38);
   if (loop.failure() != null) {
     fill(255, 80, 80);
     text("haptic loop stopped: " + loop.failure(), 16, height - 60);
+  }
+}
+
+// Lifts every string into a triangle of the given height, its apex a quarter of the way along, and lets go.
+void strum(float height) {
+  int at = masses / 4;
+  for (int s = 0; s < strings; s++) {
+    for (int i = 1; i <= masses; i++) {
+      float y = i <= at ? height * i / at : height * (masses + 1 - i) / (masses + 1 - at);
+      mdl.setMatPosition(massName(s, i), new Vect3D(i * spacing, stringY(s) + y, 0));
+    }
   }
 }
 
@@ -185,12 +198,10 @@ void keyPressed() {
     sphere = constrain(sphere + (key == ']' ? 0.01 : -0.01), 0.02, 0.14);
     mdl.setLinkParamsForName("pick_", contactK, contactZ, sphere);
     renderer.setSize(matModuleType.HapticInput3D, sphere);
+  } else if (key == ' ') {
+    strum(0.03);
   } else if (key == 'r' || key == 'R') {
-    for (int s = 0; s < strings; s++) {
-      for (int i = 1; i <= masses; i++) {
-        mdl.setMatPosition(massName(s, i), new Vect3D(i * spacing, stringY(s), 0));
-      }
-    }
+    strum(0);
   } else if (keyCode == UP || keyCode == DOWN) {
     volume = constrain(volume * (keyCode == UP ? 1.25 : 0.8), 1, 300);
     for (ListeningPoint ear : ears) {

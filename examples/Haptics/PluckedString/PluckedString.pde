@@ -83,9 +83,11 @@ void setup() {
   string.attachAvatar("plectrum", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);      // a silent real-time output when there is no sound card
+  pluck(masses / 4, 0.03);        // pluck it once, so that you hear at once that the sound works
   string.patch(out);
 
-  // Haptics: the first Haply found, or an emulated one that follows the mouse.
+  // Haptics: the first Haply found, or an emulated one that follows the mouse. Other hardware: change the
+  // preset (TWO_DIY_V2, TWO_DIY_V3) and move ox, oy to the middle of its workspace.
   haply = HaplyConnection.open(HaplyPreset.HAPLY_2018);
   Device device = new Device((byte) 5, haply.board());
   HaplyPreset.HAPLY_2018.configure(device);
@@ -159,7 +161,7 @@ void draw() {
   text("Pluck the string with the plectrum (red): drag it through the string slowly, or strum it.", 16, 24);
   text("Hold it on the string: palm mute.  Touch lightly a third of the way along: harmonic.", 16, 44);
   text("[ and ]: sphere of action (" + nf(sphere, 1, 2) + ")   UP / DOWN: volume (" + nf(volume, 1, 0)
-    + ")   R: still the string", 16, 64);
+    + ")   SPACE: pluck it for you   R: still the string", 16, 64);
   text(String.format("force on the handle %.2f N   haptic loop %.0f Hz   audio %.0f Hz", Math.hypot(force[0], force[1]),
     loopRate, out.sampleRate()), 16, height - 16);
   if (haply.isEmulated()) {
@@ -171,6 +173,14 @@ void draw() {
   if (loop.failure() != null) {
     fill(255, 80, 80);
     text("haptic loop stopped: " + loop.failure(), 16, height - 60);
+  }
+}
+
+// Lifts the string into a triangle of the given height with its apex at mass 'at', and lets it go.
+void pluck(int at, float height) {
+  for (int i = 1; i <= masses; i++) {
+    float y = i <= at ? height * i / at : height * (masses + 1 - i) / (masses + 1 - at);
+    mdl.setMatPosition("m" + i, new Vect3D(i * spacing, y, 0));
   }
 }
 
@@ -187,10 +197,10 @@ void keyPressed() {
     sphere = constrain(sphere + (key == ']' ? 0.01 : -0.01), 0.02, 0.3);
     mdl.setLinkParamsForName("pick", contactK, contactZ, sphere);
     renderer.setSize(matModuleType.HapticInput3D, sphere);
+  } else if (key == ' ') {
+    pluck(int(random(3, masses - 2)), 0.03);
   } else if (key == 'r' || key == 'R') {
-    for (int i = 1; i <= masses; i++) {
-      mdl.setMatPosition("m" + i, new Vect3D(i * spacing, 0, 0));
-    }
+    pluck(1, 0);
   } else if (keyCode == UP || keyCode == DOWN) {
     volume = constrain(volume * (keyCode == UP ? 1.25 : 0.8), 1, 300);
     ear.setGain(volume);
