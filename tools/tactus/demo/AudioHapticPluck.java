@@ -154,6 +154,7 @@ public final class AudioHapticPluck {
         int frames = (int) Math.round(PluckPath.DURATION * rate);
         AudioCapture capture = new AudioCapture(frames);
         SceneFrame scene = new SceneFrame();
+        scene.draw(mdl, 0, 0, "");   // the first frame loads Java2D and the renderer's cache: not while plucking
         double[] sceneAt = {Double.NaN, Double.NaN};
         AudioOutput audio = new AudioOutput(new SilentAudioOut(1, BUFFER, rate));
         long wallStart = System.nanoTime();
@@ -249,9 +250,10 @@ public final class AudioHapticPluck {
         r.toleranceCents = Demo.cents(f1 + pitch.resolutionHz() / 2, f1);
 
         // ---- pictures
-        if (scene.hasFrame()) {
-            scene.save(r.scenePng.toFile(), sceneAt[0], sceneAt[1]);
+        if (Double.isNaN(sceneAt[0])) {
+            throw new Demo.DemoFailure("no frame of the scene was drawn during the first pluck");
         }
+        scene.save(r.scenePng.toFile(), sceneAt[0], sceneAt[1]);
         PathPlot.save(r.pathPng.toFile(), t, avatar.column(ExchangeAvatar.HANDLE_X),
                 avatar.column(ExchangeAvatar.HANDLE_Y), fx, fy, n, mapping, path.phaseStarts(), PluckPath.phases());
         saveWaveform(r, samples, rate, (wallStart - clockOrigin) * 1e-9);

@@ -52,8 +52,6 @@ final class SceneFrame {
         drawer.style().mass(matModuleType.HapticInput3D).setScaling(0);
         drawer.style().mass(matModuleType.HapticInput3D).setColor(230, 60, 60, 150);
         drawer.style().link(linkModuleType.SpringDamper3D).setColor(90, 200, 230, 255);
-        drawer.style().link(linkModuleType.SpringDamper3D).setStrainColor(255, 80, 40, 255);
-        drawer.style().link(linkModuleType.SpringDamper3D).setStrainGradient(true, 0.03f);
         drawer.style().link(linkModuleType.SpringDamper3D).setWeight(2);
     }
 
@@ -78,11 +76,6 @@ final class SceneFrame {
         this.forceX = forceX;
         this.forceY = forceY;
         this.caption = caption;
-    }
-
-    /** @return true once a frame has been drawn. */
-    boolean hasFrame() {
-        return image != null;
     }
 
     /**
