@@ -249,7 +249,7 @@ public final class OrbitCamera {
 
     /** @return the eye distance in pixels of Processing's default camera, (height / 2) / tan(30°). */
     public double eyePixels() {
-        return viewHeight / 2.0 / Math.tan(FOV / 2);
+        return viewHeight / 2.0 / Math.tan(Math.PI / 6);
     }
 
     /**
