@@ -1,8 +1,9 @@
 package tactus;
 
 /**
- * A consistent copy of a model's state at one step, for drawing: every mass's position, velocity, force, type
- * and name index, and every interaction's two mass indices, type and elongation, all taken at the same step. Read it with
+ * A consistent copy of a model's state at one step, for drawing: every mass's position, type and name index
+ * (and, on request, velocity and force: {@link #requestMotion}), and every interaction's two mass indices, type
+ * and elongation, all taken at the same step. Read it with
  * {@link PhysicalModel#getSnapshot()} from the drawing thread: it never blocks the thread that steps the model
  * (audio or haptics) and is never torn.
  *
@@ -22,7 +23,30 @@ public final class ModelSnapshot {
     double[] elongation = new double[0];
     linkModuleType[] linkTypes = new linkModuleType[0];
 
-    ModelSnapshot() {
+    final SnapshotExchange owner;
+    boolean motion;
+
+    ModelSnapshot(SnapshotExchange owner) {
+        this.owner = owner;
+    }
+
+    /**
+     * Asks the model to copy every mass's velocity and force into its snapshots from the next publication on
+     * (false: only the haptic avatars' forces, the default, which keeps publishing cheap for the thread that
+     * steps the model). The renderer asks for them while it colours by speed or force. Any thread.
+     *
+     * @param on true to include velocities and forces of every mass
+     */
+    public void requestMotion(boolean on) {
+        owner.motion = on;
+    }
+
+    /**
+     * @return true if this copy carries the velocity and force of every mass; false if only the haptic avatars'
+     *         forces (the other masses then read 0)
+     */
+    public boolean hasMotion() {
+        return motion;
     }
 
     /** @return the step count at which the copy was taken, or -1 before the first publication. */

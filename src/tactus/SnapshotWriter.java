@@ -45,6 +45,7 @@ final class SnapshotWriter {
             lastId = java.util.Arrays.copyOf(lastId, s.massTypes.length);
             lastSum = java.util.Arrays.copyOf(lastSum, 3 * s.massTypes.length);
         }
+        boolean motion = exchange.motion;
         long step = engine.stepCount();
         long since = lastStep < 0 ? 0 : step - lastStep;
         UnitScale u = c.units();
@@ -55,11 +56,22 @@ final class SnapshotWriter {
             s.pos[q] = tmp[0];
             s.pos[q + 1] = tmp[1];
             s.pos[q + 2] = tmp[2];
+            MassKind kind = engine.massKind(id);
+            s.massTypes[i] = ModuleTypes.of(kind);
+            if (!motion && kind != MassKind.HAPTIC_INPUT3D) {
+                // velocities and forces only on request: they cost about as much again as the positions
+                s.vel[q] = 0;
+                s.vel[q + 1] = 0;
+                s.vel[q + 2] = 0;
+                s.force[q] = 0;
+                s.force[q + 1] = 0;
+                s.force[q + 2] = 0;
+                continue;
+            }
             engine.displacement(id, tmp);
             s.vel[q] = u.velocityOut(tmp[0]);
             s.vel[q + 1] = u.velocityOut(tmp[1]);
             s.vel[q + 2] = u.velocityOut(tmp[2]);
-            MassKind kind = engine.massKind(id);
             // After a step the buffer holds the interaction forces for the next one. An avatar's buffer sums them
             // until someone takes it: the mean per step is taken over the steps since the last publication when
             // nobody took it in between, else over the steps since it was taken.
@@ -88,7 +100,6 @@ final class SnapshotWriter {
             s.force[q] = per * u.forceOut(tmp[0]);
             s.force[q + 1] = per * u.forceOut(tmp[1]);
             s.force[q + 2] = per * u.forceOut(tmp[2]);
-            s.massTypes[i] = ModuleTypes.of(kind);
         }
         for (int l = 0; l < nl; l++) {
             int id = dir.links.idAt(l);
@@ -99,6 +110,7 @@ final class SnapshotWriter {
         }
         s.masses = nm;
         s.links = nl;
+        s.motion = motion;
         s.step = step;
         lastStep = step;
         exchange.publish();

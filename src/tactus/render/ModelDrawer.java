@@ -27,7 +27,10 @@ import tactus.matModuleType;
  * <p>Colours: by type (the default), or by speed, force or strain through a {@link ColorScale}
  * ({@link #setColorBy}). Force arrows: each mass of a type chosen with {@link #setForceArrow} (by default the
  * haptic avatar, HapticInput3D) gets an arrow along the force of the interactions on it, of length
- * {@code arrowScale × force} in model length units (then scale and zoom), drawn on top of the masses.
+ * {@code arrowScale × force} in model length units (then scale and zoom), drawn on top of the masses. The model
+ * copies velocities and forces of every mass into its snapshot only on request ({@link ModelSnapshot#requestMotion});
+ * the drawer asks for them while it needs them, so the first frame after switching to speed or force (or to
+ * arrows on other masses than avatars) may show zero values.
  *
  * <p>Use it from one thread (the sketch's animation thread). The painters can be replaced to draw masses, links
  * or arrows differently. After {@link #dispose()} it forgets the model it drew and draws nothing more.
@@ -52,6 +55,7 @@ public final class ModelDrawer {
     private int arrowColor = Colors.argb(200, 0, 160, 255);
     private boolean showArrows = true;
     private boolean disposed;
+    private boolean motionRequested;
 
     /**
      * Creates a drawer with the default styles, scale 1, zoom (1, 1, 1), colours by type, and force arrows of
@@ -270,6 +274,16 @@ public final class ModelDrawer {
             return;
         }
         ModelSnapshot s = cache.sync(model);
+        // Velocities and forces of every mass are copied by the model only on request (avatars' forces always).
+        if (needsMotion()) {
+            if (!s.hasMotion()) {
+                s.requestMotion(true);
+            }
+            motionRequested = true;
+        } else if (motionRequested) {
+            s.requestMotion(false);
+            motionRequested = false;
+        }
         g.pushStyle();
         try {
             g.colorMode(PConstants.RGB, 255);
@@ -371,6 +385,23 @@ public final class ModelDrawer {
         }
         p.end(g);
     }
+
+    /** True when this drawer shows velocities or forces of masses other than avatars. */
+    private boolean needsMotion() {
+        if (colorBy == ColorBy.SPEED || colorBy == ColorBy.FORCE) {
+            return true;
+        }
+        if (showArrows) {
+            for (matModuleType t : ARROW_TYPES) {
+                if (t != matModuleType.HapticInput3D && arrowTypes[t.ordinal()]) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private static final matModuleType[] ARROW_TYPES = matModuleType.values();
 
     /** Masses that the model moves (not fixed points, avatars or position drivers) take the scale's colour. */
     private static boolean isSimulated(matModuleType t) {

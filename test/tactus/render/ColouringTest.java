@@ -46,6 +46,7 @@ class ColouringTest {
         m.addGround3D("g", new Vect3D(0, 50, 0));
         m.addHapticInput3D("hand", new Vect3D(60, 50, 0), 1);
         m.init();
+        m.getSnapshot().requestMotion(true);   // what the drawer asks for when it first colours by speed
         m.computeNSteps(10);
         ModelDrawer d = new ModelDrawer();
         ColorScale scale = ColorScale.heat(0, 10);
@@ -67,6 +68,7 @@ class ColouringTest {
         m.addMass3D("m", 1e6, new Vect3D(60, 0, 0), new Vect3D());   // heavy: it stays put
         m.addSpring3D("s", 40, k, "g", "m");
         m.init();
+        m.getSnapshot().requestMotion(true);
         m.computeNSteps(10);
         ModelSnapshot s = m.getSnapshot();
         double force = k * ((s.x(1) - s.x(0)) - 40);   // 0.8

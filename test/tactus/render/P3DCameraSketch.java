@@ -26,6 +26,7 @@ public class P3DCameraSketch extends PApplet {
         m.addGround3D("anchor", new Vect3D(0, 60, -80));
         m.addSpring3D("pull", 0, K, "anchor", "hand");
         m.init();
+        m.getSnapshot().requestMotion(true);   // the renderer would ask on its first frame; this sketch never steps
         m.computeNSteps(10);
         return m;
     }

@@ -148,6 +148,7 @@ class RenderAllocationTest {
         PhysicalModel m = model(400);
         m.addHapticInput3D("hand", new Vect3D(-10, 0, 0), 1);
         m.addSpringDamper3D("grip", 1, 0.01, 0.001, "hand", "m1");
+        m.getSnapshot().requestMotion(true);
         m.computeNSteps(20);
         ModelRenderer r = everythingVisible();
         r.setForceArrowScale(50);

@@ -1,6 +1,8 @@
 package tactus.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -22,6 +24,7 @@ class SnapshotStateTest {
         PhysicalModel m = new PhysicalModel(1000, 50);
         m.addMass3D("m", 1, new Vect3D(0, 0, 0), new Vect3D(30, -12, 4));
         m.init();
+        m.getSnapshot().requestMotion(true);
         m.computeNSteps(35);
         ModelSnapshot s = m.getSnapshot();
         assertEquals(30, s.vx(0), 1e-9);
@@ -39,6 +42,7 @@ class SnapshotStateTest {
         m.addMass3D("m", 5, new Vect3D(3, 4, 0), new Vect3D());
         m.addSpring3D("s", l0, k, "g", "m");
         m.init();
+        m.getSnapshot().requestMotion(true);
         for (int frame = 0; frame < 5; frame++) {
             m.computeNSteps(10 + 7 * frame);
             ModelSnapshot s = m.getSnapshot();
@@ -64,9 +68,60 @@ class SnapshotStateTest {
         m.addMass3D("m", 1000, new Vect3D(0, 0.3, 0), new Vect3D());   // heavy: it hardly moves in 10 steps
         m.addSpring3D("s", l0, k, "g", "m");
         m.init();
+        m.getSnapshot().requestMotion(true);
         m.computeNSteps(10);
         ModelSnapshot s = m.getSnapshot();
         assertEquals(-k * (s.y(1) - l0), s.fy(1), 1e-9 * k);
+    }
+
+    @Test
+    void velocitiesAndForcesOfMassesComeOnlyOnRequestButTheAvatarsForceAlways() {
+        double k = 0.01;
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        m.addGround3D("g", new Vect3D(0, 0, 0));
+        m.addMass3D("m", 1, new Vect3D(5, 0, 0), new Vect3D(7, 0, 0));
+        m.addHapticInput3D("hand", new Vect3D(-5, 0, 0), 1);
+        m.addSpring3D("s", 1, k, "g", "m");
+        m.addSpring3D("h", 1, k, "g", "hand");
+        m.init();
+        m.computeNSteps(10);
+        ModelSnapshot s = m.getSnapshot();
+        assertFalse(s.hasMotion());
+        assertEquals(0, s.speed(1), 0, "no velocities unless asked");
+        assertEquals(0, s.forceNorm(1), 0, "no forces unless asked");
+        assertEquals(k * (s.x(0) - s.x(2) - 1), s.fx(2), 1e-12, "the avatar's force always");
+        s.requestMotion(true);
+        m.computeNSteps(10);
+        s = m.getSnapshot();
+        assertTrue(s.hasMotion());
+        assertTrue(s.speed(1) > 0);
+        double dx = s.x(1) - s.x(0);   // the mass swings through the fixed point: use the distance
+        assertEquals(-k * (Math.abs(dx) - 1) * Math.signum(dx), s.fx(1), 1e-12);
+        s.requestMotion(false);
+        m.computeNSteps(10);
+        s = m.getSnapshot();
+        assertFalse(s.hasMotion());
+        assertEquals(0, s.speed(1), 0);
+    }
+
+    @Test
+    void aDrawerAsksForMotionWhileItColoursBySpeedAndStopsAfterwards() {
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        m.addMass3D("m", 1, new Vect3D(0, 0, 0), new Vect3D(3, 0, 0));
+        m.init();
+        ModelDrawer d = new ModelDrawer();
+        d.setColorBy(ColorBy.SPEED, ColorScale.heat(0, 10));
+        Canvas c = new Canvas(50, 50);
+        d.draw(m, c.begin());
+        c.end();
+        m.computeNSteps(10);
+        assertTrue(m.getSnapshot().hasMotion());
+        assertEquals(3, m.getSnapshot().speed(0), 1e-9);
+        d.setColorBy(ColorBy.STRAIN, ColorScale.heat(0, 1));
+        d.draw(m, c.begin());
+        c.end();
+        m.computeNSteps(10);
+        assertFalse(m.getSnapshot().hasMotion(), "no longer needed, no longer copied");
     }
 
     /**
