@@ -304,8 +304,7 @@ public final class ModelDrawer {
     private void drawLinks(ModelSnapshot s, PGraphics g) {
         int n = s.getNumberOfLinks();
         LinkPainter p = linkPainter;
-        ColorBy by = colorBy == ColorBy.SPEED || colorBy == ColorBy.FORCE || colorBy == ColorBy.STRAIN ? colorBy
-                : ColorBy.TYPE;
+        ColorBy by = colorBy;   // links take every colouring
         ColorScale scaleOf = colorScale;
         p.begin(g, n);
         float kx = scale * zoomX;
@@ -319,7 +318,7 @@ public final class ModelDrawer {
             }
             int a = s.getLinkMat1Idx(l);
             int argb;
-            if (by == ColorBy.TYPE || by == null) {
+            if (by == ColorBy.TYPE) {
                 argb = ls.hasStrainGradient()
                         ? ls.colorAt(LinkStyle.strain(s.getLinkElongation(l), cache.restLength(l)))
                         : ls.argb();
@@ -364,7 +363,8 @@ public final class ModelDrawer {
     private void drawMasses(ModelSnapshot s, PGraphics g) {
         int n = s.getNumberOfMats();
         MassPainter p = massPainter;
-        ColorBy by = colorBy == ColorBy.SPEED || colorBy == ColorBy.FORCE ? colorBy : ColorBy.TYPE;
+        // masses take the speed and force colourings; by strain they keep their type colour
+        ColorBy by = colorBy == ColorBy.STRAIN ? ColorBy.TYPE : colorBy;
         ColorScale scaleOf = colorScale;
         p.begin(g, n);
         float kx = scale * zoomX;
