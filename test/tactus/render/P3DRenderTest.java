@@ -19,8 +19,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The renderer in a real P3D (OpenGL) sketch: {@link P3DSketch} runs in a child JVM under {@code xvfb-run}
- * (Mesa's software OpenGL) and saves a frame, whose pixels are checked here. Skipped only when {@code xvfb-run}
+ * The renderer in a real P3D (OpenGL) sketch: {@link P3DSketch} (Processing's default camera) and
+ * {@link P3DCameraSketch} (the orbit camera, speed colours, the force arrow) run in a child JVM under
+ * {@code xvfb-run} (Mesa's software OpenGL) and save a frame, whose pixels are checked here. Skipped only when {@code xvfb-run}
  * is not installed. With Processing's default camera, a point at depth z is drawn at
  * {@code centre + p.xy × d / (d - z)}, where {@code d = (height / 2) / tan(π / 6)} is the eye distance; at z = 0
  * that is the 2D mapping.
