@@ -3,6 +3,8 @@ package tactus;
 import processing.core.PApplet;
 import processing.core.PConstants;
 import processing.core.PGraphics;
+import tactus.render.ColorBy;
+import tactus.render.ColorScale;
 import tactus.render.LinkStyle;
 import tactus.render.MassStyle;
 import tactus.render.ModelDrawer;
@@ -27,14 +29,23 @@ import tactus.render.ModelDrawer;
  * (see {@link LinkStyle#strain(double, double)}); positions come from the model's lock-free snapshot, so drawing
  * never delays the audio or haptic thread. The defaults are the paper engine's (see
  * {@link tactus.render.RenderStyle}). The work is done by a {@link ModelDrawer}, reachable with
- * {@link #getDrawer()} for what this class does not offer.
+ * {@link #getDrawer()} for what this class does not offer (painters that replace how masses, links or arrows are
+ * drawn).
+ *
+ * <p>Beyond the paper's engine: colouring by speed, force or strain with a legend ({@link #colorBy},
+ * {@link #drawLegend}), the avatar's force arrow ({@link #setForceArrowScale}, {@link #displayForceArrows}), and,
+ * in {@link tactus.render.OrbitCamera}, a mouse camera. The renderer registers a {@code dispose} callback with the
+ * sketch: when the sketch ends it forgets the model and draws nothing more.
  */
 public class ModelRenderer implements PConstants {
     private final PApplet app;
     private final ModelDrawer drawer = new ModelDrawer();
+    private final Callbacks callbacks = new Callbacks();
+    private boolean registered;
 
     /**
-     * Creates a renderer for a sketch, with scale 1, zoom (1, 1, 1), masses shown and the default styles.
+     * Creates a renderer for a sketch, with scale 1, zoom (1, 1, 1), masses shown and the default styles, and
+     * registers its {@code dispose} callback with the sketch.
      *
      * @param parent the sketch ({@code this}), whose current renderer {@link #renderModel} draws into
      */
@@ -43,6 +54,67 @@ public class ModelRenderer implements PConstants {
             throw new IllegalArgumentException("ModelRenderer: the sketch must not be null");
         }
         app = parent;
+        parent.registerMethod("dispose", callbacks);
+        registered = true;
+    }
+
+    /**
+     * The method the sketch calls through {@code registerMethod}; public because Processing calls it by
+     * reflection. Not for direct use.
+     */
+    public final class Callbacks {
+        private Callbacks() {
+        }
+
+        /** Releases the renderer (Processing calls this when the sketch ends). */
+        public void dispose() {
+            ModelRenderer.this.dispose();
+        }
+    }
+
+    /**
+     * Releases the renderer: unregisters it from the sketch, forgets the model last drawn, and makes
+     * {@link #renderModel} do nothing from now on. Safe to call more than once, from the sketch's
+     * {@code dispose} or by hand.
+     */
+    public void dispose() {
+        drawer.dispose();
+        if (registered) {
+            registered = false;
+            app.unregisterMethod("dispose", callbacks);
+        }
+    }
+
+    /** @return true after {@link #dispose()}. */
+    public boolean isDisposed() {
+        return drawer.isDisposed();
+    }
+
+    /**
+     * Colours the model by speed, force or strain on a blue-to-red scale (see {@link ColorBy}), or by type again
+     * with {@code ColorBy.TYPE}.
+     *
+     * @param by what to colour by
+     * @param min the value drawn blue (in the unit of {@code by})
+     * @param max the value drawn red, &gt; min
+     */
+    public void colorBy(ColorBy by, float min, float max) {
+        drawer.setColorBy(by, ColorScale.heat(min, max));
+    }
+
+    /** Draws the legend of the colour scale into the sketch's renderer (see {@link ColorScale#drawLegend}). */
+    public void drawLegend(float x, float y, float w, float h, String label) {
+        drawer.getColorScale().drawLegend(app.g, x, y, w, h, label);
+    }
+
+    /** Turns the force arrows (of haptic avatars, by default) on or off. */
+    public void displayForceArrows(boolean cond) {
+        drawer.setShowForceArrows(cond);
+    }
+
+    /** Sets the force arrows' length per unit of force, in model length units per force unit, &gt; 0. */
+    public void setForceArrowScale(float lengthPerForce) {
+        drawer.setForceArrowScale(lengthPerForce);
     }
 
     /**

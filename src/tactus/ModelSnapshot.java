@@ -1,8 +1,9 @@
 package tactus;
 
 /**
- * A consistent copy of a model's positions at one step, for drawing: every mass's position, type and name
- * index, and every interaction's two mass indices, type and elongation, all taken at the same step. Read it with
+ * A consistent copy of a model's state at one step, for drawing: every mass's position, type and name index
+ * (and, on request, velocity and force: {@link #requestMotion}), and every interaction's two mass indices, type
+ * and elongation, all taken at the same step. Read it with
  * {@link PhysicalModel#getSnapshot()} from the drawing thread: it never blocks the thread that steps the model
  * (audio or haptics) and is never torn.
  *
@@ -15,12 +16,37 @@ public final class ModelSnapshot {
     int masses;
     int links;
     double[] pos = new double[0];
+    double[] vel = new double[0];
+    double[] force = new double[0];
     matModuleType[] massTypes = new matModuleType[0];
     int[] ends = new int[0];
     double[] elongation = new double[0];
     linkModuleType[] linkTypes = new linkModuleType[0];
 
-    ModelSnapshot() {
+    final SnapshotExchange owner;
+    boolean motion;
+
+    ModelSnapshot(SnapshotExchange owner) {
+        this.owner = owner;
+    }
+
+    /**
+     * Asks the model to copy every mass's velocity and force into its snapshots from the next publication on
+     * (false: only the haptic avatars' forces, the default, which keeps publishing cheap for the thread that
+     * steps the model). The renderer asks for them while it colours by speed or force. Any thread.
+     *
+     * @param on true to include velocities and forces of every mass
+     */
+    public void requestMotion(boolean on) {
+        owner.motion = on;
+    }
+
+    /**
+     * @return true if this copy carries the velocity and force of every mass; false if only the haptic avatars'
+     *         forces (the other masses then read 0)
+     */
+    public boolean hasMotion() {
+        return motion;
     }
 
     /** @return the step count at which the copy was taken, or -1 before the first publication. */
@@ -51,6 +77,52 @@ public final class ModelSnapshot {
     /** @return the z coordinate of mass {@code i}. */
     public double z(int i) {
         return pos[3 * checkMass(i) + 2];
+    }
+
+    /** @return the x component of the velocity of mass {@code i}, in length units per second. */
+    public double vx(int i) {
+        return vel[3 * checkMass(i)];
+    }
+
+    /** @return the y component of the velocity of mass {@code i}, in length units per second. */
+    public double vy(int i) {
+        return vel[3 * checkMass(i) + 1];
+    }
+
+    /** @return the z component of the velocity of mass {@code i}, in length units per second. */
+    public double vz(int i) {
+        return vel[3 * checkMass(i) + 2];
+    }
+
+    /** @return the speed of mass {@code i} (the norm of its velocity over the last step), length units per second. */
+    public double speed(int i) {
+        int q = 3 * checkMass(i);
+        return Math.sqrt(vel[q] * vel[q] + vel[q + 1] * vel[q + 1] + vel[q + 2] * vel[q + 2]);
+    }
+
+    /**
+     * @return the x component of the force of the interactions on mass {@code i} at this step, in the model's
+     *         force unit (newtons in REAL_UNITS); for a haptic avatar, the mean per step since its force was last
+     *         taken (what the device is being sent), for fixed and driven masses 0
+     */
+    public double fx(int i) {
+        return force[3 * checkMass(i)];
+    }
+
+    /** @return the y component of the force on mass {@code i} (see {@link #fx(int)}). */
+    public double fy(int i) {
+        return force[3 * checkMass(i) + 1];
+    }
+
+    /** @return the z component of the force on mass {@code i} (see {@link #fx(int)}). */
+    public double fz(int i) {
+        return force[3 * checkMass(i) + 2];
+    }
+
+    /** @return the norm of the force on mass {@code i} (see {@link #fx(int)}). */
+    public double forceNorm(int i) {
+        int q = 3 * checkMass(i);
+        return Math.sqrt(force[q] * force[q] + force[q + 1] * force[q + 1] + force[q + 2] * force[q + 2]);
     }
 
     /** Writes the position of mass {@code i} into {@code out} and returns it. */
@@ -103,6 +175,8 @@ public final class ModelSnapshot {
         if (massTypes.length < nMass) {
             int cap = Math.max(nMass, massTypes.length * 3 / 2 + 8);
             pos = new double[3 * cap];
+            vel = new double[3 * cap];
+            force = new double[3 * cap];
             massTypes = new matModuleType[cap];
         }
         if (linkTypes.length < nLink) {

@@ -11,7 +11,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  */
 final class SnapshotExchange {
     private static final int FRESH = 4;
-    private final ModelSnapshot[] buffers = {new ModelSnapshot(), new ModelSnapshot(), new ModelSnapshot()};
+    private final ModelSnapshot[] buffers = {new ModelSnapshot(this), new ModelSnapshot(this), new ModelSnapshot(this)};
+    /** Set by the reader ({@link ModelSnapshot#requestMotion}): copy every mass's velocity and force too. */
+    volatile boolean motion;
     /** Index of the middle buffer, plus FRESH when the writer has published into it since the reader last took it. */
     private final AtomicInteger middle = new AtomicInteger(1);
     private int back = 0;

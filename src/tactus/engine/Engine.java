@@ -869,6 +869,12 @@ public final class Engine implements AutoCloseable {
         return n;
     }
 
+    /** @return the number of steps over which a mass's force buffer has summed since {@link #takeForce} last read it. */
+    public long stepsSinceTake(int id) {
+        checkMass(id);
+        return steps - masses.lastTake[id];
+    }
+
     /** @return the current distance between the two masses of a link (the axis gap for a plane contact). */
     public double linkDistance(int id) {
         checkLink(id);

@@ -28,6 +28,12 @@ final class ModelCache {
     private double[] planePosition = new double[0];
     private int refreshes;
 
+    /** Drops the model (so that it can be collected) and forces a re-read at the next {@link #sync}. */
+    void forget() {
+        model = null;
+        dirty = true;
+    }
+
     /** Forces a re-read of masses and lengths at the next {@link #sync}. */
     void invalidate() {
         dirty = true;

@@ -24,8 +24,16 @@ import tactus.matModuleType;
  * lengths of an unchanged topology. Once the first frame of a topology is drawn, drawing allocates nothing. Before
  * the model's {@code init()} its snapshot is empty and nothing is drawn.
  *
- * <p>Use it from one thread (the sketch's animation thread). The painters can be replaced to draw masses or links
- * differently.
+ * <p>Colours: by type (the default), or by speed, force or strain through a {@link ColorScale}
+ * ({@link #setColorBy}). Force arrows: each mass of a type chosen with {@link #setForceArrow} (by default the
+ * haptic avatar, HapticInput3D) gets an arrow along the force of the interactions on it, of length
+ * {@code arrowScale × force} in model length units (then scale and zoom), drawn on top of the masses. The model
+ * copies velocities and forces of every mass into its snapshot only on request ({@link ModelSnapshot#requestMotion});
+ * the drawer asks for them while it needs them, so the first frame after switching to speed or force (or to
+ * arrows on other masses than avatars) may show zero values.
+ *
+ * <p>Use it from one thread (the sketch's animation thread). The painters can be replaced to draw masses, links
+ * or arrows differently. After {@link #dispose()} it forgets the model it drew and draws nothing more.
  */
 public final class ModelDrawer {
     private final RenderStyle style = new RenderStyle();
@@ -38,9 +46,125 @@ public final class ModelDrawer {
     private float zoomZ = 1;
     private boolean showMasses = true;
     private boolean showLinks = true;
+    private ColorBy colorBy = ColorBy.TYPE;
+    private ColorScale colorScale = ColorScale.heat(0, 1);
+    private final boolean[] arrowTypes = new boolean[matModuleType.values().length];
+    private ArrowPainter arrowPainter = StandardPainters.arrows();
+    private float arrowScale = 1;
+    private float arrowWeight = 2;
+    private int arrowColor = Colors.argb(200, 0, 160, 255);
+    private boolean showArrows = true;
+    private boolean disposed;
+    private boolean motionRequested;
 
-    /** Creates a drawer with the default styles, scale 1 and zoom (1, 1, 1). */
+    /**
+     * Creates a drawer with the default styles, scale 1, zoom (1, 1, 1), colours by type, and force arrows of
+     * scale 1 on haptic avatars.
+     */
     public ModelDrawer() {
+        arrowTypes[matModuleType.HapticInput3D.ordinal()] = true;
+    }
+
+    /**
+     * Chooses what elements are coloured by, and the scale that maps the values to colours.
+     *
+     * @param by {@link ColorBy#TYPE} (the default), SPEED, FORCE or STRAIN; not null
+     * @param scale the value-to-colour map (its range in the unit of {@code by}); not null; kept, not copied
+     */
+    public void setColorBy(ColorBy by, ColorScale scale) {
+        if (by == null || scale == null) {
+            throw new IllegalArgumentException("setColorBy: " + (by == null ? "what to colour by" : "the scale")
+                    + " must not be null");
+        }
+        colorBy = by;
+        colorScale = scale;
+    }
+
+    /** @return what elements are coloured by. */
+    public ColorBy getColorBy() {
+        return colorBy;
+    }
+
+    /** @return the colour scale used unless colouring by type (for a legend). */
+    public ColorScale getColorScale() {
+        return colorScale;
+    }
+
+    /**
+     * Turns the force arrow of every mass of a type on or off (on for HapticInput3D by default).
+     *
+     * @param type the mass type, not null
+     * @param on true to draw its force arrows
+     */
+    public void setForceArrow(matModuleType type, boolean on) {
+        if (type == null) {
+            throw new IllegalArgumentException("setForceArrow: the mass type must not be null");
+        }
+        arrowTypes[type.ordinal()] = on;
+    }
+
+    /** @return true when masses of this type get a force arrow. */
+    public boolean hasForceArrow(matModuleType type) {
+        return type != null && arrowTypes[type.ordinal()];
+    }
+
+    /** Turns every force arrow on or off, keeping the per-type choices. */
+    public void setShowForceArrows(boolean show) {
+        showArrows = show;
+    }
+
+    /** @return true when force arrows are drawn. */
+    public boolean getShowForceArrows() {
+        return showArrows;
+    }
+
+    /**
+     * Sets the arrow length per unit of force, in model length units per force unit (the model's: newtons in
+     * REAL_UNITS); finite and &gt; 0, the default 1.
+     */
+    public void setForceArrowScale(float lengthPerForce) {
+        if (!(lengthPerForce > 0) || !Float.isFinite(lengthPerForce)) {
+            throw new IllegalArgumentException("setForceArrowScale: the scale must be finite and > 0, got "
+                    + lengthPerForce);
+        }
+        arrowScale = lengthPerForce;
+    }
+
+    /** @return the arrow length per unit of force. */
+    public float getForceArrowScale() {
+        return arrowScale;
+    }
+
+    /** Sets the colour (channels 0..255) and stroke weight (pixels, &ge; 0) of force arrows. */
+    public void setForceArrowStyle(int r, int g, int b, int a, float weight) {
+        Colors.checkChannels("setForceArrowStyle", r, g, b, a);
+        Colors.checkSize("setForceArrowStyle", "weight", weight);
+        arrowColor = Colors.argb(r, g, b, a);
+        arrowWeight = weight;
+    }
+
+    /** @return the colour of force arrows, packed ARGB. */
+    public int getForceArrowColor() {
+        return arrowColor;
+    }
+
+    /** Replaces the arrow painter (not null); {@link StandardPainters#arrows()} is the default. */
+    public void setArrowPainter(ArrowPainter painter) {
+        if (painter == null) {
+            throw new IllegalArgumentException("setArrowPainter: the painter must not be null");
+        }
+        arrowPainter = painter;
+    }
+
+    /** Forgets the model last drawn (so it can be collected) and makes {@link #draw} do nothing from now on. */
+    public void dispose() {
+        disposed = true;
+        cache.forget();
+    }
+
+    /** @return true after {@link #dispose()}. */
+    public boolean isDisposed() {
+        return disposed;
     }
 
     /** @return the styles, to change in place. */
@@ -146,7 +270,20 @@ public final class ModelDrawer {
             throw new IllegalArgumentException("draw: " + (model == null ? "the model" : "the target")
                     + " must not be null");
         }
+        if (disposed) {
+            return;
+        }
         ModelSnapshot s = cache.sync(model);
+        // Velocities and forces of every mass are copied by the model only on request (avatars' forces always).
+        if (needsMotion()) {
+            if (!s.hasMotion()) {
+                s.requestMotion(true);
+            }
+            motionRequested = true;
+        } else if (motionRequested) {
+            s.requestMotion(false);
+            motionRequested = false;
+        }
         g.pushStyle();
         try {
             g.colorMode(PConstants.RGB, 255);
@@ -156,6 +293,9 @@ public final class ModelDrawer {
             if (showMasses) {
                 drawMasses(s, g);
             }
+            if (showArrows) {
+                drawArrows(s, g);
+            }
         } finally {
             g.popStyle();
         }
@@ -164,6 +304,8 @@ public final class ModelDrawer {
     private void drawLinks(ModelSnapshot s, PGraphics g) {
         int n = s.getNumberOfLinks();
         LinkPainter p = linkPainter;
+        ColorBy by = colorBy;   // links take every colouring
+        ColorScale scaleOf = colorScale;
         p.begin(g, n);
         float kx = scale * zoomX;
         float ky = scale * zoomY;
@@ -174,13 +316,25 @@ public final class ModelDrawer {
             if (!ls.isVisible()) {
                 continue;
             }
-            int argb = ls.hasStrainGradient()
-                    ? ls.colorAt(LinkStyle.strain(s.getLinkElongation(l), cache.restLength(l)))
-                    : ls.argb();
+            int a = s.getLinkMat1Idx(l);
+            int argb;
+            if (by == ColorBy.TYPE) {
+                argb = ls.hasStrainGradient()
+                        ? ls.colorAt(LinkStyle.strain(s.getLinkElongation(l), cache.restLength(l)))
+                        : ls.argb();
+            } else {
+                double v;
+                if (by == ColorBy.STRAIN) {
+                    v = LinkStyle.strain(s.getLinkElongation(l), cache.restLength(l));
+                } else {
+                    int b = cache.planeAxis(l) >= 0 ? a : s.getLinkMat2Idx(l);
+                    v = 0.5 * (massValue(s, a, by) + massValue(s, b, by));
+                }
+                argb = (ls.argb() & 0xFF000000) | (scaleOf.colorAt(v) & 0x00FFFFFF);
+            }
             if ((argb >>> 24) == 0) {
                 continue;
             }
-            int a = s.getLinkMat1Idx(l);
             double x1 = s.x(a);
             double y1 = s.y(a);
             double z1 = s.z(a);
@@ -209,6 +363,9 @@ public final class ModelDrawer {
     private void drawMasses(ModelSnapshot s, PGraphics g) {
         int n = s.getNumberOfMats();
         MassPainter p = massPainter;
+        // masses take the speed and force colourings; by strain they keep their type colour
+        ColorBy by = colorBy == ColorBy.STRAIN ? ColorBy.TYPE : colorBy;
+        ColorScale scaleOf = colorScale;
         p.begin(g, n);
         float kx = scale * zoomX;
         float ky = scale * zoomY;
@@ -217,6 +374,9 @@ public final class ModelDrawer {
             matModuleType type = s.getMatType(i);
             MassStyle ms = style.mass(type);
             int argb = ms.argb();
+            if (by != ColorBy.TYPE && isSimulated(type)) {
+                argb = (argb & 0xFF000000) | (scaleOf.colorAt(massValue(s, i, by)) & 0x00FFFFFF);
+            }
             float r = scale * ms.radius(cache.inertia(i));
             if ((argb >>> 24) == 0 || !(r > 0)) {
                 continue;
@@ -224,5 +384,69 @@ public final class ModelDrawer {
             p.mass(g, i, type, (float) (kx * s.x(i)), (float) (ky * s.y(i)), (float) (kz * s.z(i)), r, argb);
         }
         p.end(g);
+    }
+
+    /** True when this drawer shows velocities or forces of masses other than avatars. */
+    private boolean needsMotion() {
+        if (colorBy == ColorBy.SPEED || colorBy == ColorBy.FORCE) {
+            return true;
+        }
+        if (showArrows) {
+            for (matModuleType t : ARROW_TYPES) {
+                if (t != matModuleType.HapticInput3D && arrowTypes[t.ordinal()]) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    private static final matModuleType[] ARROW_TYPES = matModuleType.values();
+
+    /** Masses that the model moves (not fixed points, avatars or position drivers) take the scale's colour. */
+    private static boolean isSimulated(matModuleType t) {
+        switch (t) {
+            case Ground3D:
+            case Ground1D:
+            case HapticInput3D:
+            case PosInput3D:
+            case UNDEFINED:
+                return false;
+            default:
+                return true;
+        }
+    }
+
+    /** The speed or force norm of a mass for colouring; 0 for masses that are not simulated. */
+    private static double massValue(ModelSnapshot s, int i, ColorBy by) {
+        if (!isSimulated(s.getMatType(i))) {
+            return 0;
+        }
+        return by == ColorBy.SPEED ? s.speed(i) : s.forceNorm(i);
+    }
+
+    private void drawArrows(ModelSnapshot s, PGraphics g) {
+        if ((arrowColor >>> 24) == 0) {
+            return;
+        }
+        int n = s.getNumberOfMats();
+        float kx = scale * zoomX;
+        float ky = scale * zoomY;
+        float kz = scale * zoomZ;
+        float k = arrowScale;
+        for (int i = 0; i < n; i++) {
+            matModuleType type = s.getMatType(i);
+            if (!arrowTypes[type.ordinal()]) {
+                continue;
+            }
+            double fx = s.fx(i);
+            double fy = s.fy(i);
+            double fz = s.fz(i);
+            if (!(Double.isFinite(fx) && Double.isFinite(fy) && Double.isFinite(fz)) || fx == 0 && fy == 0 && fz == 0) {
+                continue;
+            }
+            arrowPainter.arrow(g, i, type, (float) (kx * s.x(i)), (float) (ky * s.y(i)), (float) (kz * s.z(i)),
+                    (float) (kx * k * fx), (float) (ky * k * fy), (float) (kz * k * fz), arrowWeight, arrowColor);
+        }
     }
 }

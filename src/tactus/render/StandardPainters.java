@@ -19,6 +19,11 @@ public final class StandardPainters {
         return new Masses();
     }
 
+    /** @return a new standard arrow painter: a line with a two-stroke head a quarter of its length. */
+    public static ArrowPainter arrows() {
+        return new Arrows();
+    }
+
     /** @return a new standard link painter. */
     public static LinkPainter links() {
         return new Links();
@@ -97,6 +102,56 @@ public final class StandardPainters {
                 g.line(x1, y1, z1, x2, y2, z2);
             } else {
                 g.line(x1, y1, x2, y2);
+            }
+        }
+    }
+
+    private static final class Arrows implements ArrowPainter {
+        private static final float HEAD = 0.25f;
+        private static final float SPREAD = 0.4f;   // half-width of the head over its length
+
+        @Override
+        public void arrow(PGraphics g, int index, matModuleType type, float x, float y, float z, float dx, float dy,
+                          float dz, float weight, int argb) {
+            g.stroke(argb);
+            g.strokeWeight(weight);
+            float ex = x + dx;
+            float ey = y + dy;
+            if (g.is3D()) {
+                float ez = z + dz;
+                float len = (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+                if (!(len > 0)) {
+                    return;
+                }
+                g.line(x, y, z, ex, ey, ez);
+                // a side vector: the arrow crossed with z, or with x when the arrow is along z
+                float sx = dy;
+                float sy = -dx;
+                float sz = 0;
+                float sl = (float) Math.sqrt(sx * sx + sy * sy);
+                if (sl < 1e-6f * len) {
+                    sx = 0;
+                    sy = dz;
+                    sz = -dy;
+                    sl = (float) Math.sqrt(sy * sy + sz * sz);
+                }
+                float k = SPREAD * HEAD * len / sl;
+                float bx = ex - HEAD * dx;
+                float by = ey - HEAD * dy;
+                float bz = ez - HEAD * dz;
+                g.line(ex, ey, ez, bx + k * sx, by + k * sy, bz + k * sz);
+                g.line(ex, ey, ez, bx - k * sx, by - k * sy, bz - k * sz);
+            } else {
+                float len = (float) Math.sqrt(dx * dx + dy * dy);
+                if (!(len > 0)) {
+                    return;
+                }
+                g.line(x, y, ex, ey);
+                float bx = ex - HEAD * dx;
+                float by = ey - HEAD * dy;
+                float k = SPREAD * HEAD;
+                g.line(ex, ey, bx + k * dy, by - k * dx);
+                g.line(ex, ey, bx - k * dy, by + k * dx);
             }
         }
     }

@@ -19,8 +19,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The renderer in a real P3D (OpenGL) sketch: {@link P3DSketch} runs in a child JVM under {@code xvfb-run}
- * (Mesa's software OpenGL) and saves a frame, whose pixels are checked here. Skipped only when {@code xvfb-run}
+ * The renderer in a real P3D (OpenGL) sketch: {@link P3DSketch} (Processing's default camera) and
+ * {@link P3DCameraSketch} (the orbit camera, speed colours, the force arrow) run in a child JVM under
+ * {@code xvfb-run} (Mesa's software OpenGL) and save a frame, whose pixels are checked here. Skipped only when {@code xvfb-run}
  * is not installed. With Processing's default camera, a point at depth z is drawn at
  * {@code centre + p.xy × d / (d - z)}, where {@code d = (height / 2) / tan(π / 6)} is the eye distance; at z = 0
  * that is the 2D mapping.
@@ -54,14 +55,14 @@ class P3DRenderTest {
                 + Integer.toHexString(expected) + ", got " + Integer.toHexString(got));
     }
 
-    @Test
-    void aP3DSketchDrawsSpheresAndLinesWhereTheCameraMapsThem() throws Exception {
+    /** Runs a sketch class in a child JVM under xvfb-run and returns the frame it saved. */
+    private BufferedImage runSketch(Class<?> sketch) throws Exception {
         Assumptions.assumeTrue(onPath("xvfb-run"), "xvfb-run is not installed");
-        Path png = tmp.resolve("p3d.png");
+        Path png = tmp.resolve(sketch.getSimpleName() + ".png");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = new ArrayList<>(List.of("env", "--default-signal=USR1", "xvfb-run", "-a", "-s", "-screen 0 640x480x24", java,
-                "-cp", System.getProperty("java.class.path"), P3DSketch.class.getName(), png.toString()));
-        Path log = tmp.resolve("child.log");
+                "-cp", System.getProperty("java.class.path"), sketch.getName(), png.toString()));
+        Path log = tmp.resolve(sketch.getSimpleName() + ".log");
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         boolean done = p.waitFor(120, TimeUnit.SECONDS);
         if (!done) {
@@ -70,7 +71,12 @@ class P3DRenderTest {
         String output = Files.exists(log) ? Files.readString(log, StandardCharsets.UTF_8) : "";
         assertTrue(done, "the P3D sketch did not finish in 120 s:\n" + output);
         assertTrue(Files.exists(png), "no frame saved; exit " + p.exitValue() + ":\n" + output);
-        BufferedImage img = ImageIO.read(png.toFile());
+        return ImageIO.read(png.toFile());
+    }
+
+    @Test
+    void aP3DSketchDrawsSpheresAndLinesWhereTheCameraMapsThem() throws Exception {
+        BufferedImage img = runSketch(P3DSketch.class);
         assertEquals(P3DSketch.SIZE, img.getWidth());
 
         int white = 0xFFFFFFFF;
@@ -93,5 +99,28 @@ class P3DRenderTest {
         assertColour(blue, img, 60 * k, 40 * k, "sphere at z = 50, projected");
         assertColour(white, img, 60 * k + 10 * k + 3, 40 * k, "outside the projected sphere");
         assertColour(blue, img, 60 * k + 10 * k - 3, 40 * k, "inside the projected sphere, radius 10 k");
+    }
+
+    /**
+     * The orbit camera turned 90° about the vertical (eye on +x): world -z is screen right, at the target's depth
+     * one pixel per unit. The still mass at z = -50 is 50 px right of the centre in the scale's first colour, the
+     * fast one (10 units/s) 50 px left in its last; the avatar's force arrow, 60 units along -z, runs right from it.
+     */
+    @Test
+    void theOrbitCameraColoursAndTheForceArrowInP3D() throws Exception {
+        BufferedImage img = runSketch(P3DCameraSketch.class);
+        assertEquals(P3DCameraSketch.SIZE, img.getWidth());
+        int white = 0xFFFFFFFF;
+        ColorScale scale = ColorScale.heat(0, 10);
+        assertColour(scale.colorAt(0), img, 50, 0, "still mass, seen from the side");
+        assertColour(scale.colorAt(10), img, -50, 0, "fast mass, seen from the side");
+        assertColour(white, img, 0, 0, "nothing at the centre");
+        int red = 0xFFFF3232;   // the avatar
+        assertColour(red, img, 0, 60, "the avatar");
+        int blue = 0xFF0000FF;
+        for (int x = 20; x <= 40; x += 10) {
+            assertColour(blue, img, x, 60, "the force arrow");
+        }
+        assertColour(white, img, 50, 60 - 12, "above the arrow's head");
     }
 }

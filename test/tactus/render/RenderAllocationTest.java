@@ -143,6 +143,36 @@ class RenderAllocationTest {
                 + ", " + measured[2]);
     }
 
+    @Test
+    void colouringBySpeedForceOrStrainAndForceArrowsAllocateNothingEither() {
+        PhysicalModel m = model(400);
+        m.addHapticInput3D("hand", new Vect3D(-10, 0, 0), 1);
+        m.addSpringDamper3D("grip", 1, 0.01, 0.001, "hand", "m1");
+        m.getSnapshot().requestMotion(true);
+        m.computeNSteps(20);
+        ModelRenderer r = everythingVisible();
+        r.setForceArrowScale(50);
+        CountingJava2D g = new CountingJava2D();
+        for (ColorBy by : new ColorBy[] {ColorBy.SPEED, ColorBy.FORCE, ColorBy.STRAIN}) {
+            r.colorBy(by, 0, 1);
+            for (int f = 0; f < 2000; f++) {
+                r.renderModel(m, g);
+            }
+            long lines = g.lines;
+            r.renderModel(m, g);
+            assertEquals(404 + 3, g.lines - lines, by + ": every link and the avatar's arrow (3 strokes)");
+            long last = -1;
+            for (int attempt = 0; attempt < 3 && last != 0; attempt++) {
+                last = allocatedBy(() -> {
+                    for (int f = 0; f < 200; f++) {
+                        r.renderModel(m, g);
+                    }
+                });
+            }
+            assertEquals(0, last, by + ": bytes allocated by 200 frames");
+        }
+    }
+
     /** Bytes per frame of the renderer and of the bare Processing calls, for a model of n masses, in JAVA2D. */
     private static long[] java2dBytesPerFrame(int n) {
         PhysicalModel m = model(n);
