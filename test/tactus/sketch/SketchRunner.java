@@ -7,14 +7,14 @@ import processing.core.PApplet;
 
 /**
  * The main class of the child JVM that {@link SketchHarness} starts under Xvfb: it runs one compiled sketch
- * until it has drawn a given number of frames, saves the last frame as PNG, prints
+ * until it has drawn a given number of frames, saves the frame at half that count and the last frame as PNG, prints
  * {@code tactus-sketch-runner: frames=N} and ends the JVM with status 0.
  *
  * <p>An exception that escapes the sketch (in {@code setup()}, {@code draw()} or an event) is printed on
  * standard error and ends the JVM with status 3, so that a failing sketch does not wait for the timeout with its
  * window still open.
  *
- * <p>Usage: {@code java tactus.sketch.SketchRunner SketchClass frames frame.png}
+ * <p>Usage: {@code java tactus.sketch.SketchRunner SketchClass frames frame.png [sketchFolder]}
  */
 public final class SketchRunner {
 
@@ -36,6 +36,9 @@ public final class SketchRunner {
      * frame and ends the JVM once enough frames have been drawn.
      */
     public void post() {
+        if (sketch.frameCount == frames / 2 && frames >= 2) {
+            sketch.save(SketchHarness.midFramePath(png.toPath()).toAbsolutePath().toString());
+        }
         if (sketch.frameCount < frames) {
             return;
         }
@@ -52,14 +55,17 @@ public final class SketchRunner {
      * @throws Exception if the sketch cannot be created
      */
     public static void main(String[] args) throws Exception {
-        if (args.length != 3) {
-            System.err.println("usage: SketchRunner SketchClass frames frame.png");
+        if (args.length != 3 && args.length != 4) {
+            System.err.println("usage: SketchRunner SketchClass frames frame.png [sketchFolder]");
             System.exit(2);
         }
         PApplet sketch = (PApplet) Class.forName(args[0]).getDeclaredConstructor().newInstance();
         SketchRunner runner = new SketchRunner(sketch, Integer.parseInt(args[1]), new File(args[2]));
         sketch.registerMethod("post", runner);
-        PApplet.runSketch(new String[] {"--location=0,0", args[0]}, sketch);
+        // As the editor does: --sketch-path makes sketchPath() and dataPath() point into the sketch's folder.
+        PApplet.runSketch(args.length == 4
+                ? new String[] {"--location=0,0", "--sketch-path=" + args[3], args[0]}
+                : new String[] {"--location=0,0", args[0]}, sketch);
         // runSketch installs Processing's own default handler, which prints the exception, keeps it in
         // PApplet.uncaughtThrowable (for the editor) and lets the window live on. Replace it from now on, and
         // watch that field for what was thrown before (in setup(), on the animation thread).
