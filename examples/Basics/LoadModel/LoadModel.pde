@@ -121,6 +121,7 @@ void drawModel(PhysicalModel m, float cx, int massColour) {
         line(cx - 180, y, cx + 180, y);
       }
       break;
+    case UNDEFINED:
     default:
       break;
     }

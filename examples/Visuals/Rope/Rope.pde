@@ -18,6 +18,7 @@ int nLinks = 30;
 float segment = 10;
 boolean holding = true;   // key SPACE lets go, R starts again
 int hand;                 // index of the hand mass
+Vect3D target = new Vect3D();  // where the hand is heading
 
 ArrayList<PVector> ropePos = new ArrayList<PVector>();
 ArrayList<PVector> ropeSpeed = new ArrayList<PVector>();  // displacement per step
@@ -67,9 +68,10 @@ void draw() {
     float w = TWO_PI / 5;
     float tx = 450 + 200 * sin(w * t);
     float ty = 480 + 40 * sin(2 * w * t);
+    target.set(tx, ty, 0);
     Vect3D p = mdl.getMatPosAt(hand);
-    float vx = 200 * w * cos(w * t) + 5 * (tx - (float) p.x());
-    float vy = 80 * w * cos(2 * w * t) + 5 * (ty - (float) p.y());
+    float vx = 200 * w * cos(w * t) + 5 * (float) (target.x() - p.x());
+    float vy = 80 * w * cos(2 * w * t) + 5 * (float) (target.y() - p.y());
     mdl.triggerVelocityControl(hand, vx, vy, 0);
   }
   mdl.draw_physics();
