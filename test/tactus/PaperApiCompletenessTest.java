@@ -119,6 +119,29 @@ class PaperApiCompletenessTest {
         assertTrue(wrong.isEmpty(), String.join("\n", wrong));
     }
 
+    /** The page for people coming from the paper's engine names every listed member (its API tables). */
+    @Test
+    void everyListedMemberIsNamedInTheDocs() throws IOException {
+        String doc = new String(Files.readAllBytes(DOC), StandardCharsets.UTF_8);
+        Set<String> missing = new LinkedHashSet<>();
+        for (Entry e : readList()) {
+            String m = e.member.replaceFirst("^static ", "");
+            String name;
+            if (m.startsWith("constant ") || m.startsWith("field ")) {
+                String[] parts = m.trim().split("\\s+");
+                name = parts[parts.length - 1];
+            } else if (m.startsWith("new(")) {
+                name = e.className + "(";
+            } else {
+                name = m.substring(m.indexOf(' ') + 1, m.indexOf('(')).trim();
+            }
+            if (!java.util.regex.Pattern.compile("\\b" + java.util.regex.Pattern.quote(name)).matcher(doc).find()) {
+                missing.add(e.className + ": " + name);
+            }
+        }
+        assertTrue(missing.isEmpty(), DOC + " does not name:\n  " + String.join("\n  ", missing));
+    }
+
     /** The checker itself must see a missing method, a wrong return type and a missing constant. */
     @Test
     void theCheckerFindsMissingMembersAndWrongReturnTypes() {
