@@ -117,8 +117,8 @@ public final class FrameAndSoundChecks {
     }
 
     /**
-     * Reads a RIFF/WAVE file of 16-bit PCM or 32-bit IEEE float samples (what {@code tactus.audio.WavWriter}
-     * writes, and what most recorders write) and measures its level. The mean of each channel is removed first:
+     * Reads a RIFF/WAVE file of 8- or 16-bit PCM or 32-bit IEEE float samples (what {@code tactus.audio.WavWriter}
+     * and the headless audio output write) and measures its level. The mean of each channel is removed first:
      * a constant offset is not sound.
      *
      * @param wav the file
@@ -154,8 +154,8 @@ public final class FrameAndSoundChecks {
                     format = b.getShort(body + 24) & 0xFFFF;
                 }
             } else if (id == 0x61746164) { // "data"
-                if (channels < 1 || !((format == 1 && bits == 16) || (format == 3 && bits == 32))) {
-                    throw new IllegalArgumentException(wav + ": only 16-bit PCM and 32-bit float are read (format "
+                if (channels < 1 || !((format == 1 && (bits == 8 || bits == 16)) || (format == 3 && bits == 32))) {
+                    throw new IllegalArgumentException(wav + ": only 8- and 16-bit PCM and 32-bit float are read (format "
                             + format + ", " + bits + " bits, " + channels + " channels)");
                 }
                 int bytesPerSample = bits / 8;
@@ -167,7 +167,9 @@ public final class FrameAndSoundChecks {
                 int p = body;
                 for (long f = 0; f < frames; f++) {
                     for (int c = 0; c < channels; c++, p += bytesPerSample) {
-                        double v = format == 1 ? b.getShort(p) / 32768.0 : b.getFloat(p);
+                        double v = format == 3 ? b.getFloat(p)
+                                : bits == 16 ? b.getShort(p) / 32768.0
+                                : ((bytes[p] & 0xFF) - 128) / 128.0; // 8-bit WAV samples are unsigned
                         sum[c] += v;
                         sum2[c] += v * v;
                         peak = Math.max(peak, Math.abs(v));

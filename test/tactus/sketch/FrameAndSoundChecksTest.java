@@ -94,6 +94,27 @@ class FrameAndSoundChecksTest {
         assertFalse(lsb.acRms >= ExamplesTest.MIN_AC_RMS);
     }
 
+    /** 8-bit WAV samples are unsigned, 128 being zero: a square wave of +-64 steps has an RMS of 0.5. */
+    @Test
+    void eightBitFilesAreRead() throws IOException {
+        int n = 1000;
+        java.nio.ByteBuffer b = java.nio.ByteBuffer.allocate(44 + n).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        b.put("RIFF".getBytes(java.nio.charset.StandardCharsets.US_ASCII)).putInt(36 + n)
+                .put("WAVEfmt ".getBytes(java.nio.charset.StandardCharsets.US_ASCII)).putInt(16)
+                .putShort((short) 1).putShort((short) 1).putInt(8000).putInt(8000).putShort((short) 1)
+                .putShort((short) 8).put("data".getBytes(java.nio.charset.StandardCharsets.US_ASCII)).putInt(n);
+        for (int i = 0; i < n; i++) {
+            b.put((byte) (i % 2 == 0 ? 128 + 64 : 128 - 64));
+        }
+        Path p = tmp.resolve("eight.wav");
+        Files.write(p, b.array());
+        FrameAndSoundChecks.Level l = FrameAndSoundChecks.level(p);
+        assertEquals(n, l.frames);
+        assertEquals(8000, l.sampleRate);
+        assertEquals(0.5, l.acRms, 1e-12);
+        assertEquals(0.5, l.peak, 1e-12);
+    }
+
     @Test
     void notAWaveFileIsRefused() throws IOException {
         Path p = tmp.resolve("text.wav");
