@@ -85,7 +85,8 @@ void draw() {
   textSize(13);
   textAlign(LEFT, TOP);
   text(mdl.getNumberOfMats() + " masses, " + mdl.getNumberOfLinks() + " links; torn links: " + tears
-    + ", weights added: " + weights + ", threads still in their subset: " + mdl.getSubsetMembers("threads").length, 12, 10);
+    + ", weights added: " + weights + ", threads still in their subset: " + mdl.getSubsetMembers("threads").length
+    + ", drawn at scale " + nf(renderer.getScale(), 0, 1), 12, 10);
   text("C: cut the links starting at the knot nearest the mouse   X: remove that knot   P: pin it   "
     + "A: hang a weight from it   N: a new net", 12, height - 22);
 }
