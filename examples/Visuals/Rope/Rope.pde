@@ -86,15 +86,16 @@ void draw() {
   }
 
   background(250);
-  stroke(120);
-  line(0, height - 30, width, height - 30);
+  noStroke();
+  fill(225, 215, 200);
+  rect(0, height - 30, width, 30);   // the floor
   noStroke();
   fill(60);
   for (PVector p : pegs) {
     ellipse(p.x, height - p.y, 16, 16);
   }
   // The rope: one segment per link, coloured by the speed of its lower end.
-  strokeWeight(4);
+  strokeWeight(6);
   for (int i = 1; i < ropePos.size(); i++) {
     PVector a = ropePos.get(i - 1);
     PVector b = ropePos.get(i);
