@@ -10,11 +10,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -38,6 +41,8 @@ import org.junit.jupiter.api.TestFactory;
  * <li>if it plays sound ({@link FrameAndSoundChecks#makesSound}): the WAV file that the headless audio output
  * records when the system property {@value #RECORD_PROPERTY} names it ({@code build/sketches/<Sketch>/audio.wav})
  * is not silent: its RMS, DC removed, is at least {@value #MIN_AC_RMS} of full scale.</li>
+ * <li>after the checked frames, every key the sketch reacts to and a mouse drag ({@link #inputScript}) run
+ * without an exception, so that the code behind every control runs headless too.</li>
  * </ul>
  */
 class ExamplesTest {
@@ -110,9 +115,17 @@ class ExamplesTest {
         Path wav = work.resolve("audio.wav");
         Files.deleteIfExists(wav);
         Path png = work.resolve("frame.png");
+        String source = pdeSource(dir);
+        String input = inputScript(source);
         SketchHarness.Run run = SketchHarness.run(sketch.className, classes, classpath, FRAMES, png,
-                TIMEOUT_SECONDS, sketchCopy, Map.of(RECORD_PROPERTY, wav.toAbsolutePath().toString()));
+                TIMEOUT_SECONDS, sketchCopy, Map.of(RECORD_PROPERTY, wav.toAbsolutePath().toString(),
+                        SketchRunner.INPUT_PROPERTY, input));
         SketchHarness.check(run, FRAMES);
+        int expectedEvents = SketchRunner.inputEvents(input, 100, 100).size();
+        if (!run.stdout.contains(SketchRunner.INPUT_MARKER + expectedEvents)) {
+            throw new AssertionError(sketch.className + " did not play its " + expectedEvents + " input events ("
+                    + input + ")\n" + run.logs());
+        }
 
         double drawn = FrameAndSoundChecks.drawnShare(run.image);
         if (drawn < MIN_DRAWN_SHARE) {
@@ -135,7 +148,7 @@ class ExamplesTest {
         }
 
         String sound = "";
-        if (FrameAndSoundChecks.makesSound(pdeSource(dir))) {
+        if (FrameAndSoundChecks.makesSound(source)) {
             if (Files.isRegularFile(wav)) {
                 FrameAndSoundChecks.Level level = FrameAndSoundChecks.level(wav);
                 if (!(level.acRms >= MIN_AC_RMS)) {
@@ -151,8 +164,71 @@ class ExamplesTest {
             }
         }
         System.out.printf(Locale.ROOT, "%s: %d frames in %.1f s (JVM and Xvfb start included), frame %s, "
-                + "%.1f %% drawn, %.1f %% changed since frame %d%s%n", sketch.className, run.frames, run.seconds,
-                png, 100 * drawn, 100 * changed, FRAMES / 2, sound);
+                + "%.1f %% drawn, %.1f %% changed since frame %d%s; then %d input events (%s)%n", sketch.className,
+                run.frames, run.seconds, png, 100 * drawn, 100 * changed, FRAMES / 2, sound, expectedEvents, input);
+    }
+
+    private static final Pattern KEY_EQUALS = Pattern.compile("\\bkey\\s*==\\s*'(\\\\.|[^'\\\\])'");
+    private static final Pattern KEY_RANGE = Pattern.compile(
+            "\\bkey\\s*>=\\s*'([^'\\\\])'\\s*&&\\s*key\\s*<=\\s*'([^'\\\\])'");
+    private static final Pattern KEY_CODE = Pattern.compile("\\bkeyCode\\s*==\\s*(UP|DOWN|LEFT|RIGHT)\\b");
+    private static final Pattern MOUSE = Pattern.compile("\\bvoid\\s+mouse(Pressed|Dragged|Released)\\s*\\(");
+
+    /**
+     * The input a sketch reacts to, as a script for {@link SketchRunner#INPUT_PROPERTY}: every key its source
+     * compares {@code key} or {@code keyCode} with (in the order they appear; both ends of a range such as
+     * {@code key >= '1' && key <= '9'}), then the mouse if it has a mouse handler. The runner plays it after the
+     * checked frames, so that the code behind every control runs too, and any exception it throws fails the test.
+     *
+     * @param source the code of all the sketch's tabs
+     * @return the script, empty if the sketch takes no input
+     */
+    static String inputScript(String source) {
+        List<String> items = new ArrayList<>();
+        Matcher m = KEY_EQUALS.matcher(source);
+        List<int[]> found = new ArrayList<>(); // {position, item kind, value}
+        while (m.find()) {
+            String c = m.group(1);
+            char ch = c.length() == 1 ? c.charAt(0) : unescape(c.charAt(1));
+            found.add(new int[] {m.start(), 'k', ch});
+        }
+        m = KEY_RANGE.matcher(source);
+        while (m.find()) {
+            found.add(new int[] {m.start(), 'k', m.group(1).charAt(0)});
+            found.add(new int[] {m.start() + 1, 'k', m.group(2).charAt(0)});
+        }
+        m = KEY_CODE.matcher(source);
+        while (m.find()) {
+            int code;
+            switch (m.group(1)) {
+                case "UP": code = processing.core.PConstants.UP; break;
+                case "DOWN": code = processing.core.PConstants.DOWN; break;
+                case "LEFT": code = processing.core.PConstants.LEFT; break;
+                default: code = processing.core.PConstants.RIGHT; break;
+            }
+            found.add(new int[] {m.start(), 'c', code});
+        }
+        found.sort(Comparator.comparingInt(f -> f[0]));
+        for (int[] f : found) {
+            String item = (char) f[1] + Integer.toString(f[2]);
+            if (!items.contains(item)) {
+                items.add(item);
+            }
+        }
+        if (MOUSE.matcher(source).find()) {
+            items.add("mouse");
+        }
+        return String.join(",", items);
+    }
+
+    private static char unescape(char c) {
+        switch (c) {
+            case 'n': return '\n';
+            case 't': return '\t';
+            case 'r': return '\r';
+            case 'b': return '\b';
+            default: return c; // \' and \\
+        }
     }
 
     private static String pdeSource(Path dir) throws IOException {

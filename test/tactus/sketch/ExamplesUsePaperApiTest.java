@@ -24,7 +24,8 @@ import org.junit.jupiter.api.Test;
  * that API ({@code test/tactus/paper-api-v1.1.txt}, checked against the library by
  * {@code tactus.PaperApiCompletenessTest}) and fails for every method, constructor, field or enum constant that no
  * example sketch under {@code examples/} uses, except the few in {@link #NOT_FOR_SKETCHES}. Since
- * {@link ExamplesTest} runs every example, each listed call is then run headless in {@code gradle test}.
+ * {@link ExamplesTest} runs every example and then presses every key it reacts to, each listed call is then run
+ * headless in {@code gradle test} (a call behind the file chooser, {@code loadModelFromFile}, only opens it).
  *
  * <p>The check is textual, by name: a method counts as used when some sketch has {@code name(}, a constructor
  * when it has {@code new Class(}, a constant when it has {@code Type.CONSTANT} or {@code case CONSTANT:}, a field
