@@ -278,7 +278,9 @@ void drawInfo() {
   String end2 = m2 < 0 ? "a plane" : "mat " + m2 + " '" + mdl.getLinkMat2NameAt(i) + "' (" + mdl.getMatTypeAt(m2) + ")";
   text("link " + i + " of " + mdl.getNumberOfLinks() + ": " + mdl.getLinkTypeAt(i) + " '" + mdl.getLinkNameAt(i)
     + "' joins mat " + m1 + " '" + mdl.getLinkMat1NameAt(i) + "' (" + mdl.getMatTypeAt(m1) + ") and " + end2, 12, 10);
-  text(mdl.getNumberOfMats() + " masses of 9 kinds, " + mdl.getNumberOfLinks() + " links of 9 kinds", 12, 28);
+  PVector pull = mdl.getMatForcePVector("bob");
+  text(mdl.getNumberOfMats() + " masses of 9 kinds, " + mdl.getNumberOfLinks() + " links of 9 kinds; the rod pulls the bob with "
+    + nf(pull.mag() * 1000, 0, 3) + " thousandths of a unit", 12, 28);
   text("G: turn gravity (now " + (90 * (gravityTurns % 4)) + " deg)   K: kick everything   F: force arrows "
     + (showForces ? "on" : "off") + "   L: next link   hold the mouse: the hand follows it", 12, height - 22);
 }
