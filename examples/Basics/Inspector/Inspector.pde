@@ -1,10 +1,9 @@
 /*
- * Inspector: every number of a running model, read and changed by index and by
- * name. A hammer on a springy handle swings over three oscillator bars and
- * strikes them; the panels show the selected mass and link (position, velocity,
- * force, mass, stiffness, damping, lengths) and the model's global settings.
- * Keys change one module at a time or whole subsets, change the simulation
- * rate, pause the model and advance it one step at a time.
+ * Inspector: a hammer on a springy handle swings over three oscillator bars and
+ * strikes them, while the panels show every number of the selected mass, the
+ * selected link and the model. Keys change one module at a time, by index or by
+ * name, or whole subsets, change the simulation rate, and pause and step the
+ * model.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel, y points up.
  */

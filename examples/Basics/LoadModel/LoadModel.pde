@@ -1,9 +1,9 @@
 /*
- * LoadModel: models saved in and loaded from XML files, in the paper engine's
- * format. The mobile on the left is read from data/mobile.xml at start. After
- * 1.5 seconds the sketch saves it, as it is at that moment, and loads the file
- * into a second model on the right: from then on the two move exactly alike,
- * because the file keeps positions and velocities, not only the parameters.
+ * LoadModel: the mobile on the left is read from data/mobile.xml, a model file
+ * in the paper engine's XML format. After 1.5 seconds the sketch saves it as it
+ * is and loads the file into a second model on the right: the two then move
+ * exactly alike, because the file keeps velocities as well as positions and
+ * parameters.
  *
  * Units: those of the file (ALGO_UNITS, 1 model unit = 1 pixel, y points up).
  */

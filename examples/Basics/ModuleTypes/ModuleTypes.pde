@@ -1,11 +1,8 @@
 /*
  * ModuleTypes: one model with every kind of mass and every kind of interaction
  * of the paper's engine, drawn by your own code, which asks the model what each
- * module is (getMatTypeAt, getLinkTypeAt) and switches on the answer.
- * A spring pendulum, a box on a spring and a dashpot, a weight on a rope, 3D and
- * 1D oscillators, a moon held by an attractor, marbles in a bubble stirred by a
- * hand (a HapticInput3D) and balls bouncing on a floor (a plane contact).
- * The info line walks through the links one by one and names both ends of each.
+ * module is (getMatTypeAt, getLinkTypeAt) and switches on the answer. The info
+ * line walks through the links one by one and names both ends of each.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel, y points up (the floor is a plane
  * at y = 40, which pushes toward +y).

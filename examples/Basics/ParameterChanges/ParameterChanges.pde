@@ -1,14 +1,11 @@
 /*
- * ParameterChanges: change a running model's parameters, the ways the paper's
- * engine offers. A string of beads hangs between two posts; its springs form a
- * subset, and a ramp controller slowly lengthens and shortens them on its own,
- * so the string sags and tightens. Keys change the stiffness, damping, masses
- * and spacing of whole groups at once, by subset or by name pattern, and pluck
- * the string by driving one bead's velocity.
- *
- * The damping can also be turned with a MIDI knob (controller 1): with The
- * MidiBus library installed, uncomment the three MidiBus lines below. Without it
- * the number keys play the knob.
+ * ParameterChanges: a string of beads hangs between two posts while its
+ * parameters change. A ramp controller lengthens and shortens its springs on
+ * its own; keys change stiffness, damping, masses and spacing of whole groups,
+ * by subset or by name pattern, and pluck the string by driving a bead's
+ * velocity. The damping also follows a MIDI knob (controller 1): with The
+ * MidiBus installed, uncomment the three MidiBus lines below; without it, the
+ * number keys play the knob.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel, y points up.
  */

@@ -1,10 +1,9 @@
 /*
- * TopologyChanges: change what a running model is made of. A net of masses,
- * made by TopoGenerator, hangs from its top row; on its own it tears down the
- * middle, one link at a time, from the bottom up. You can cut links, remove
- * masses, pin masses in place and hang new weights while it runs.
- * The generic renderer (ModelRenderer) draws it in plain 2D (JAVA2D), with the
- * links turning red as they stretch.
+ * TopologyChanges: a net made by TopoGenerator hangs from its top row and tears
+ * down the middle on its own, one link at a time; keys cut links, remove
+ * masses, pin them and hang new weights while it runs. The generic renderer
+ * (ModelRenderer) draws it in plain 2D (JAVA2D), links turning red as they
+ * stretch.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel, y points up.
  */

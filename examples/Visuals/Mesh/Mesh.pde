@@ -1,9 +1,8 @@
 /*
  * Mesh: cloths, plates, jellies and a ball, each built in a few lines by
- * TopoGenerator and drawn in 3D in one call by ModelRenderer. The scenes change
- * every 1.5 seconds; each one holds its mesh with a different boundary
- * condition (every Bound of the generator): by an edge, by a face, by its
- * corners or by its centre. Links turn red as they stretch.
+ * TopoGenerator and drawn in 3D in one call by ModelRenderer. The scene changes
+ * every 1.5 seconds, and each holds its mesh with a different boundary
+ * condition (every Bound of the generator); links turn red as they stretch.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel; gravity pulls toward -z, which is
  * drawn downward.

@@ -1,10 +1,9 @@
 /*
- * Rope: a rope with a weight at its end, swung by a hand along a figure of
- * eight, catching on three pegs. The rope is a chain of masses joined by Rope3D
- * links, which pull when stretched and go slack when pushed. The sketch reads
- * all rope positions and speeds at once into lists (the paper engine's
- * ArrayList<PVector> helpers) and draws the rope as one curve, hot where it is
- * fast. Let go of it, and it falls to the floor.
+ * Rope: a rope with a weight at its end, swung along a figure of eight by a
+ * velocity-controlled hand, catches on three pegs; let go of it, and it falls to
+ * the floor. The sketch reads all the rope's positions and speeds at once into
+ * lists (the paper engine's ArrayList<PVector> helpers) and colours the rope by
+ * speed.
  *
  * Units: ALGO_UNITS, 1 model unit = 1 pixel, y points up.
  */
