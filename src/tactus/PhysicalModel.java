@@ -1867,6 +1867,14 @@ public class PhysicalModel {
         }
     }
 
+    /**
+     * The original's signature, with a {@code float} value: the same as
+     * {@link #changeParamOfSubset(double, String, String)}.
+     */
+    public void changeParamOfSubset(float value, String subset, String param) {
+        changeParamOfSubset((double) value, subset, param);
+    }
+
     /** @return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset. */
     public double getParamValueOfSubset(String subset, String param) {
         enter();

@@ -106,6 +106,17 @@ public final class Vect3D {
         return dx * dx + dy * dy + dz * dz;
     }
 
+    /**
+     * Compares the components exactly, as the paper's engine does. This overloads {@code equals}; it does not
+     * override {@link Object#equals(Object)}, so collections still compare vectors by identity.
+     *
+     * @param v the other vector (null gives false)
+     * @return true if x, y and z are equal
+     */
+    public boolean equals(Vect3D v) {
+        return v != null && x == v.x && y == v.y && z == v.z;
+    }
+
     /** @return true when all three components are finite. */
     public boolean isFinite() {
         return Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z);

@@ -19,6 +19,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -368,6 +369,28 @@ public final class SketchHarness {
      */
     public static Run run(String className, Path classes, String classpath, int frames, Path png,
             double timeoutSeconds) {
+        return run(className, classes, classpath, frames, png, timeoutSeconds, null, Map.of());
+    }
+
+    /**
+     * Runs a compiled sketch as {@link #run(String, Path, String, int, Path, double)} does, with a sketch folder
+     * and system properties for the child JVM. The sketch folder is what the sketch's {@code sketchPath()} and
+     * {@code dataPath()} use, as the editor passes it with {@code --sketch-path}. The runner also saves the frame
+     * at half the frame count, beside {@code png} as {@code <name>-mid.png} ({@link #midFramePath}).
+     *
+     * @param className      the sketch class
+     * @param classes        the folder of the compiled sketch
+     * @param classpath      the library classpath
+     * @param frames         frames to draw (at least 2)
+     * @param png            where to save the last frame
+     * @param timeoutSeconds the longest the run may take
+     * @param sketchPath     the sketch folder, or null for the JVM's working folder
+     * @param properties     system properties for the child JVM ({@code -Dkey=value})
+     * @return the run's results
+     * @throws AssertionError if Xvfb is missing or the run times out (with the sketch's logs)
+     */
+    public static Run run(String className, Path classes, String classpath, int frames, Path png,
+            double timeoutSeconds, Path sketchPath, Map<String, String> properties) {
         Path xvfbRun = requireXvfb();
         String runnerLocation = location(SketchRunner.class);
         String java = Paths.get(System.getProperty("java.home"), "bin", "java").toString();
@@ -375,12 +398,17 @@ public final class SketchHarness {
         // children of this JVM do once a native library (jSerialComm) has set it to ignored: reset it first.
         List<String> cmd = new ArrayList<>(List.of("env", "--default-signal=USR1", xvfbRun.toString(), "-a", "-s",
                 "-screen 0 1280x1024x24",
-                java, "-Xmx512m", "-Dfile.encoding=UTF-8",
-                "-cp", classes + File.pathSeparator + runnerLocation + File.pathSeparator + classpath,
+                java, "-Xmx512m", "-Dfile.encoding=UTF-8"));
+        properties.forEach((k, v) -> cmd.add("-D" + k + "=" + v));
+        cmd.addAll(List.of("-cp", classes + File.pathSeparator + runnerLocation + File.pathSeparator + classpath,
                 SketchRunner.class.getName(), className, Integer.toString(frames), png.toString()));
+        if (sketchPath != null) {
+            cmd.add(sketchPath.toAbsolutePath().toString());
+        }
         try {
             Files.createDirectories(png.toAbsolutePath().getParent());
             Files.deleteIfExists(png);
+            Files.deleteIfExists(midFramePath(png));
             Run r = runOnce(className, cmd, png, timeoutSeconds);
             // xvfb-run -a can race with another xvfb-run started at the same moment for the same display number.
             if (r.exitCode != 0 && r.stderr.contains("Xvfb failed to start")) {
@@ -539,6 +567,20 @@ public final class SketchHarness {
             throw new AssertionError(String.format(Locale.ROOT,
                     "%s drew a blank frame (luminance spread %.3f of 255)", r.sketch, spread) + "\n" + r.logs());
         }
+    }
+
+    /**
+     * Where {@link SketchRunner} saves the frame drawn at half the frame count: beside the last frame, with
+     * {@code -mid} before the extension.
+     *
+     * @param png the last frame's file
+     * @return the mid frame's file
+     */
+    public static Path midFramePath(Path png) {
+        String name = png.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String mid = dot < 0 ? name + "-mid" : name.substring(0, dot) + "-mid" + name.substring(dot);
+        return png.resolveSibling(mid);
     }
 
     /**

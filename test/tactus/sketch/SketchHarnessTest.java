@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -128,6 +129,40 @@ class SketchHarnessTest {
         AssertionError e = assertThrows(AssertionError.class, () -> SketchHarness.check(run, 30));
         assertTrue(e.getMessage().contains("ArrayIndexOutOfBoundsException")
                 && e.getMessage().contains("SetupThrower.setup"), e.getMessage());
+    }
+
+    /**
+     * One child run: the sketch folder given to the runner is the sketch's {@code sketchPath()}, so its
+     * {@code data/} files load as in the editor; system properties reach the sketch; the frame at half time is
+     * saved beside the last one.
+     */
+    @Test
+    void theSketchFolderPropertiesAndMidFrameReachTheRun() throws Exception {
+        Path folder = tmp.resolve("sketch");
+        Files.createDirectories(folder.resolve("data"));
+        Files.write(folder.resolve("data/greeting.txt"), "hello from data".getBytes(StandardCharsets.UTF_8));
+        SketchHarness.JavaSketch sketch = SketchHarness.preprocess("Folder",
+                "void setup() {\n"
+                + "  size(120, 80);\n"
+                + "  println(\"read: \" + loadStrings(\"greeting.txt\")[0]);\n"
+                + "  println(\"property: \" + System.getProperty(\"tactus.test.word\"));\n"
+                + "  saveStrings(\"written.txt\", new String[] {\"ok\"});\n"
+                + "}\n"
+                + "void draw() { background(frameCount < 6 ? 0 : 255); }\n");
+        String cp = SketchHarness.sketchClasspath();
+        Path classes = SketchHarness.compile(sketch, tmp.resolve("work"), cp);
+        Path png = tmp.resolve("out/frame.png");
+        SketchHarness.Run run = SketchHarness.run(sketch.className, classes, cp, 10, png, 60, folder,
+                java.util.Map.of("tactus.test.word", "tactile"));
+        assertEquals(0, run.exitCode, run.logs());
+        assertTrue(run.stdout.contains("read: hello from data"), run.logs());
+        assertTrue(run.stdout.contains("property: tactile"), run.logs());
+        assertTrue(Files.isRegularFile(folder.resolve("written.txt")), "saveStrings writes into the sketch folder");
+        // Frame 5 is black, frame 10 white.
+        java.awt.image.BufferedImage mid = javax.imageio.ImageIO.read(SketchHarness.midFramePath(png).toFile());
+        assertEquals(0x000000, mid.getRGB(60, 40) & 0xFFFFFF);
+        assertEquals(0xFFFFFF, run.image.getRGB(60, 40) & 0xFFFFFF);
+        assertEquals(tmp.resolve("out/frame-mid.png"), SketchHarness.midFramePath(png));
     }
 
     /** One child run: a sketch that only clears the screen reaches its frames but fails as blank. */
