@@ -12,8 +12,10 @@ import java.util.concurrent.locks.LockSupport;
  * <p>{@link #setTarget} publishes the target and wakes the helper, which passes it on and takes the force;
  * {@link #takeForce} returns everything the helper has collected since the previous call (forces are never
  * lost, at worst they arrive one tick later). {@link #step} calls the wrapped link directly. If the wrapped
- * link throws, the force becomes NaN for good, so the loop sends zero torque from then on. Call
- * {@link #close()} to stop the helper thread.
+ * link throws, the helper stops and every later {@link #takeForce} throws an {@link IllegalStateException}
+ * that carries the model's exception (the haptic loop then sends zero torque and stops, naming it). Call
+ * {@link #close()} to stop the helper thread. {@link HapticLoop} wraps its avatar in one by itself in
+ * {@link HapticLoop.Mode#AUDIO}.
  */
 public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private final AvatarLink inner;
@@ -38,6 +40,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private double takenZ;
 
     private volatile long exchanges;
+    private volatile RuntimeException failure;
 
     /** Wraps a link (typically a {@link PhysicalModelAvatar}) and starts the helper thread. */
     public DecoupledAvatar(AvatarLink inner) {
@@ -64,6 +67,10 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
 
     @Override
     public void takeForce(double[] out) {
+        RuntimeException failed = failure;
+        if (failed != null) {
+            throw new IllegalStateException("the model failed on the avatar exchange thread: " + failed, failed);
+        }
         double x;
         double y;
         double z;
@@ -131,9 +138,9 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
                 inner.setTarget(x, y, z);
                 inner.takeForce(f);
             } catch (RuntimeException e) {
-                f[0] = Double.NaN;  // the loop sees a non-finite force and sends zero torque
-                f[1] = Double.NaN;
-                f[2] = Double.NaN;
+                failure = e;        // the next takeForce throws: the loop sends zero torque and stops
+                exchanges++;
+                return;
             }
             long fs = forceSeq;
             forceSeq = fs + 1;

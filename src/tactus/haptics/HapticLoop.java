@@ -19,6 +19,13 @@ import java.util.concurrent.locks.LockSupport;
  * motors where the link still allows; {@link #close()} stops the loop and closes the board, which sends
  * zero torques (the board also does so from a JVM shutdown hook).
  *
+ * <p>Timing: ticks fall on absolute deadlines (a late tick does not shift the ones after it); the thread parks
+ * until {@link #setSpinMicros(int) a short time} before each deadline and spins the rest. In {@link Mode#AUDIO}
+ * the loop wraps its avatar in a {@link DecoupledAvatar} by default, so that a tick never waits for the model's
+ * lock while the audio thread computes a buffer. On a loaded machine the operating system still preempts the
+ * thread now and then; {@link #setRealtimePriority(int)} asks Linux for real-time scheduling, which removes
+ * almost all of it where the user is allowed to (see {@code docs/haptics.md} for measured figures).
+ *
  * <p>Telemetry ({@link #telemetry()}): achieved rate, missed steps (a period over 1.5 times nominal), period
  * jitter p50/p99/max, compute time per tick. Configure before {@link #start()}.
  */
@@ -53,6 +60,11 @@ public final class HapticLoop implements AutoCloseable {
     private int watchdogMillis = 20;
     private int linkTimeoutMillis = 500;
     private int spinMicros = 60;
+    private int realtimePriority;
+    private boolean decoupleInAudioMode = true;
+    private volatile String scheduling = "not started";
+    private AvatarLink active;
+    private DecoupledAvatar ownDecoupler;
 
     private volatile boolean running;
     private volatile Thread thread;
@@ -230,6 +242,47 @@ public final class HapticLoop implements AutoCloseable {
         spinMicros = us;
     }
 
+    /**
+     * Asks for real-time scheduling (Linux SCHED_FIFO at this priority, 1..99) for the loop thread, or not (0,
+     * the default). The loop thread asks once, before its first tick, through the {@code chrt} program; where
+     * the user may not raise priorities (no root, no {@code CAP_SYS_NICE}, no {@code rtprio} limit) or on
+     * another system, the loop runs at normal priority and {@link #scheduling()} says why. Under real-time
+     * scheduling other programs no longer preempt the loop; it still sleeps between ticks, so it takes a core
+     * only for its compute time plus the spin ({@link #setSpinMicros(int)}).
+     */
+    public void setRealtimePriority(int priority) {
+        beforeStart("setRealtimePriority");
+        if (priority < 0 || priority > 99) {
+            throw new IllegalArgumentException("HapticLoop.setRealtimePriority: priority must be 0 (off) or 1..99, got "
+                    + priority);
+        }
+        realtimePriority = priority;
+    }
+
+    /**
+     * In {@link Mode#AUDIO}, wraps the avatar in a {@link DecoupledAvatar} at {@link #start()} (true, the
+     * default) so that a tick never waits for the model's lock, or calls the avatar directly (false). An
+     * avatar that is already a {@code DecoupledAvatar} is never wrapped twice. Ignored in HAPTICS_ONLY mode.
+     */
+    public void setDecoupledInAudioMode(boolean decouple) {
+        beforeStart("setDecoupledInAudioMode");
+        decoupleInAudioMode = decouple;
+    }
+
+    /**
+     * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_FIFO n)", or
+     * "normal priority (real-time refused: why)".
+     */
+    public String scheduling() {
+        return scheduling;
+    }
+
+    /** True if, in this configuration, the ticks reach the avatar through a {@link DecoupledAvatar}. */
+    public boolean isDecoupled() {
+        return avatar instanceof DecoupledAvatar
+                || (mode == Mode.AUDIO && decoupleInAudioMode);
+    }
+
     /** Starts the loop thread and its watchdog. The device must be set up. */
     public synchronized void start() {
         if (thread != null) {
@@ -237,6 +290,12 @@ public final class HapticLoop implements AutoCloseable {
         }
         if (!device.isConfigured()) {
             throw new IllegalStateException("HapticLoop.start: call device_set_parameters() on the device first");
+        }
+        if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar)) {
+            ownDecoupler = new DecoupledAvatar(avatar);
+            active = ownDecoupler;
+        } else {
+            active = avatar;
         }
         running = true;
         Thread t = new Thread(this::run, "tactus-haptic-loop");
@@ -267,6 +326,10 @@ public final class HapticLoop implements AutoCloseable {
             w.interrupt();
         }
         device.board().zeroTorques();
+        DecoupledAvatar d = ownDecoupler;
+        if (d != null) {
+            d.close();
+        }
     }
 
     /** Stops the loop and closes the board (zero torques, then the port). */
@@ -325,9 +388,9 @@ public final class HapticLoop implements AutoCloseable {
                 p, c, k, nominal, jitterMax, computeMax, stale, faults, clamped, watchdogTrips);
     }
 
-    /** Prints the telemetry to standard output. */
+    /** Prints the telemetry and the scheduling to standard output. */
     public void printTelemetry() {
-        System.out.println(telemetry());
+        System.out.println(telemetry() + ", " + scheduling);
     }
 
     // ------------------------------------------------------------------------------------------ the thread
@@ -335,6 +398,13 @@ public final class HapticLoop implements AutoCloseable {
     private void run() {
         long period = Math.round(1e9 / rateHz);
         long spin = spinMicros * 1000L;
+        if (realtimePriority > 0) {
+            String why = RealtimeScheduling.applyToCurrentThread(realtimePriority);
+            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + ")"
+                    : "normal priority (real-time refused: " + why + ")";
+        } else {
+            scheduling = "normal priority";
+        }
         try {
             device.device_read_request();   // so that the first tick finds a reply
         } catch (RuntimeException e) {
@@ -419,12 +489,12 @@ public final class HapticLoop implements AutoCloseable {
         boolean poseOk = !Double.isNaN(x) && kin.isValid();
         try {
             if (poseOk) {
-                avatar.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
+                active.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
             }
             if (mode == Mode.HAPTICS_ONLY) {
-                avatar.step(stepsPerTick);
+                active.step(stepsPerTick);
             }
-            avatar.takeForce(force);
+            active.takeForce(force);
         } catch (RuntimeException e) {
             writeTorques(0, 0);
             fail("the model failed in the haptic loop, zero torque sent: " + e);

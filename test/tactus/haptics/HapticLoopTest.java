@@ -3,6 +3,7 @@ package tactus.haptics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -498,6 +499,129 @@ class HapticLoopTest {
             k.torques(f[0], f[1], 1.0, tau);
             assertEquals(tau[0], t1, 0.01 * Math.abs(tau[0]) + 1e-6);
             assertEquals(tau[1], t2, 0.01 * Math.abs(tau[1]) + 1e-6);
+        }
+    }
+
+    /** Holds the model's lock from this thread until the loop has run {@code ticks} more ticks or the time is up. */
+    private static long ticksWhileLocked(PhysicalModel pm, HapticLoop loop, long ticks, long maxMillis) {
+        long deadline = System.nanoTime() + maxMillis * 1_000_000L;
+        pm.getLock().lock();
+        try {
+            long t0 = loop.ticks();
+            while (loop.ticks() - t0 < ticks && System.nanoTime() < deadline && loop.isRunning()) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            return loop.ticks() - t0;
+        } finally {
+            pm.getLock().unlock();
+        }
+    }
+
+    private static void awaitTicks(HapticLoop loop, long n) {
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        while (loop.ticks() < n && loop.isRunning() && System.nanoTime() < deadline) {
+            LockSupport.parkNanos(1_000_000);
+        }
+        assertTrue(loop.ticks() >= n, () -> "the loop ran only " + loop.ticks() + " ticks: " + loop.failure());
+    }
+
+    @Test
+    void inAudioModeATickNeverWaitsForTheModelsLock() {
+        // the audio thread holds the lock for a whole buffer; here the test thread holds it for good
+        try (Rig rig = new Rig(false)) {
+            PhysicalModel pm = chain(50);
+            HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            assertTrue(loop.isDecoupled());
+            loop.start();
+            awaitTicks(loop, 20);
+            long ran = ticksWhileLocked(pm, loop, 200, 10_000);
+            assertTrue(ran >= 200, "ticks while the model was locked: " + ran);
+            assertTrue(loop.isRunning(), () -> "loop stopped: " + loop.failure());
+            loop.close();
+        }
+    }
+
+    @Test
+    void inAudioModeWithoutDecouplingTheTicksWaitForTheLock() {
+        // the counterpart of the test above: it shows that the lock would stall the loop
+        try (Rig rig = new Rig(false)) {
+            PhysicalModel pm = chain(50);
+            HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            loop.setDecoupledInAudioMode(false);
+            loop.setWatchdogMillis(10_000);
+            assertFalse(loop.isDecoupled());
+            loop.start();
+            awaitTicks(loop, 20);
+            long ran = ticksWhileLocked(pm, loop, 200, 300);
+            assertTrue(ran <= 1, "ticks while the model was locked: " + ran);
+            loop.close();
+        }
+    }
+
+    @Test
+    void inAudioModeAModelThatThrowsStopsTheLoopAfterZeroTorque() {
+        try (Rig rig = new Rig(false)) {
+            AvatarLink failing = new AvatarLink() {
+                volatile int calls;
+
+                @Override
+                public void setTarget(double x, double y, double z) {
+                    if (++calls > 50) {
+                        throw new IllegalStateException("diverged on purpose");
+                    }
+                }
+
+                @Override
+                public void takeForce(double[] out) {
+                    out[0] = 0.002;
+                    out[1] = -0.003;
+                    out[2] = 0;
+                }
+
+                @Override
+                public void step(int n) {
+                }
+            };
+            HapticLoop loop = rig.loop(failing);
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            loop.start();
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (loop.isRunning() && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            assertFalse(loop.isRunning());
+            assertTrue(loop.failure().contains("diverged on purpose"), loop.failure());
+            float[] last = torquesOf(rig.link.last());
+            assertEquals(0f, last[0]);
+            assertEquals(0f, last[1]);
+            assertEquals(0, rig.emulator.duty(1));
+            assertEquals(0, rig.emulator.duty(2));
+        }
+    }
+
+    @Test
+    void realtimePriorityIsAskedForOnceAndReportedEitherWay() {
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            assertThrows(IllegalArgumentException.class, () -> loop.setRealtimePriority(100));
+            assertThrows(IllegalArgumentException.class, () -> loop.setRealtimePriority(-1));
+            assertEquals("not started", loop.scheduling());
+            loop.setRealtimePriority(10);
+            loop.start();
+            awaitTicks(loop, 50);
+            String s = loop.scheduling();
+            assertTrue(s.equals("real-time (SCHED_FIFO 10)") || s.startsWith("normal priority (real-time refused: "), s);
+            assertThrows(IllegalStateException.class, () -> loop.setRealtimePriority(0));
+            loop.close();
+        }
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            loop.start();
+            awaitTicks(loop, 5);
+            assertEquals("normal priority", loop.scheduling());
+            loop.close();
         }
     }
 }
