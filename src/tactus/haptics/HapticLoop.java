@@ -344,6 +344,48 @@ public final class HapticLoop implements AutoCloseable {
         close();
     }
 
+    /** The rate in Hz. */
+    public double rate() {
+        return rateHz;
+    }
+
+    /** Who steps the model. */
+    public Mode mode() {
+        return mode;
+    }
+
+    /** The position gain alpha (model units per metre). */
+    public double positionGain() {
+        return alpha;
+    }
+
+    /** The force gain beta (newtons per model force unit). */
+    public double forceGain() {
+        return beta;
+    }
+
+    /** True if x is mirrored between device and model. */
+    public boolean isMirrorX() {
+        return mirrorX;
+    }
+
+    /**
+     * Maps a handle position (metres, device coordinates) to the model position the avatar is sent to, as each
+     * tick does: writes (s alpha x + ox, alpha y + oy) into out[0], out[1].
+     */
+    public void deviceToModel(double x, double y, double[] out) {
+        double sx = mirrorX ? -1 : 1;
+        out[0] = sx * alpha * x + ox;
+        out[1] = alpha * y + oy;
+    }
+
+    /** The inverse of {@link #deviceToModel}: the handle position (metres) that puts the avatar at (mx, my). */
+    public void modelToDevice(double mx, double my, double[] out) {
+        double sx = mirrorX ? -1 : 1;
+        out[0] = sx * (mx - ox) / alpha;
+        out[1] = (my - oy) / alpha;
+    }
+
     /** True while the loop thread runs. */
     public boolean isRunning() {
         return running;
