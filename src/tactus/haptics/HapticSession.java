@@ -62,6 +62,9 @@ public final class HapticSession implements AutoCloseable {
     private double viewX;
     private double viewY;
     private boolean closed;
+    private HapticLoop telemetryOf;
+    private long telemetryAt;
+    private String telemetryText = "";
 
     private HapticSession(PApplet app, HaplyPreset preset, HaplyConnection c, String fallbackReason) {
         this.app = app;
@@ -296,6 +299,47 @@ public final class HapticSession implements AutoCloseable {
         double x = Math.max(box[0], Math.min(box[1], tmp[0]));
         double y = Math.max(box[2], Math.min(box[3], tmp[1]));
         connection.setHandTarget(x, y);
+    }
+
+    /**
+     * The force the hand felt at the last tick, in newtons, in the window's directions (x mirrored back, y
+     * down the window), for drawing: writes fx, fy into out[0], out[1]; zeros before {@link #attach}.
+     */
+    public void forceOnScreen(double[] out) {
+        HapticLoop l = loop;
+        if (l == null) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
+        l.deviceForce(out);
+        if (l.isMirrorX()) {
+            out[0] = -out[0];
+        }
+    }
+
+    /**
+     * A short line of telemetry for the screen ("1000 Hz, 0.02 % missed, jitter p99 40 us, real-time"),
+     * refreshed at most once a second (a telemetry snapshot copies the loop's window of 65,536 ticks, too
+     * much to do every frame).
+     */
+    public String telemetryLine() {
+        HapticLoop l = loop;
+        if (l == null) {
+            return "no haptic loop";
+        }
+        long now = System.nanoTime();
+        if (l != telemetryOf || now - telemetryAt > 1_000_000_000L) {
+            HapticTelemetry t = l.telemetry();
+            String sched = l.scheduling();
+            telemetryText = String.format(java.util.Locale.ROOT,
+                    "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
+                    100 * t.missedFraction(), t.jitterP99Us,
+                    sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
+            telemetryOf = l;
+            telemetryAt = now;
+        }
+        return telemetryText;
     }
 
     /** Processing calls this before each {@code draw()}: the emulated hand follows the mouse once it has moved. */
