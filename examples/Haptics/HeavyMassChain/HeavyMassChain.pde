@@ -85,7 +85,7 @@ void draw() {
   // the avatar and the force you feel (40 pixels per newton)
   float ax = (float) s.x(index[0]);
   float ay = (float) s.y(index[0]);
-  haptics.forceOnScreen(force);
+  haptics.forceInModel(force);
   stroke(255, 210, 80);
   strokeWeight(3);
   line(ax, ay, ax + 40 * (float) force[0], ay + 40 * (float) force[1]);

@@ -8,7 +8,7 @@ import java.util.concurrent.locks.LockSupport;
  * avatar's force, applies the gains, and writes the torques J^T F.
  *
  * <p>Mapping (as the paper's sketches): model position = (s alpha x + ox, alpha y + oy, oz) and device force
- * = (s beta Fx, beta Fy), where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
+ * = (s g beta Fx, g beta Fy), g the sign of alpha, where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
  * the sketches draw the device seen from the user) and F the avatar force in model units.
  * {@link #useRealUnits()} sets alpha = beta = 1 for a model in REAL_UNITS (metres, newtons).
  *
@@ -138,7 +138,11 @@ public final class HapticLoop implements AutoCloseable {
         stepsPerTick = n;
     }
 
-    /** Sets the position gain alpha (model units per metre; finite, != 0; default 200). */
+    /**
+     * Sets the position gain alpha (model units per metre; finite, != 0; default 200). A negative gain flips
+     * both axes (with {@link #setMirrorX(boolean) setMirrorX(false)}, a model whose y axis points the other
+     * way); the force is sent back along the same axes, so the rendering stays passive.
+     */
     public void setPositionGain(double alpha) {
         beforeStart("setPositionGain");
         if (!Double.isFinite(alpha) || alpha == 0) {
@@ -544,8 +548,10 @@ public final class HapticLoop implements AutoCloseable {
         }
         // haptics-only: the avatar force is summed over the tick's steps; render its mean
         double perStep = mode == Mode.HAPTICS_ONLY ? 1.0 / stepsPerTick : 1.0;
-        double fx = sx * beta * perStep * force[0];
-        double fy = beta * perStep * force[1];
+        // the force goes back along the axes the position came from: a negative gain flips them both
+        double gy = alpha < 0 ? -1 : 1;
+        double fx = sx * gy * beta * perStep * force[0];
+        double fy = gy * beta * perStep * force[1];
         if (Double.isNaN(x)) {
             forceX = 0;                      // no position yet (start-up): nothing to render
             forceY = 0;

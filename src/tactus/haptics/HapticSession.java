@@ -54,6 +54,8 @@ public final class HapticSession implements AutoCloseable {
     private final double alpha;
     private final double ox;
     private final double oy;
+    private final int windowHeight;
+    private volatile boolean yUp;
     private final double[] tmp = new double[2];
 
     private volatile HapticLoop loop;
@@ -98,6 +100,7 @@ public final class HapticSession implements AutoCloseable {
         homeY = hy;
         int w = app != null && app.width > 0 ? app.width : DEFAULT_WIDTH;
         int h = app != null && app.height > 0 ? app.height : DEFAULT_HEIGHT;
+        windowHeight = h;
         alpha = 0.9 * Math.min(w / (box[1] - box[0]), h / (box[3] - box[2]));
         ox = 0.5 * w + alpha * 0.5 * (box[0] + box[1]);     // x mirrored: model x = -alpha x + ox
         oy = 0.5 * h - alpha * 0.5 * (box[2] + box[3]);
@@ -201,9 +204,16 @@ public final class HapticSession implements AutoCloseable {
             old.stop();
         }
         HapticLoop l = new HapticLoop(device, preset.newKinematics(), avatar);
-        l.setPositionGain(alpha);
-        l.setOrigin(ox, oy, 0);
-        l.setMirrorX(true);
+        if (yUp) {
+            // model y = height - pixel y: a negative gain flips y, and x, which the mirror then no longer does
+            l.setPositionGain(-alpha);
+            l.setOrigin(ox, windowHeight - oy, 0);
+            l.setMirrorX(false);
+        } else {
+            l.setPositionGain(alpha);
+            l.setOrigin(ox, oy, 0);
+            l.setMirrorX(true);
+        }
         l.setRealtimePriority(REALTIME_PRIORITY);
         loop = l;
         return l;
@@ -249,7 +259,7 @@ public final class HapticSession implements AutoCloseable {
      * starting position for the avatar ({@code mdl.addHapticInput3D("avatar", haptics.home(), 10)}).
      */
     public Vect3D home() {
-        return new Vect3D(-alpha * homeX + ox, alpha * homeY + oy, 0);
+        return new Vect3D(-alpha * homeX + ox, modelY(alpha * homeY + oy), 0);
     }
 
     /**
@@ -261,8 +271,29 @@ public final class HapticSession implements AutoCloseable {
         double b = -alpha * box[0] + ox;
         out[0] = Math.min(a, b);
         out[1] = Math.max(a, b);
-        out[2] = alpha * box[2] + oy;
-        out[3] = alpha * box[3] + oy;
+        double c = modelY(alpha * box[2] + oy);
+        double d = modelY(alpha * box[3] + oy);
+        out[2] = Math.min(c, d);
+        out[3] = Math.max(c, d);
+    }
+
+    private double modelY(double pixelY) {
+        return yUp ? windowHeight - pixelY : pixelY;
+    }
+
+    /**
+     * Chooses the model's y axis for the loops attached from now on: down the window, as Processing draws (false,
+     * the default: model units are pixels), or up (true: model y = window height - pixel y, as in a sketch that
+     * draws with {@code translate(0, height); scale(1, -1);}), for scenes with gravity and floors. Also changes
+     * {@link #home()}, {@link #workspace(double[])} and how the mouse is read.
+     */
+    public void setModelYUp(boolean up) {
+        yUp = up;
+    }
+
+    /** True if the model's y axis points up the window (see {@link #setModelYUp(boolean)}). */
+    public boolean isModelYUp() {
+        return yUp;
     }
 
     /** The position gain the session gives each loop: pixels (model units) per metre. */
@@ -272,8 +303,9 @@ public final class HapticSession implements AutoCloseable {
 
     /**
      * Tells the session how the sketch draws the model, so that the mouse lands on the avatar: a model point
-     * (x, y) is drawn at pixel (offsetX + scale x, offsetY + scale y). Default: scale 1, offset 0 (model units
-     * are pixels).
+     * (x, y) is drawn at pixel (offsetX + scale x, offsetY + scale y), or (offsetX + scale x, window height -
+     * offsetY - scale y) when the model's y axis points up. Default: scale 1, offset 0 (model units are
+     * pixels).
      */
     public void setView(double scale, double offsetX, double offsetY) {
         if (!(scale != 0) || !Double.isFinite(scale) || !Double.isFinite(offsetX) || !Double.isFinite(offsetY)) {
@@ -295,17 +327,19 @@ public final class HapticSession implements AutoCloseable {
         if (!connection.isEmulated() || l == null) {
             return;
         }
-        l.modelToDevice((px - viewX) / viewScale, (py - viewY) / viewScale, tmp);
+        double my = yUp ? (windowHeight - py - viewY) / viewScale : (py - viewY) / viewScale;
+        l.modelToDevice((px - viewX) / viewScale, my, tmp);
         double x = Math.max(box[0], Math.min(box[1], tmp[0]));
         double y = Math.max(box[2], Math.min(box[3], tmp[1]));
         connection.setHandTarget(x, y);
     }
 
     /**
-     * The force the hand felt at the last tick, in newtons, in the window's directions (x mirrored back, y
-     * down the window), for drawing: writes fx, fy into out[0], out[1]; zeros before {@link #attach}.
+     * The force the hand felt at the last tick, in newtons, along the model's axes (as the current loop maps
+     * them), for drawing an arrow at the avatar: writes fx, fy into out[0], out[1]; zeros before
+     * {@link #attach}.
      */
-    public void forceOnScreen(double[] out) {
+    public void forceInModel(double[] out) {
         HapticLoop l = loop;
         if (l == null) {
             out[0] = 0;
@@ -313,8 +347,12 @@ public final class HapticSession implements AutoCloseable {
             return;
         }
         l.deviceForce(out);
-        if (l.isMirrorX()) {
+        double gx = l.isMirrorX() ? -l.positionGain() : l.positionGain();
+        if (gx < 0) {
             out[0] = -out[0];
+        }
+        if (l.positionGain() < 0) {
+            out[1] = -out[1];
         }
     }
 

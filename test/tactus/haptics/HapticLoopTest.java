@@ -624,4 +624,36 @@ class HapticLoopTest {
             loop.close();
         }
     }
+
+    @Test
+    void theForceGoesBackAlongTheAxesThePositionCameFrom() {
+        // FaultyAvatar's force is (0.002, -0.003) model units; beta 100 makes it 0.2 and -0.3 N
+        double[][] expected = {
+            {-0.2, -0.3},   // default: alpha > 0, x mirrored
+            {0.2, -0.3},    // alpha > 0, no mirror
+            {0.2, 0.3},     // alpha < 0 with the mirror: both axes flipped, then x mirrored back
+            {-0.2, 0.3},    // alpha < 0, no mirror: a model whose y points the other way
+        };
+        for (int c = 0; c < 4; c++) {
+            try (Rig rig = new Rig(false)) {
+                HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+                loop.setPositionGain(c < 2 ? 200 : -200);
+                loop.setMirrorX(c % 2 == 0);
+                loop.start();
+                awaitTicks(loop, 20);
+                double[] f = new double[2];
+                loop.deviceForce(f);
+                loop.close();
+                assertEquals(expected[c][0], f[0], 1e-9, "case " + c);
+                assertEquals(expected[c][1], f[1], 1e-9, "case " + c);
+                // and the position map inverts
+                double[] m = new double[2];
+                double[] d = new double[2];
+                loop.deviceToModel(0.03, 0.07, m);
+                loop.modelToDevice(m[0], m[1], d);
+                assertEquals(0.03, d[0], 1e-12);
+                assertEquals(0.07, d[1], 1e-12);
+            }
+        }
+    }
 }

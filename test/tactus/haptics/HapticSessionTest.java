@@ -169,4 +169,56 @@ class HapticSessionTest {
             assertEquals(HaplyPreset.HAPLY_2018, s.preset());
         }
     }
+
+    @Test
+    void withTheModelsYUpTheMouseStillLandsOnTheAvatarAndForcesFollowTheAxes() {
+        try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018)) {
+            double[] down = new double[4];
+            s.workspace(down);
+            Vect3D homeDown = s.home();
+            s.setModelYUp(true);
+            assertTrue(s.isModelYUp());
+            double[] up = new double[4];
+            s.workspace(up);
+            assertEquals(down[0], up[0], 1e-9);
+            assertEquals(HapticSession.DEFAULT_HEIGHT - down[3], up[2], 1e-9);
+            assertEquals(HapticSession.DEFAULT_HEIGHT - homeDown.y, s.home().y, 1e-9);
+            // a constant upward model force (+y) must push the hand up the window: device -y
+            AvatarLink pushUp = new AvatarLink() {
+                @Override
+                public void setTarget(double x, double y, double z) {
+                }
+
+                @Override
+                public void takeForce(double[] out) {
+                    out[0] = 0;
+                    out[1] = 0.002;
+                    out[2] = 0;
+                }
+
+                @Override
+                public void step(int n) {
+                }
+            };
+            HapticLoop loop = s.attach(pushUp);
+            loop.setForceGain(100);
+            loop.start();
+            await(() -> loop.ticks() > 20, "ticks");
+            double[] f = new double[2];
+            loop.deviceForce(f);
+            assertEquals(-0.2, f[1], 1e-9, "device force y");
+            s.forceInModel(f);
+            assertEquals(0.2, f[1], 1e-9, "force along the model's y");
+            // the mouse: pixel (px, py) is model (px, height - py)
+            PhysicalModel pm = freeAvatar(s.home());
+            s.attach(pm, "avatar").start();
+            double px = up[0] + 0.6 * (up[1] - up[0]);
+            double my = up[2] + 0.25 * (up[3] - up[2]);
+            s.handTowardsPixel(px, HapticSession.DEFAULT_HEIGHT - my);
+            await(() -> {
+                Vect3D p = pm.getMatPosition("avatar");
+                return Math.abs(p.x - px) < 2 && Math.abs(p.y - my) < 2;
+            }, "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my);
+        }
+    }
 }
