@@ -83,6 +83,7 @@ public final class HapticLoopBench {
             Thread.sleep((long) (seconds * 1000));
             HapticTelemetry t = loop.telemetry();
             String scheduling = loop.scheduling();
+            String cpu = threadCpu(t.seconds);
             if (audioThread != null) {
                 audioThread.halt();
             }
@@ -95,6 +96,7 @@ public final class HapticLoopBench {
             if (audioThread != null) {
                 System.out.println(audioThread.report());
             }
+            System.out.println("CPU per thread (% of one core): " + cpu);
             System.out.println("load average (1 min): " + loadBefore + " -> " + loadAfter);
             System.out.println(String.format(Locale.ROOT,
                     "| %s%s%s, %.0f s | %s → %s | %.1f Hz | %,d of %,d (%.3f %%) | %.0f µs / %.0f µs / %.1f ms "
@@ -105,6 +107,23 @@ public final class HapticLoopBench {
                     t.computeP50Us, t.computeP99Us, t.computeMaxUs / 1000, t.staleTicks));
             emulator.close();
         }
+    }
+
+    /** CPU time of the loop's, the emulator's and the audio threads, as a percentage of one core. */
+    private static String threadCpu(double seconds) {
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        StringBuilder sb = new StringBuilder();
+        for (Thread th : Thread.getAllStackTraces().keySet()) {
+            String n = th.getName();
+            if (n.startsWith("tactus-") || n.equals("audio-like")) {
+                long ns = mx.getThreadCpuTime(th.getId());
+                if (ns >= 0) {
+                    sb.append(sb.length() == 0 ? "" : ", ").append(n).append(' ')
+                            .append(String.format(Locale.ROOT, "%.1f", 100 * ns / 1e9 / seconds));
+                }
+            }
+        }
+        return sb.toString();
     }
 
     private static String loadAverage() {
