@@ -71,6 +71,7 @@ public final class HapticLoop implements AutoCloseable {
     private volatile Thread watchdog;
     private volatile String failure;
     private volatile long lastTickStart;
+    private volatile boolean warmingUp;   // before the first tick: the real-time request and the first read
 
     // written by the loop thread, read by anyone (plain longs: statistics)
     private final long[] periods = new long[WINDOW];
@@ -302,6 +303,7 @@ public final class HapticLoop implements AutoCloseable {
             active = avatar;
         }
         running = true;
+        warmingUp = true;
         Thread t = new Thread(this::run, "tactus-haptic-loop");
         t.setDaemon(true);
         t.setPriority(Thread.MAX_PRIORITY);
@@ -458,6 +460,8 @@ public final class HapticLoop implements AutoCloseable {
             return;
         }
         long next = System.nanoTime() + period;
+        lastTickStart = System.nanoTime();
+        warmingUp = false;   // the watchdog watches from here (chrt may take tens of ms to start)
         long prevStart = 0;
         startNanos = next;
         while (running) {
@@ -606,7 +610,7 @@ public final class HapticLoop implements AutoCloseable {
                 break;
             }
             long since = System.nanoTime() - lastTickStart;
-            if (since > limit) {
+            if (!warmingUp && since > limit) {
                 if (!tripped && running) {
                     tripped = true;
                     watchdogTrips++;

@@ -656,4 +656,58 @@ class HapticLoopTest {
             }
         }
     }
+
+    @Test
+    void theWatchdogDoesNotTripWhileTheLoopStartsUp() {
+        // the loop thread's start-up (the real-time request runs a program; the first request) may take
+        // longer than the watchdog's limit; nothing has been sent yet, so there is nothing to zero
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        Transport link = emulator.connect();
+        boolean[] slow = {false};
+        Transport slowFirstWrite = new Transport() {
+            @Override
+            public void write(byte[] data, int offset, int length) throws java.io.IOException {
+                if (slow[0]) {
+                    slow[0] = false;
+                    LockSupport.parkNanos(150_000_000L);
+                }
+                link.write(data, offset, length);
+            }
+
+            @Override
+            public int available() throws java.io.IOException {
+                return link.available();
+            }
+
+            @Override
+            public int read(byte[] buffer, int offset, int length) throws java.io.IOException {
+                return link.read(buffer, offset, length);
+            }
+
+            @Override
+            public void close() {
+                link.close();
+            }
+
+            @Override
+            public String describe() {
+                return "slow first write";
+            }
+        };
+        Board board = new Board(slowFirstWrite);
+        try {
+            Device device = new Device((byte) 3, board);
+            HaplyPreset.HAPLY_2018.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(),
+                    new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            slow[0] = true;      // the loop's first request takes 150 ms, the watchdog's limit is 20 ms
+            loop.start();
+            awaitTicks(loop, 50);
+            loop.close();
+            assertEquals(0, loop.telemetry().watchdogTrips);
+        } finally {
+            board.close();
+        }
+    }
 }
