@@ -221,4 +221,55 @@ class HapticSessionTest {
             }, "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my);
         }
     }
+
+    /** A sketch that is never run, whose registered "pre" methods a test can call as Processing would. */
+    public static final class HookedApp extends processing.core.PApplet {
+        void runPre() {
+            handleMethods("pre");
+        }
+
+        /** What PApplet.dispose() does for libraries once the window is gone (it needs a window itself). */
+        void runDispose() {
+            handleMethods("dispose");
+        }
+    }
+
+    @Test
+    void processingsHooksDriveTheHandFromTheMouseAndDisposeClosesEverything() {
+        HookedApp app = new HookedApp();   // never run: no window
+        app.width = 640;
+        app.height = 480;
+        HapticSession s = HapticSession.openEmulated(app, HaplyPreset.HAPLY_2018);
+        PhysicalModel pm = freeAvatar(s.home());
+        HapticLoop loop = s.attach(pm, "avatar");
+        loop.start();
+        double[] ws = new double[4];
+        s.workspace(ws);
+        assertEquals(320, 0.5 * (ws[0] + ws[1]), 1e-9);
+        // before the mouse has moved, pre() leaves the hand where it is
+        app.mouseX = 0;
+        app.mouseY = 0;
+        app.runPre();
+        await(() -> loop.ticks() > 50, "ticks");
+        Vect3D still = pm.getMatPosition("avatar");
+        assertEquals(s.home().x, still.x, 2);
+        assertEquals(s.home().y, still.y, 2);
+        // the first move hands the hand to the mouse
+        int mx = (int) (ws[0] + 0.8 * (ws[1] - ws[0]));
+        int my = (int) (ws[2] + 0.5 * (ws[3] - ws[2]));
+        app.mouseX = mx;
+        app.mouseY = my;
+        s.mouseEvent(new processing.event.MouseEvent(null, 0, processing.event.MouseEvent.MOVE, 0, mx, my, 0, 0));
+        app.runPre();
+        await(() -> {
+            Vect3D p = pm.getMatPosition("avatar");
+            return Math.abs(p.x - mx) < 2 && Math.abs(p.y - my) < 2;
+        }, "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my);
+        // Processing's dispose (the sketch ends) stops the loop and zeroes the motors
+        app.runDispose();
+        assertFalse(loop.isRunning());
+        assertEquals(0, s.emulator().duty(1));
+        assertEquals(0, s.emulator().duty(2));
+        assertTrue(s.emulator().isUnplugged());
+    }
 }
