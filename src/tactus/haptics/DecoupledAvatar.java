@@ -33,11 +33,14 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private double cx;
     private double cy;
     private double cz;
+    private long cs;                        // steps covered by the sums
+    private volatile boolean stepsUnknown;  // the wrapped link cannot count its steps
 
     // haptic thread only: the totals already handed out
     private double takenX;
     private double takenY;
     private double takenZ;
+    private long takenS;
 
     private volatile long exchanges;
     private volatile RuntimeException failure;
@@ -67,6 +70,12 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
 
     @Override
     public void takeForce(double[] out) {
+        takeForceCounted(out);
+    }
+
+    /** Everything collected since the previous call, and the model steps it covers (-1 if the link cannot tell). */
+    @Override
+    public long takeForceCounted(double[] out) {
         RuntimeException failed = failure;
         if (failed != null) {
             throw new IllegalStateException("the model failed on the avatar exchange thread: " + failed, failed);
@@ -74,12 +83,14 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
         double x;
         double y;
         double z;
+        long steps;
         while (true) {
             long s1 = forceSeq;
             if ((s1 & 1) == 0) {
                 x = cx;
                 y = cy;
                 z = cz;
+                steps = cs;
                 VarHandle.loadLoadFence();
                 if (forceSeq == s1) {
                     break;
@@ -93,6 +104,9 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
         takenX = x;
         takenY = y;
         takenZ = z;
+        long n = steps - takenS;
+        takenS = steps;
+        return stepsUnknown ? -1 : n;
     }
 
     @Override
@@ -120,6 +134,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private void serve() {
         double[] f = new double[3];
         long seen = 0;
+        long steps = 0;
         while (running) {
             long s = targetSeq;
             if (s == seen || (s & 1) != 0) {
@@ -136,7 +151,12 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
             seen = s;
             try {
                 inner.setTarget(x, y, z);
-                inner.takeForce(f);
+                long n = inner.takeForceCounted(f);
+                if (n < 0) {
+                    stepsUnknown = true;
+                    n = 0;
+                }
+                steps = n;
             } catch (RuntimeException e) {
                 failure = e;        // the next takeForce throws: the loop sends zero torque and stops
                 exchanges++;
@@ -148,6 +168,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
             cx += f[0];
             cy += f[1];
             cz += f[2];
+            cs += steps;
             forceSeq = fs + 2;
             exchanges++;
         }

@@ -9,7 +9,9 @@ import java.util.concurrent.locks.LockSupport;
  *
  * <p>Mapping (as the paper's sketches): model position = (s alpha x + ox, alpha y + oy, oz) and device force
  * = (s g beta Fx, g beta Fy), g the sign of alpha, where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
- * the sketches draw the device seen from the user) and F the avatar force in model units.
+ * the sketches draw the device seen from the user) and F the avatar force in model units: its mean per model
+ * step over the steps since the last tick (in AUDIO mode, held while no audio step runs; see
+ * {@link AvatarLink#takeForceCounted}).
  * {@link #useRealUnits()} sets alpha = beta = 1 for a model in REAL_UNITS (metres, newtons).
  *
  * <p>Safety: torques are scaled down to the torque limit (0.123 N m, the firmware's, by default); a
@@ -89,6 +91,7 @@ public final class HapticLoop implements AutoCloseable {
 
     // per-tick state, loop thread only
     private final double[] force = new double[3];
+    private final double[] held = new double[2];   // the force per step being rendered (model units)
     private final double[] tau = new double[2];
     private volatile double devX = Double.NaN;
     private volatile double devY = Double.NaN;
@@ -181,9 +184,9 @@ public final class HapticLoop implements AutoCloseable {
     /**
      * Calibrated mode for a model in REAL_UNITS: alpha = 1 (metres), beta = 1 (newtons), torque gain 1, no
      * mirroring, so a 1 g virtual mass weighs 1 g in the hand (within the device's own inertia and friction).
-     * In HAPTICS_ONLY mode the loop renders the mean force over the tick's steps; in AUDIO mode the avatar
-     * force is summed over the audio steps since the last tick, so set beta to (haptic rate / audio rate)
-     * after this call.
+     * The loop renders the mean force per model step since the last tick in both modes (in AUDIO mode, held
+     * between the audio thread's bursts), so no other factor is needed. (An {@link AvatarLink} that cannot
+     * count its steps gets its sum rendered as it comes; then set beta to haptic rate / audio rate.)
      */
     public void useRealUnits() {
         beforeStart("useRealUnits");
@@ -537,6 +540,7 @@ public final class HapticLoop implements AutoCloseable {
         double x = devX;
         double y = devY;
         boolean poseOk = !Double.isNaN(x) && kin.isValid();
+        long steps;
         try {
             if (poseOk) {
                 active.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
@@ -544,18 +548,30 @@ public final class HapticLoop implements AutoCloseable {
             if (mode == Mode.HAPTICS_ONLY) {
                 active.step(stepsPerTick);
             }
-            active.takeForce(force);
+            steps = active.takeForceCounted(force);
         } catch (RuntimeException e) {
             writeTorques(0, 0);
             fail("the model failed in the haptic loop, zero torque sent: " + e);
             return false;
         }
-        // haptics-only: the avatar force is summed over the tick's steps; render its mean
-        double perStep = mode == Mode.HAPTICS_ONLY ? 1.0 / stepsPerTick : 1.0;
+        // The avatar force is summed over the steps since the last tick: render its mean per step. In audio
+        // mode the audio thread runs a buffer's steps in one burst (1024 steps every 23 ms), so most ticks see
+        // no step at all and a few see hundreds: the mean of the last steps is held in between.
+        if (mode == Mode.HAPTICS_ONLY) {
+            double k = 1.0 / stepsPerTick;
+            held[0] = force[0] * k;
+            held[1] = force[1] * k;
+        } else if (steps > 0) {
+            held[0] = force[0] / steps;
+            held[1] = force[1] / steps;
+        } else if (steps < 0) {
+            held[0] = force[0];              // the link cannot count its steps: render the sum, as it comes
+            held[1] = force[1];
+        }                                    // steps == 0: no step ran since the last tick, keep the mean
         // the force goes back along the axes the position came from: a negative gain flips them both
         double gy = alpha < 0 ? -1 : 1;
-        double fx = sx * gy * beta * perStep * force[0];
-        double fy = gy * beta * perStep * force[1];
+        double fx = sx * gy * beta * held[0];
+        double fy = gy * beta * held[1];
         if (Double.isNaN(x)) {
             forceX = 0;                      // no position yet (start-up): nothing to render
             forceY = 0;

@@ -103,4 +103,55 @@ class DecoupledAvatarTest {
             assertTrue(e.getMessage().contains("diverged"), e.getMessage());
         }
     }
+
+    @Test
+    void theStepCountsArriveWithTheirForcesAndAnUncountedLinkSaysSo() {
+        // each exchange reports 7 steps and a force of 7 (1 per step): the haptic side must see them together
+        AvatarLink counted = new AvatarLink() {
+            @Override
+            public void setTarget(double x, double y, double z) {
+            }
+
+            @Override
+            public void takeForce(double[] out) {
+                takeForceCounted(out);
+            }
+
+            @Override
+            public long takeForceCounted(double[] out) {
+                out[0] = 7;
+                out[1] = 0;
+                out[2] = 0;
+                return 7;
+            }
+
+            @Override
+            public void step(int n) {
+            }
+        };
+        double[] f = new double[3];
+        try (DecoupledAvatar a = new DecoupledAvatar(counted)) {
+            long steps = 0;
+            double sum = 0;
+            for (int i = 0; i < 200; i++) {
+                a.setTarget(i, 0, 0);
+                long n = a.takeForceCounted(f);
+                assertTrue(n >= 0, "count " + n);
+                assertEquals(n, f[0], 1e-9, "a force of 1 per step");
+                steps += n;
+                sum += f[0];
+                LockSupport.parkNanos(200_000);
+            }
+            assertTrue(steps > 0);
+            assertEquals(steps, sum, 1e-9);
+        }
+        try (DecoupledAvatar a = new DecoupledAvatar(new SlowLink())) {
+            a.setTarget(1, 0, 0);
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (a.exchanges() == 0 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            assertEquals(-1, a.takeForceCounted(f), "a link that cannot count");
+        }
+    }
 }

@@ -710,4 +710,63 @@ class HapticLoopTest {
             board.close();
         }
     }
+
+    @Test
+    void inAudioModeTheForceIsTheMeanPerStepHeldBetweenTheAudioBursts() throws Exception {
+        // a constant force on the avatar (a spring to a ground 0.1 away, K 0.5: 0.05 per step), stepped by an
+        // audio-like thread in bursts of 1024 steps every 23.2 ms: every tick must render the same force,
+        // not nothing between the bursts and a thousand times too much after one
+        for (boolean decoupled : new boolean[] {true, false}) {
+            try (Rig rig = new Rig(false)) {
+                PhysicalModel pm = new PhysicalModel(44100);
+                pm.addHapticInput3D("hapticMass", new Vect3D(), 1);
+                pm.addGround3D("g", new Vect3D(0.1, 0, 0));
+                pm.addSpringDamper3D("k", 0, 0.5, 0, "hapticMass", "g");
+                pm.init();
+                HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+                loop.setMode(HapticLoop.Mode.AUDIO);
+                loop.setDecoupledInAudioMode(decoupled);
+                loop.setForceGain(1);
+                loop.start();
+                awaitTicks(loop, 20);
+                boolean[] stop = {false};
+                Thread audio = new Thread(() -> {
+                    while (!stop[0]) {
+                        pm.computeNSteps(1024);
+                        LockSupport.parkNanos(23_200_000L);
+                    }
+                });
+                audio.start();
+                try {
+                    // wait for two bursts, then sample the rendered force once a millisecond for half a second
+                    long two = pm.getStepCount() + 2048;
+                    long deadline = System.nanoTime() + 10_000_000_000L;
+                    while (pm.getStepCount() < two && System.nanoTime() < deadline) {
+                        LockSupport.parkNanos(1_000_000);
+                    }
+                    LockSupport.parkNanos(5_000_000);
+                    double[] f = new double[2];
+                    double[] xs = new double[500];
+                    for (int k = 0; k < xs.length; k++) {
+                        loop.deviceForce(f);
+                        xs[k] = f[0];
+                        LockSupport.parkNanos(1_000_000);
+                    }
+                    assertTrue(loop.isRunning(), () -> "loop stopped: " + loop.failure());
+                    // the avatar stays where the still handle puts it (near the origin): F = K (0.1 - x), x mirrored
+                    double expected = -0.5 * (0.1 - pm.getMatPosition("hapticMass").x);
+                    assertEquals(-0.05, expected, 0.005);
+                    for (int k = 0; k < xs.length; k++) {
+                        assertEquals(expected, xs[k], Math.abs(expected) * 0.02,
+                                "decoupled " + decoupled + ", sample " + k + " of the rendered force");
+                    }
+                    assertEquals(0, loop.telemetry().faultTicks);
+                } finally {
+                    stop[0] = true;
+                    audio.join(2000);
+                    loop.close();
+                }
+            }
+        }
+    }
 }
