@@ -53,6 +53,14 @@ public final class SerialTransport implements Transport {
         return new SerialTransport(port, portName);
     }
 
+    /**
+     * Registers a JVM shutdown hook that runs before jSerialComm closes the open ports from its own shutdown
+     * hook (with {@code Runtime.addShutdownHook} the two would run in no set order).
+     */
+    static void runBeforePortsClose(Thread hook) {
+        SerialPort.addShutdownHook(hook);
+    }
+
     @Override
     public void write(byte[] data, int offset, int length) throws IOException {
         if (closed) {

@@ -175,6 +175,14 @@ public final class BoardEmulator implements AutoCloseable {
                 }
             }
         } catch (IOException e) {
+            // the link is gone (the host closed its end): the bytes that did arrive are still handled, as a
+            // board handles what it received before the cable went (the host's last write is its zero torques)
+            synchronized (this) {
+                long now = System.nanoTime();
+                while (firmware.pass(now)) {
+                    // every complete command
+                }
+            }
             unplugged = true;
         } finally {
             boardSide.close();
