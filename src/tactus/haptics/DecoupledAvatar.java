@@ -43,6 +43,8 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private long takenS;
 
     private volatile long exchanges;
+    private volatile long busyReads;
+    private static final int MAX_TRIES = 64;
     private volatile RuntimeException failure;
 
     /** Wraps a link (typically a {@link PhysicalModelAvatar}) and starts the helper thread. */
@@ -84,6 +86,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
         double y;
         double z;
         long steps;
+        int tries = 0;
         while (true) {
             long s1 = forceSeq;
             if ((s1 & 1) == 0) {
@@ -95,6 +98,16 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
                 if (forceSeq == s1) {
                     break;
                 }
+            }
+            if (++tries == MAX_TRIES) {
+                // The helper was preempted while writing (it runs at normal priority, this thread perhaps
+                // not): never wait for it. Nothing new this time; the running sums lose nothing, the next
+                // call takes it all.
+                busyReads++;
+                out[0] = 0;
+                out[1] = 0;
+                out[2] = 0;
+                return stepsUnknown ? -1 : 0;
             }
             Thread.onSpinWait();
         }
@@ -112,6 +125,14 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     @Override
     public void step(int n) {
         inner.step(n);
+    }
+
+    /**
+     * Number of {@link #takeForceCounted} calls that found the helper in the middle of publishing and returned
+     * nothing new rather than wait for it.
+     */
+    public long busyReads() {
+        return busyReads;
     }
 
     /** Number of target/force exchanges the helper has made with the wrapped link. */
