@@ -16,6 +16,17 @@ public interface AvatarLink {
      */
     void takeForce(double[] out);
 
+    /**
+     * As {@link #takeForce}, and returns how many model steps the sum covers (0 when no step ran since the
+     * last call), or -1 if the link cannot tell (the default). The haptic loop uses the count in
+     * {@link HapticLoop.Mode#AUDIO} to render the mean force per step, since the audio thread runs its steps
+     * in bursts.
+     */
+    default long takeForceCounted(double[] out) {
+        takeForce(out);
+        return -1;
+    }
+
     /** Advances the model by n steps (haptics-only mode; in audio mode the audio thread steps it). */
     void step(int n);
 }

@@ -24,6 +24,8 @@ public class Board implements AutoCloseable {
     public static final int DEFAULT_TIMEOUT_MS = 100;
     /** Default number of consecutive reads without a reply after which the link is declared lost. */
     public static final int DEFAULT_LOST_AFTER_TIMEOUTS = 10;
+    /** How long close() waits for the board to answer its zero torques. */
+    private static final long CLOSE_ACK_NANOS = 250_000_000L;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
     private static final float PLAUSIBLE = 1e6f;
 
@@ -31,6 +33,7 @@ public class Board implements AutoCloseable {
     private final BoardModel model;
     private final List<Device> devices = new ArrayList<>();
     private final Thread shutdownHook;
+    private final boolean hookInRuntime;
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
     private volatile int lostAfterTimeouts = DEFAULT_LOST_AFTER_TIMEOUTS;
     private int consecutiveTimeouts;
@@ -88,7 +91,15 @@ public class Board implements AutoCloseable {
         flushInput();
         send(WireFormat.reset((byte) 0), 2);
         this.shutdownHook = new Thread(this::closeQuietly, "tactus-haply-shutdown");
-        Runtime.getRuntime().addShutdownHook(shutdownHook);
+        if (transport instanceof SerialTransport) {
+            // jSerialComm closes every port from a shutdown hook of its own; Runtime's hooks run in no set
+            // order, so ours could find the port closed and the motors would keep their last torque
+            SerialTransport.runBeforePortsClose(shutdownHook);
+            hookInRuntime = false;
+        } else {
+            Runtime.getRuntime().addShutdownHook(shutdownHook);
+            hookInRuntime = true;
+        }
     }
 
     /** Opens the first serial port that looks like a Haply board (see {@link SerialPorts#findHaply()}). */
@@ -314,6 +325,7 @@ public class Board implements AutoCloseable {
                         // the link may be half gone; closing goes on
                     }
                 }
+                awaitOwedReplies(CLOSE_ACK_NANOS);
                 // then reset: the board forgets the configuration (the duty stays at the zero just sent)
                 try {
                     transport.write(WireFormat.reset((byte) 0), 0, 2);
@@ -335,7 +347,9 @@ public class Board implements AutoCloseable {
             transport.close();
         }
         try {
-            Runtime.getRuntime().removeShutdownHook(shutdownHook);
+            if (hookInRuntime) {
+                Runtime.getRuntime().removeShutdownHook(shutdownHook);
+            }   // jSerialComm's list cannot be undone: the hook then finds the board closed and does nothing
         } catch (IllegalStateException ignored) {
             // already shutting down: this is the hook itself
         }
@@ -387,6 +401,27 @@ public class Board implements AutoCloseable {
             }
         }
         return false;
+    }
+
+    /**
+     * Waits, up to a time, until every reply still owed has arrived (one device: the last one answers the
+     * zero torques, so the board has applied them). Closing a pseudo-terminal or a USB port at once can lose
+     * what the other end has not read yet; the wait makes the zeroing sure wherever the board still answers.
+     */
+    private void awaitOwedReplies(long maxNanos) {
+        if (devices.size() != 1 || pendingReplies <= 0) {
+            LockSupport.parkNanos(2_000_000);
+            return;
+        }
+        long need = pendingReplies * devices.get(0).replyBytes();
+        long deadline = System.nanoTime() + maxNanos;
+        try {
+            while (transport.available() < need && System.nanoTime() - deadline < 0) {
+                LockSupport.parkNanos(200_000);
+            }
+        } catch (IOException ignored) {
+            // the link is gone: nothing more to wait for
+        }
     }
 
     /** Sends len bytes of data in one write. */

@@ -12,8 +12,10 @@ import java.util.concurrent.locks.LockSupport;
  * <p>{@link #setTarget} publishes the target and wakes the helper, which passes it on and takes the force;
  * {@link #takeForce} returns everything the helper has collected since the previous call (forces are never
  * lost, at worst they arrive one tick later). {@link #step} calls the wrapped link directly. If the wrapped
- * link throws, the force becomes NaN for good, so the loop sends zero torque from then on. Call
- * {@link #close()} to stop the helper thread.
+ * link throws, the helper stops and every later {@link #takeForce} throws an {@link IllegalStateException}
+ * that carries the model's exception (the haptic loop then sends zero torque and stops, naming it). Call
+ * {@link #close()} to stop the helper thread. {@link HapticLoop} wraps its avatar in one by itself in
+ * {@link HapticLoop.Mode#AUDIO}.
  */
 public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private final AvatarLink inner;
@@ -31,13 +33,19 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private double cx;
     private double cy;
     private double cz;
+    private long cs;                        // steps covered by the sums
+    private volatile boolean stepsUnknown;  // the wrapped link cannot count its steps
 
     // haptic thread only: the totals already handed out
     private double takenX;
     private double takenY;
     private double takenZ;
+    private long takenS;
 
     private volatile long exchanges;
+    private volatile long busyReads;
+    private static final int MAX_TRIES = 64;
+    private volatile RuntimeException failure;
 
     /** Wraps a link (typically a {@link PhysicalModelAvatar}) and starts the helper thread. */
     public DecoupledAvatar(AvatarLink inner) {
@@ -64,19 +72,42 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
 
     @Override
     public void takeForce(double[] out) {
+        takeForceCounted(out);
+    }
+
+    /** Everything collected since the previous call, and the model steps it covers (-1 if the link cannot tell). */
+    @Override
+    public long takeForceCounted(double[] out) {
+        RuntimeException failed = failure;
+        if (failed != null) {
+            throw new IllegalStateException("the model failed on the avatar exchange thread: " + failed, failed);
+        }
         double x;
         double y;
         double z;
+        long steps;
+        int tries = 0;
         while (true) {
             long s1 = forceSeq;
             if ((s1 & 1) == 0) {
                 x = cx;
                 y = cy;
                 z = cz;
+                steps = cs;
                 VarHandle.loadLoadFence();
                 if (forceSeq == s1) {
                     break;
                 }
+            }
+            if (++tries == MAX_TRIES) {
+                // The helper was preempted while writing (it runs at normal priority, this thread perhaps
+                // not): never wait for it. Nothing new this time; the running sums lose nothing, the next
+                // call takes it all.
+                busyReads++;
+                out[0] = 0;
+                out[1] = 0;
+                out[2] = 0;
+                return stepsUnknown ? -1 : 0;
             }
             Thread.onSpinWait();
         }
@@ -86,11 +117,22 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
         takenX = x;
         takenY = y;
         takenZ = z;
+        long n = steps - takenS;
+        takenS = steps;
+        return stepsUnknown ? -1 : n;
     }
 
     @Override
     public void step(int n) {
         inner.step(n);
+    }
+
+    /**
+     * Number of {@link #takeForceCounted} calls that found the helper in the middle of publishing and returned
+     * nothing new rather than wait for it.
+     */
+    public long busyReads() {
+        return busyReads;
     }
 
     /** Number of target/force exchanges the helper has made with the wrapped link. */
@@ -113,6 +155,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
     private void serve() {
         double[] f = new double[3];
         long seen = 0;
+        long steps = 0;
         while (running) {
             long s = targetSeq;
             if (s == seen || (s & 1) != 0) {
@@ -129,11 +172,16 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
             seen = s;
             try {
                 inner.setTarget(x, y, z);
-                inner.takeForce(f);
+                long n = inner.takeForceCounted(f);
+                if (n < 0) {
+                    stepsUnknown = true;
+                    n = 0;
+                }
+                steps = n;
             } catch (RuntimeException e) {
-                f[0] = Double.NaN;  // the loop sees a non-finite force and sends zero torque
-                f[1] = Double.NaN;
-                f[2] = Double.NaN;
+                failure = e;        // the next takeForce throws: the loop sends zero torque and stops
+                exchanges++;
+                return;
             }
             long fs = forceSeq;
             forceSeq = fs + 1;
@@ -141,6 +189,7 @@ public final class DecoupledAvatar implements AvatarLink, AutoCloseable {
             cx += f[0];
             cy += f[1];
             cz += f[2];
+            cs += steps;
             forceSeq = fs + 2;
             exchanges++;
         }

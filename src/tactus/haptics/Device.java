@@ -389,6 +389,11 @@ public class Device {
         }
     }
 
+    /** Length in bytes of this device's reply to a write (0 before the setup). */
+    int replyBytes() {
+        return frame == null ? 0 : WireFormat.replyLength(frame.length);
+    }
+
     /** The write message with zero torques and zero PWM, or null before the setup. */
     byte[] zeroMessage() {
         return zeroMessage;

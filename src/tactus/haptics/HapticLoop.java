@@ -8,8 +8,10 @@ import java.util.concurrent.locks.LockSupport;
  * avatar's force, applies the gains, and writes the torques J^T F.
  *
  * <p>Mapping (as the paper's sketches): model position = (s alpha x + ox, alpha y + oy, oz) and device force
- * = (s beta Fx, beta Fy), where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
- * the sketches draw the device seen from the user) and F the avatar force in model units.
+ * = (s g beta Fx, g beta Fy), g the sign of alpha, where (x, y) is the handle in metres, s = -1 when x is mirrored (the default, as
+ * the sketches draw the device seen from the user) and F the avatar force in model units: its mean per model
+ * step over the steps since the last tick (in AUDIO mode, held while no audio step runs; see
+ * {@link AvatarLink#takeForceCounted}).
  * {@link #useRealUnits()} sets alpha = beta = 1 for a model in REAL_UNITS (metres, newtons).
  *
  * <p>Safety: torques are scaled down to the torque limit (0.123 N m, the firmware's, by default); a
@@ -18,6 +20,13 @@ import java.util.concurrent.locks.LockSupport;
  * tick has started for a set time; a lost link (or no reply for a set time) stops the loop after zeroing the
  * motors where the link still allows; {@link #close()} stops the loop and closes the board, which sends
  * zero torques (the board also does so from a JVM shutdown hook).
+ *
+ * <p>Timing: ticks fall on absolute deadlines (a late tick does not shift the ones after it); the thread parks
+ * until {@link #setSpinMicros(int) a short time} before each deadline and spins the rest. In {@link Mode#AUDIO}
+ * the loop wraps its avatar in a {@link DecoupledAvatar} by default, so that a tick never waits for the model's
+ * lock while the audio thread computes a buffer. On a loaded machine the operating system still preempts the
+ * thread now and then; {@link #setRealtimePriority(int)} asks Linux for real-time scheduling, which removes
+ * almost all of it where the user is allowed to (see {@code docs/haptics.md} for measured figures).
  *
  * <p>Telemetry ({@link #telemetry()}): achieved rate, missed steps (a period over 1.5 times nominal), period
  * jitter p50/p99/max, compute time per tick. Configure before {@link #start()}.
@@ -53,12 +62,18 @@ public final class HapticLoop implements AutoCloseable {
     private int watchdogMillis = 20;
     private int linkTimeoutMillis = 500;
     private int spinMicros = 60;
+    private int realtimePriority;
+    private boolean decoupleInAudioMode = true;
+    private volatile String scheduling = "not started";
+    private AvatarLink active;
+    private DecoupledAvatar ownDecoupler;
 
     private volatile boolean running;
     private volatile Thread thread;
     private volatile Thread watchdog;
     private volatile String failure;
     private volatile long lastTickStart;
+    private volatile boolean warmingUp;   // before the first tick: the real-time request and the first read
 
     // written by the loop thread, read by anyone (plain longs: statistics)
     private final long[] periods = new long[WINDOW];
@@ -76,6 +91,7 @@ public final class HapticLoop implements AutoCloseable {
 
     // per-tick state, loop thread only
     private final double[] force = new double[3];
+    private final double[] held = new double[2];   // the force per step being rendered (model units)
     private final double[] tau = new double[2];
     private volatile double devX = Double.NaN;
     private volatile double devY = Double.NaN;
@@ -126,7 +142,11 @@ public final class HapticLoop implements AutoCloseable {
         stepsPerTick = n;
     }
 
-    /** Sets the position gain alpha (model units per metre; finite, != 0; default 200). */
+    /**
+     * Sets the position gain alpha (model units per metre; finite, != 0; default 200). A negative gain flips
+     * both axes (with {@link #setMirrorX(boolean) setMirrorX(false)}, a model whose y axis points the other
+     * way); the force is sent back along the same axes, so the rendering stays passive.
+     */
     public void setPositionGain(double alpha) {
         beforeStart("setPositionGain");
         if (!Double.isFinite(alpha) || alpha == 0) {
@@ -164,9 +184,9 @@ public final class HapticLoop implements AutoCloseable {
     /**
      * Calibrated mode for a model in REAL_UNITS: alpha = 1 (metres), beta = 1 (newtons), torque gain 1, no
      * mirroring, so a 1 g virtual mass weighs 1 g in the hand (within the device's own inertia and friction).
-     * In HAPTICS_ONLY mode the loop renders the mean force over the tick's steps; in AUDIO mode the avatar
-     * force is summed over the audio steps since the last tick, so set beta to (haptic rate / audio rate)
-     * after this call.
+     * The loop renders the mean force per model step since the last tick in both modes (in AUDIO mode, held
+     * between the audio thread's bursts), so no other factor is needed. (An {@link AvatarLink} that cannot
+     * count its steps gets its sum rendered as it comes; then set beta to haptic rate / audio rate.)
      */
     public void useRealUnits() {
         beforeStart("useRealUnits");
@@ -230,6 +250,47 @@ public final class HapticLoop implements AutoCloseable {
         spinMicros = us;
     }
 
+    /**
+     * Asks for real-time scheduling (Linux SCHED_FIFO at this priority, 1..99) for the loop thread, or not (0,
+     * the default). The loop thread asks once, before its first tick, through the {@code chrt} program; where
+     * the user may not raise priorities (no root, no {@code CAP_SYS_NICE}, no {@code rtprio} limit) or on
+     * another system, the loop runs at normal priority and {@link #scheduling()} says why. Under real-time
+     * scheduling other programs no longer preempt the loop; it still sleeps between ticks, so it takes a core
+     * only for its compute time plus the spin ({@link #setSpinMicros(int)}).
+     */
+    public void setRealtimePriority(int priority) {
+        beforeStart("setRealtimePriority");
+        if (priority < 0 || priority > 99) {
+            throw new IllegalArgumentException("HapticLoop.setRealtimePriority: priority must be 0 (off) or 1..99, got "
+                    + priority);
+        }
+        realtimePriority = priority;
+    }
+
+    /**
+     * In {@link Mode#AUDIO}, wraps the avatar in a {@link DecoupledAvatar} at {@link #start()} (true, the
+     * default) so that a tick never waits for the model's lock, or calls the avatar directly (false). An
+     * avatar that is already a {@code DecoupledAvatar} is never wrapped twice. Ignored in HAPTICS_ONLY mode.
+     */
+    public void setDecoupledInAudioMode(boolean decouple) {
+        beforeStart("setDecoupledInAudioMode");
+        decoupleInAudioMode = decouple;
+    }
+
+    /**
+     * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_FIFO n)", or
+     * "normal priority (real-time refused: why)".
+     */
+    public String scheduling() {
+        return scheduling;
+    }
+
+    /** True if, in this configuration, the ticks reach the avatar through a {@link DecoupledAvatar}. */
+    public boolean isDecoupled() {
+        return avatar instanceof DecoupledAvatar
+                || (mode == Mode.AUDIO && decoupleInAudioMode);
+    }
+
     /** Starts the loop thread and its watchdog. The device must be set up. */
     public synchronized void start() {
         if (thread != null) {
@@ -238,7 +299,14 @@ public final class HapticLoop implements AutoCloseable {
         if (!device.isConfigured()) {
             throw new IllegalStateException("HapticLoop.start: call device_set_parameters() on the device first");
         }
+        if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar)) {
+            ownDecoupler = new DecoupledAvatar(avatar);
+            active = ownDecoupler;
+        } else {
+            active = avatar;
+        }
         running = true;
+        warmingUp = true;
         Thread t = new Thread(this::run, "tactus-haptic-loop");
         t.setDaemon(true);
         t.setPriority(Thread.MAX_PRIORITY);
@@ -267,6 +335,10 @@ public final class HapticLoop implements AutoCloseable {
             w.interrupt();
         }
         device.board().zeroTorques();
+        DecoupledAvatar d = ownDecoupler;
+        if (d != null) {
+            d.close();
+        }
     }
 
     /** Stops the loop and closes the board (zero torques, then the port). */
@@ -279,6 +351,48 @@ public final class HapticLoop implements AutoCloseable {
     /** Same as {@link #close()}, for Processing's dispose. */
     public void dispose() {
         close();
+    }
+
+    /** The rate in Hz. */
+    public double rate() {
+        return rateHz;
+    }
+
+    /** Who steps the model. */
+    public Mode mode() {
+        return mode;
+    }
+
+    /** The position gain alpha (model units per metre). */
+    public double positionGain() {
+        return alpha;
+    }
+
+    /** The force gain beta (newtons per model force unit). */
+    public double forceGain() {
+        return beta;
+    }
+
+    /** True if x is mirrored between device and model. */
+    public boolean isMirrorX() {
+        return mirrorX;
+    }
+
+    /**
+     * Maps a handle position (metres, device coordinates) to the model position the avatar is sent to, as each
+     * tick does: writes (s alpha x + ox, alpha y + oy) into out[0], out[1].
+     */
+    public void deviceToModel(double x, double y, double[] out) {
+        double sx = mirrorX ? -1 : 1;
+        out[0] = sx * alpha * x + ox;
+        out[1] = alpha * y + oy;
+    }
+
+    /** The inverse of {@link #deviceToModel}: the handle position (metres) that puts the avatar at (mx, my). */
+    public void modelToDevice(double mx, double my, double[] out) {
+        double sx = mirrorX ? -1 : 1;
+        out[0] = sx * (mx - ox) / alpha;
+        out[1] = (my - oy) / alpha;
     }
 
     /** True while the loop thread runs. */
@@ -325,9 +439,9 @@ public final class HapticLoop implements AutoCloseable {
                 p, c, k, nominal, jitterMax, computeMax, stale, faults, clamped, watchdogTrips);
     }
 
-    /** Prints the telemetry to standard output. */
+    /** Prints the telemetry and the scheduling to standard output. */
     public void printTelemetry() {
-        System.out.println(telemetry());
+        System.out.println(telemetry() + ", " + scheduling);
     }
 
     // ------------------------------------------------------------------------------------------ the thread
@@ -335,6 +449,13 @@ public final class HapticLoop implements AutoCloseable {
     private void run() {
         long period = Math.round(1e9 / rateHz);
         long spin = spinMicros * 1000L;
+        if (realtimePriority > 0) {
+            String why = RealtimeScheduling.applyToCurrentThread(realtimePriority);
+            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + ")"
+                    : "normal priority (real-time refused: " + why + ")";
+        } else {
+            scheduling = "normal priority";
+        }
         try {
             device.device_read_request();   // so that the first tick finds a reply
         } catch (RuntimeException e) {
@@ -342,6 +463,8 @@ public final class HapticLoop implements AutoCloseable {
             return;
         }
         long next = System.nanoTime() + period;
+        lastTickStart = System.nanoTime();
+        warmingUp = false;   // the watchdog watches from here (chrt may take tens of ms to start)
         long prevStart = 0;
         startNanos = next;
         while (running) {
@@ -417,23 +540,38 @@ public final class HapticLoop implements AutoCloseable {
         double x = devX;
         double y = devY;
         boolean poseOk = !Double.isNaN(x) && kin.isValid();
+        long steps;
         try {
             if (poseOk) {
-                avatar.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
+                active.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
             }
             if (mode == Mode.HAPTICS_ONLY) {
-                avatar.step(stepsPerTick);
+                active.step(stepsPerTick);
             }
-            avatar.takeForce(force);
+            steps = active.takeForceCounted(force);
         } catch (RuntimeException e) {
             writeTorques(0, 0);
             fail("the model failed in the haptic loop, zero torque sent: " + e);
             return false;
         }
-        // haptics-only: the avatar force is summed over the tick's steps; render its mean
-        double perStep = mode == Mode.HAPTICS_ONLY ? 1.0 / stepsPerTick : 1.0;
-        double fx = sx * beta * perStep * force[0];
-        double fy = beta * perStep * force[1];
+        // The avatar force is summed over the steps since the last tick: render its mean per step. In audio
+        // mode the audio thread runs a buffer's steps in one burst (1024 steps every 23 ms), so most ticks see
+        // no step at all and a few see hundreds: the mean of the last steps is held in between.
+        if (mode == Mode.HAPTICS_ONLY) {
+            double k = 1.0 / stepsPerTick;
+            held[0] = force[0] * k;
+            held[1] = force[1] * k;
+        } else if (steps > 0) {
+            held[0] = force[0] / steps;
+            held[1] = force[1] / steps;
+        } else if (steps < 0) {
+            held[0] = force[0];              // the link cannot count its steps: render the sum, as it comes
+            held[1] = force[1];
+        }                                    // steps == 0: no step ran since the last tick, keep the mean
+        // the force goes back along the axes the position came from: a negative gain flips them both
+        double gy = alpha < 0 ? -1 : 1;
+        double fx = sx * gy * beta * held[0];
+        double fy = gy * beta * held[1];
         if (Double.isNaN(x)) {
             forceX = 0;                      // no position yet (start-up): nothing to render
             forceY = 0;
@@ -488,7 +626,7 @@ public final class HapticLoop implements AutoCloseable {
                 break;
             }
             long since = System.nanoTime() - lastTickStart;
-            if (since > limit) {
+            if (!warmingUp && since > limit) {
                 if (!tripped && running) {
                     tripped = true;
                     watchdogTrips++;

@@ -14,6 +14,7 @@ public final class SerialTransport implements Transport {
     private final SerialPort port;
     private final String name;
     private volatile boolean closed;
+    private boolean waitingReads;
 
     private SerialTransport(SerialPort port, String name) {
         this.port = port;
@@ -50,6 +51,14 @@ public final class SerialTransport implements Transport {
                     + "(Linux: the 'dialout' group)");
         }
         return new SerialTransport(port, portName);
+    }
+
+    /**
+     * Registers a JVM shutdown hook that runs before jSerialComm closes the open ports from its own shutdown
+     * hook (with {@code Runtime.addShutdownHook} the two would run in no set order).
+     */
+    static void runBeforePortsClose(Thread hook) {
+        SerialPort.addShutdownHook(hook);
     }
 
     @Override
@@ -106,6 +115,24 @@ public final class SerialTransport implements Transport {
             throw new IOException("read from " + name + " failed (error " + port.getLastErrorCode() + ")");
         }
         return n;
+    }
+
+    /**
+     * Reads what has arrived, or waits for the first byte up to 100 ms (the tty driver counts in tenths of a
+     * second) and wakes as soon as one arrives. The first call switches the port to such reads for good, so
+     * that a later {@link #read} waits too when nothing has arrived: use it on a port that only one thread
+     * reads and that never needs a read that returns at once (the emulator's end of a pty pair).
+     */
+    @Override
+    public int readWaiting(byte[] buffer, int offset, int length) throws IOException {
+        if (closed) {
+            throw new IOException("port " + name + " is closed");
+        }
+        if (!waitingReads) {
+            port.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 100, 0);
+            waitingReads = true;
+        }
+        return read(buffer, offset, length);
     }
 
     @Override

@@ -3,7 +3,9 @@
  * {@link tactus.haptics.Device}, {@link tactus.haptics.Mechanisms}, {@link tactus.haptics.Pantograph},
  * {@link tactus.haptics.Actuator}, {@link tactus.haptics.Sensor}, {@link tactus.haptics.Pwm}) that speaks
  * the Haply V2 wire protocol over a {@link tactus.haptics.Transport}, pantograph kinematics with
- * hardware presets, and port discovery.
+ * hardware presets, and port discovery; the fixed-rate {@link tactus.haptics.HapticLoop} with its telemetry
+ * and safety; and {@link tactus.haptics.HapticSession}, which gives a sketch a Haply (or the emulator, with
+ * the mouse as the hand) and a loop in a few lines.
  *
  * <p>A sketch written for hAPI 2.x ports by deleting the hAPI {@code .java} files from its folder and
  * adding {@code import tactus.haptics.*;}. The board emulator lives in {@code tactus.haptics.emulator}.

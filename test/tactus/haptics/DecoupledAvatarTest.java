@@ -1,6 +1,7 @@
 package tactus.haptics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.locks.LockSupport;
@@ -76,7 +77,7 @@ class DecoupledAvatarTest {
     }
 
     @Test
-    void aFailingModelGivesANonFiniteForce() {
+    void aFailingModelMakesTakeForceThrowWithTheModelsException() {
         AvatarLink failing = new AvatarLink() {
             @Override
             public void setTarget(double x, double y, double z) {
@@ -98,8 +99,108 @@ class DecoupledAvatarTest {
             while (a.exchanges() == 0 && System.nanoTime() < deadline) {
                 LockSupport.parkNanos(1_000_000);
             }
-            a.takeForce(f);
-            assertTrue(Double.isNaN(f[0]) && Double.isNaN(f[1]));
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> a.takeForce(f));
+            assertTrue(e.getMessage().contains("diverged"), e.getMessage());
+        }
+    }
+
+    @Test
+    void theStepCountsArriveWithTheirForcesAndAnUncountedLinkSaysSo() {
+        // each exchange reports 7 steps and a force of 7 (1 per step): the haptic side must see them together
+        AvatarLink counted = new AvatarLink() {
+            @Override
+            public void setTarget(double x, double y, double z) {
+            }
+
+            @Override
+            public void takeForce(double[] out) {
+                takeForceCounted(out);
+            }
+
+            @Override
+            public long takeForceCounted(double[] out) {
+                out[0] = 7;
+                out[1] = 0;
+                out[2] = 0;
+                return 7;
+            }
+
+            @Override
+            public void step(int n) {
+            }
+        };
+        double[] f = new double[3];
+        try (DecoupledAvatar a = new DecoupledAvatar(counted)) {
+            long steps = 0;
+            double sum = 0;
+            for (int i = 0; i < 200; i++) {
+                a.setTarget(i, 0, 0);
+                long n = a.takeForceCounted(f);
+                assertTrue(n >= 0, "count " + n);
+                assertEquals(n, f[0], 1e-9, "a force of 1 per step");
+                steps += n;
+                sum += f[0];
+                LockSupport.parkNanos(200_000);
+            }
+            assertTrue(steps > 0);
+            assertEquals(steps, sum, 1e-9);
+        }
+        try (DecoupledAvatar a = new DecoupledAvatar(new SlowLink())) {
+            a.setTarget(1, 0, 0);
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (a.exchanges() == 0 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            assertEquals(-1, a.takeForceCounted(f), "a link that cannot count");
+        }
+    }
+
+    @Test
+    void theHapticSideNeverWaitsForAHelperCaughtMidPublication() throws Exception {
+        // a helper preempted between the two halves of a publication leaves the sequence odd; the haptic
+        // thread (perhaps real-time) must not spin until it runs again
+        AvatarLink counted = new AvatarLink() {
+            @Override
+            public void setTarget(double x, double y, double z) {
+            }
+
+            @Override
+            public void takeForce(double[] out) {
+                takeForceCounted(out);
+            }
+
+            @Override
+            public long takeForceCounted(double[] out) {
+                out[0] = 2;
+                out[1] = 0;
+                out[2] = 0;
+                return 1;
+            }
+
+            @Override
+            public void step(int n) {
+            }
+        };
+        double[] f = new double[3];
+        try (DecoupledAvatar a = new DecoupledAvatar(counted)) {
+            a.setTarget(0, 0, 0);
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (a.exchanges() == 0 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            java.lang.reflect.Field seq = DecoupledAvatar.class.getDeclaredField("forceSeq");
+            seq.setAccessible(true);
+            long even = seq.getLong(a);
+            seq.setLong(a, even + 1);                  // "writing", and the writer does not come back
+            long n = org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(5),
+                    () -> a.takeForceCounted(f));
+            assertEquals(0, n);
+            assertEquals(0.0, f[0]);
+            assertEquals(1, a.busyReads());
+            seq.setLong(a, even);                      // the writer finishes: everything arrives, once
+            long exchanges = a.exchanges();
+            assertEquals(exchanges, a.takeForceCounted(f));
+            assertEquals(2.0 * exchanges, f[0], 1e-12);
         }
     }
 }

@@ -3,6 +3,7 @@ package tactus.haptics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -498,6 +499,274 @@ class HapticLoopTest {
             k.torques(f[0], f[1], 1.0, tau);
             assertEquals(tau[0], t1, 0.01 * Math.abs(tau[0]) + 1e-6);
             assertEquals(tau[1], t2, 0.01 * Math.abs(tau[1]) + 1e-6);
+        }
+    }
+
+    /** Holds the model's lock from this thread until the loop has run {@code ticks} more ticks or the time is up. */
+    private static long ticksWhileLocked(PhysicalModel pm, HapticLoop loop, long ticks, long maxMillis) {
+        long deadline = System.nanoTime() + maxMillis * 1_000_000L;
+        pm.getLock().lock();
+        try {
+            long t0 = loop.ticks();
+            while (loop.ticks() - t0 < ticks && System.nanoTime() < deadline && loop.isRunning()) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            return loop.ticks() - t0;
+        } finally {
+            pm.getLock().unlock();
+        }
+    }
+
+    private static void awaitTicks(HapticLoop loop, long n) {
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        while (loop.ticks() < n && loop.isRunning() && System.nanoTime() < deadline) {
+            LockSupport.parkNanos(1_000_000);
+        }
+        assertTrue(loop.ticks() >= n, () -> "the loop ran only " + loop.ticks() + " ticks: " + loop.failure());
+    }
+
+    @Test
+    void inAudioModeATickNeverWaitsForTheModelsLock() {
+        // the audio thread holds the lock for a whole buffer; here the test thread holds it for good
+        try (Rig rig = new Rig(false)) {
+            PhysicalModel pm = chain(50);
+            HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            assertTrue(loop.isDecoupled());
+            loop.start();
+            awaitTicks(loop, 20);
+            long ran = ticksWhileLocked(pm, loop, 200, 10_000);
+            assertTrue(ran >= 200, "ticks while the model was locked: " + ran);
+            assertTrue(loop.isRunning(), () -> "loop stopped: " + loop.failure());
+            loop.close();
+        }
+    }
+
+    @Test
+    void inAudioModeWithoutDecouplingTheTicksWaitForTheLock() {
+        // the counterpart of the test above: it shows that the lock would stall the loop
+        try (Rig rig = new Rig(false)) {
+            PhysicalModel pm = chain(50);
+            HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            loop.setDecoupledInAudioMode(false);
+            loop.setWatchdogMillis(10_000);
+            assertFalse(loop.isDecoupled());
+            loop.start();
+            awaitTicks(loop, 20);
+            long ran = ticksWhileLocked(pm, loop, 200, 300);
+            assertTrue(ran <= 1, "ticks while the model was locked: " + ran);
+            loop.close();
+        }
+    }
+
+    @Test
+    void inAudioModeAModelThatThrowsStopsTheLoopAfterZeroTorque() {
+        try (Rig rig = new Rig(false)) {
+            AvatarLink failing = new AvatarLink() {
+                volatile int calls;
+
+                @Override
+                public void setTarget(double x, double y, double z) {
+                    if (++calls > 50) {
+                        throw new IllegalStateException("diverged on purpose");
+                    }
+                }
+
+                @Override
+                public void takeForce(double[] out) {
+                    out[0] = 0.002;
+                    out[1] = -0.003;
+                    out[2] = 0;
+                }
+
+                @Override
+                public void step(int n) {
+                }
+            };
+            HapticLoop loop = rig.loop(failing);
+            loop.setMode(HapticLoop.Mode.AUDIO);
+            loop.start();
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (loop.isRunning() && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            assertFalse(loop.isRunning());
+            assertTrue(loop.failure().contains("diverged on purpose"), loop.failure());
+            float[] last = torquesOf(rig.link.last());
+            assertEquals(0f, last[0]);
+            assertEquals(0f, last[1]);
+            assertEquals(0, rig.emulator.duty(1));
+            assertEquals(0, rig.emulator.duty(2));
+        }
+    }
+
+    @Test
+    void realtimePriorityIsAskedForOnceAndReportedEitherWay() {
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            assertThrows(IllegalArgumentException.class, () -> loop.setRealtimePriority(100));
+            assertThrows(IllegalArgumentException.class, () -> loop.setRealtimePriority(-1));
+            assertEquals("not started", loop.scheduling());
+            loop.setRealtimePriority(10);
+            loop.start();
+            awaitTicks(loop, 50);
+            String s = loop.scheduling();
+            assertTrue(s.equals("real-time (SCHED_FIFO 10)") || s.startsWith("normal priority (real-time refused: "), s);
+            assertThrows(IllegalStateException.class, () -> loop.setRealtimePriority(0));
+            loop.close();
+        }
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            loop.start();
+            awaitTicks(loop, 5);
+            assertEquals("normal priority", loop.scheduling());
+            loop.close();
+        }
+    }
+
+    @Test
+    void theForceGoesBackAlongTheAxesThePositionCameFrom() {
+        // FaultyAvatar's force is (0.002, -0.003) model units; beta 100 makes it 0.2 and -0.3 N
+        double[][] expected = {
+            {-0.2, -0.3},   // default: alpha > 0, x mirrored
+            {0.2, -0.3},    // alpha > 0, no mirror
+            {0.2, 0.3},     // alpha < 0 with the mirror: both axes flipped, then x mirrored back
+            {-0.2, 0.3},    // alpha < 0, no mirror: a model whose y points the other way
+        };
+        for (int c = 0; c < 4; c++) {
+            try (Rig rig = new Rig(false)) {
+                HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+                loop.setPositionGain(c < 2 ? 200 : -200);
+                loop.setMirrorX(c % 2 == 0);
+                loop.start();
+                awaitTicks(loop, 20);
+                double[] f = new double[2];
+                loop.deviceForce(f);
+                loop.close();
+                assertEquals(expected[c][0], f[0], 1e-9, "case " + c);
+                assertEquals(expected[c][1], f[1], 1e-9, "case " + c);
+                // and the position map inverts
+                double[] m = new double[2];
+                double[] d = new double[2];
+                loop.deviceToModel(0.03, 0.07, m);
+                loop.modelToDevice(m[0], m[1], d);
+                assertEquals(0.03, d[0], 1e-12);
+                assertEquals(0.07, d[1], 1e-12);
+            }
+        }
+    }
+
+    @Test
+    void theWatchdogDoesNotTripWhileTheLoopStartsUp() {
+        // the loop thread's start-up (the real-time request runs a program; the first request) may take
+        // longer than the watchdog's limit; nothing has been sent yet, so there is nothing to zero
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        Transport link = emulator.connect();
+        boolean[] slow = {false};
+        Transport slowFirstWrite = new Transport() {
+            @Override
+            public void write(byte[] data, int offset, int length) throws java.io.IOException {
+                if (slow[0]) {
+                    slow[0] = false;
+                    LockSupport.parkNanos(150_000_000L);
+                }
+                link.write(data, offset, length);
+            }
+
+            @Override
+            public int available() throws java.io.IOException {
+                return link.available();
+            }
+
+            @Override
+            public int read(byte[] buffer, int offset, int length) throws java.io.IOException {
+                return link.read(buffer, offset, length);
+            }
+
+            @Override
+            public void close() {
+                link.close();
+            }
+
+            @Override
+            public String describe() {
+                return "slow first write";
+            }
+        };
+        Board board = new Board(slowFirstWrite);
+        try {
+            Device device = new Device((byte) 3, board);
+            HaplyPreset.HAPLY_2018.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(),
+                    new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            slow[0] = true;      // the loop's first request takes 150 ms, the watchdog's limit is 20 ms
+            loop.start();
+            awaitTicks(loop, 50);
+            loop.close();
+            assertEquals(0, loop.telemetry().watchdogTrips);
+        } finally {
+            board.close();
+        }
+    }
+
+    @Test
+    void inAudioModeTheForceIsTheMeanPerStepHeldBetweenTheAudioBursts() throws Exception {
+        // a constant force on the avatar (a spring to a ground 0.1 away, K 0.5: 0.05 per step), stepped by an
+        // audio-like thread in bursts of 1024 steps every 23.2 ms: every tick must render the same force,
+        // not nothing between the bursts and a thousand times too much after one
+        for (boolean decoupled : new boolean[] {true, false}) {
+            try (Rig rig = new Rig(false)) {
+                PhysicalModel pm = new PhysicalModel(44100);
+                pm.addHapticInput3D("hapticMass", new Vect3D(), 1);
+                pm.addGround3D("g", new Vect3D(0.1, 0, 0));
+                pm.addSpringDamper3D("k", 0, 0.5, 0, "hapticMass", "g");
+                pm.init();
+                HapticLoop loop = rig.loop(new PhysicalModelAvatar(pm, "hapticMass"));
+                loop.setMode(HapticLoop.Mode.AUDIO);
+                loop.setDecoupledInAudioMode(decoupled);
+                loop.setForceGain(1);
+                loop.start();
+                awaitTicks(loop, 20);
+                boolean[] stop = {false};
+                Thread audio = new Thread(() -> {
+                    while (!stop[0]) {
+                        pm.computeNSteps(1024);
+                        LockSupport.parkNanos(23_200_000L);
+                    }
+                });
+                audio.start();
+                try {
+                    // wait for two bursts, then sample the rendered force once a millisecond for half a second
+                    long two = pm.getStepCount() + 2048;
+                    long deadline = System.nanoTime() + 10_000_000_000L;
+                    while (pm.getStepCount() < two && System.nanoTime() < deadline) {
+                        LockSupport.parkNanos(1_000_000);
+                    }
+                    LockSupport.parkNanos(5_000_000);
+                    double[] f = new double[2];
+                    double[] xs = new double[500];
+                    for (int k = 0; k < xs.length; k++) {
+                        loop.deviceForce(f);
+                        xs[k] = f[0];
+                        LockSupport.parkNanos(1_000_000);
+                    }
+                    assertTrue(loop.isRunning(), () -> "loop stopped: " + loop.failure());
+                    // the avatar stays where the still handle puts it (near the origin): F = K (0.1 - x), x mirrored
+                    double expected = -0.5 * (0.1 - pm.getMatPosition("hapticMass").x);
+                    assertEquals(-0.05, expected, 0.005);
+                    for (int k = 0; k < xs.length; k++) {
+                        assertEquals(expected, xs[k], Math.abs(expected) * 0.02,
+                                "decoupled " + decoupled + ", sample " + k + " of the rendered force");
+                    }
+                    assertEquals(0, loop.telemetry().faultTicks);
+                } finally {
+                    stop[0] = true;
+                    audio.join(2000);
+                    loop.close();
+                }
+            }
         }
     }
 }

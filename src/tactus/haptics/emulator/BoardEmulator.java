@@ -18,7 +18,7 @@ import tactus.haptics.Transport;
  * <p>Reach it in-process with {@link #connect()} (each write is handled at once and its reply is readable
  * when the write returns), or over any {@link Transport} with {@link #serve(Transport)}, for instance one end
  * of a {@link PtyPair}, where it runs the firmware's loop on its own thread (one command per pass, a pass at
- * most every 50 microseconds).
+ * most every 50 microseconds; when idle it sleeps in {@link Transport#readWaiting} until the host writes).
  */
 public final class BoardEmulator implements AutoCloseable {
     private static final double SUBSTEP = 1e-4;
@@ -163,13 +163,26 @@ public final class BoardEmulator implements AutoCloseable {
                         busy = firmware.pass(now);
                     }
                     if (!busy && n <= 0) {
-                        LockSupport.parkNanos(PASS_NANOS);   // idle: the next pass is due in 50 us anyway
+                        // idle: sleep until the host writes (no polling: this thread shares the host's cores,
+                        // which a real board never does); the transport wakes it as soon as a byte arrives
+                        int r = boardSide.readWaiting(buf, 0, buf.length);
+                        if (r > 0) {
+                            firmwareIn.put(buf, 0, r);
+                        }
                     }
                 } else {
                     LockSupport.parkNanos(PASS_NANOS - (now - lastPass));
                 }
             }
         } catch (IOException e) {
+            // the link is gone (the host closed its end): the bytes that did arrive are still handled, as a
+            // board handles what it received before the cable went (the host's last write is its zero torques)
+            synchronized (this) {
+                long now = System.nanoTime();
+                while (firmware.pass(now)) {
+                    // every complete command
+                }
+            }
             unplugged = true;
         } finally {
             boardSide.close();

@@ -6,6 +6,19 @@ final class ByteRing {
     private int head;
     private int size;
 
+    /** Takes up to len bytes; when there are none, waits for some up to timeoutNanos first. */
+    synchronized int takeWaiting(byte[] out, int off, int len, long timeoutNanos) throws InterruptedException {
+        long deadline = System.nanoTime() + timeoutNanos;
+        while (size == 0) {
+            long left = deadline - System.nanoTime();
+            if (left <= 0) {
+                return 0;
+            }
+            wait(left / 1_000_000L, (int) (left % 1_000_000L));
+        }
+        return take(out, off, len);
+    }
+
     synchronized void put(byte[] data, int off, int len) {
         if (size + len > buf.length) {
             byte[] nb = new byte[Math.max(buf.length * 2, size + len)];
@@ -19,6 +32,7 @@ final class ByteRing {
             buf[(head + size + i) % buf.length] = data[off + i];
         }
         size += len;
+        notifyAll();
     }
 
     synchronized int size() {

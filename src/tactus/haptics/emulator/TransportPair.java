@@ -55,6 +55,18 @@ public final class TransportPair {
             return in.take(buffer, offset, length);
         }
 
+        /** Waits up to 10 ms for the first byte (woken as soon as the other end writes). */
+        @Override
+        public int readWaiting(byte[] buffer, int offset, int length) throws IOException {
+            check();
+            try {
+                return in.takeWaiting(buffer, offset, length, 10_000_000L);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return 0;
+            }
+        }
+
         private void check() throws IOException {
             if (closed) {
                 throw new IOException(name + ": the other end was closed (cable pulled)");

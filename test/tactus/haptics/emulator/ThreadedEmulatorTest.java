@@ -51,4 +51,31 @@ class ThreadedEmulatorTest {
         assertTrue(e.getMessage().contains("cable"), e.getMessage());
         board.close();
     }
+
+    @Test
+    void aWaitingReadWakesWhenTheOtherEndWritesAndOtherwiseReturnsNothing() throws Exception {
+        TransportPair pair = new TransportPair();
+        byte[] buf = new byte[16];
+        assertEquals(0, pair.boardEnd().readWaiting(buf, 0, buf.length));   // nothing comes: 0 after the wait
+        int[] got = {-1};
+        Thread reader = new Thread(() -> {
+            try {
+                int n = 0;
+                while (n == 0) {
+                    n = pair.boardEnd().readWaiting(buf, 0, buf.length);
+                }
+                got[0] = n;
+            } catch (java.io.IOException e) {
+                got[0] = -2;
+            }
+        });
+        reader.start();
+        LockSupport.parkNanos(20_000_000L);
+        pair.hostEnd().write(new byte[] {7, 8, 9}, 0, 3);
+        reader.join(5000);
+        assertEquals(3, got[0]);
+        assertArrayEquals(new byte[] {7, 8, 9}, java.util.Arrays.copyOf(buf, 3));
+        pair.hostEnd().close();
+        assertThrows(java.io.IOException.class, () -> pair.boardEnd().readWaiting(buf, 0, buf.length));
+    }
 }

@@ -1,0 +1,485 @@
+package tactus.haptics;
+
+import processing.core.PApplet;
+import processing.event.MouseEvent;
+import tactus.PhysicalModel;
+import tactus.Vect3D;
+import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.emulator.HaplyConnection;
+
+/**
+ * Everything a haptic sketch needs in a few lines: a Haply board (the first one found) or, when there is none,
+ * the in-process board emulator with the mouse as the hand; the device set up from a {@link HaplyPreset}; and
+ * a {@link HapticLoop} on a model's avatar, with a mapping that fits the device's workspace to the window.
+ *
+ * <pre>
+ * haptics = HapticSession.open(this);                          // in setup(), after size()
+ * mdl.addHapticInput3D("avatar", haptics.home(), 10);           // the avatar starts where the handle is
+ * ...
+ * haptics.attach(mdl, "avatar").start();                        // 1 kHz, HAPTICS_ONLY: the loop steps the model
+ * ...
+ * haptics.drawStatus();                                         // in draw(): which board, or "the mouse is the hand"
+ * </pre>
+ *
+ * <p>Mapping: model units are pixels. The device's comfortable workspace ({@link #workspace(double[])}, a
+ * rectangle below the calibration pose) is scaled to fill 90 % of the window and centred in it, x mirrored as
+ * in the paper's sketches (the device seen from the user). {@link #attach} sets this on each new loop
+ * (position gain and origin); change them on the returned loop before {@code start()} if the sketch draws with
+ * another scale, and tell the session with {@link #setView(double, double, double)} so that the mouse still
+ * lands on the avatar.
+ *
+ * <p>With a PApplet, the session registers itself with Processing: {@code pre()} moves the emulated hand
+ * towards the mouse (once the mouse has moved over the window; until then the hand holds the handle still),
+ * and {@code dispose()} stops the loop and closes the board, which sends zero torques. The board also does
+ * so from a JVM shutdown hook. The loop asks for real-time scheduling ({@link HapticLoop#setRealtimePriority},
+ * priority {@value #REALTIME_PRIORITY}) and runs at normal priority where that is not allowed.
+ */
+public final class HapticSession implements AutoCloseable {
+    /** The device id the session gives its device (the one of hAPI's examples). */
+    public static final byte DEVICE_ID = 5;
+    /** The real-time priority each loop asks for (Linux SCHED_FIFO; refused quietly where not allowed). */
+    public static final int REALTIME_PRIORITY = 50;
+    /** Window size used for the mapping without a PApplet, in pixels. */
+    static final int DEFAULT_WIDTH = 800;
+    static final int DEFAULT_HEIGHT = 600;
+
+    private final PApplet app;
+    private final HaplyPreset preset;
+    private final HaplyConnection connection;
+    private final Device device;
+    private final String boardStatus;
+    private final double[] box = new double[4];   // comfortable workspace: xmin, xmax, ymin, ymax (metres)
+    private final double homeX;                    // handle at open (metres)
+    private final double homeY;
+    private final double alpha;
+    private final double ox;
+    private final double oy;
+    private final int windowHeight;
+    private volatile boolean yUp;
+    private final double[] tmp = new double[2];
+
+    private volatile HapticLoop loop;
+    private volatile boolean mouseSeen;
+    private double viewScale = 1;
+    private double viewX;
+    private double viewY;
+    private boolean closed;
+    private HapticLoop telemetryOf;
+    private long telemetryAt;
+    private String telemetryText = "";
+
+    private HapticSession(PApplet app, HaplyPreset preset, HaplyConnection c, String fallbackReason) {
+        this.app = app;
+        this.preset = preset;
+        HaplyConnection conn = c;
+        Device dev;
+        String why = fallbackReason;
+        try {
+            dev = setUp(conn.board(), preset);
+        } catch (HaplyLinkException | IllegalStateException e) {
+            // a port that looked like a Haply but failed at set-up: use the emulator instead
+            conn.close();
+            why = "the board on " + conn.board().describe() + " did not answer (" + e.getMessage() + ")";
+            conn = HaplyConnection.emulated(preset, why);
+            dev = setUp(conn.board(), preset);
+        }
+        this.connection = conn;
+        this.device = dev;
+        this.boardStatus = conn.isEmulated()
+                ? "No Haply board found: emulated board, the mouse is your hand"
+                : "Haply board: " + conn.status();
+        workspaceOf(preset.newKinematics(), box);
+        PantographKinematics k = preset.newKinematics();
+        double hx = 0.5 * (box[0] + box[1]);
+        double hy = box[2];
+        if (firstReply(device) && k.forward(Math.toRadians(device.angle(1)), Math.toRadians(device.angle(2)))) {
+            hx = k.x();
+            hy = k.y();
+        }
+        homeX = hx;
+        homeY = hy;
+        int w = app != null && app.width > 0 ? app.width : DEFAULT_WIDTH;
+        int h = app != null && app.height > 0 ? app.height : DEFAULT_HEIGHT;
+        windowHeight = h;
+        alpha = 0.9 * Math.min(w / (box[1] - box[0]), h / (box[3] - box[2]));
+        ox = 0.5 * w + alpha * 0.5 * (box[0] + box[1]);     // x mirrored: model x = -alpha x + ox
+        oy = 0.5 * h - alpha * 0.5 * (box[2] + box[3]);
+        if (app != null) {
+            app.registerMethod("pre", this);
+            app.registerMethod("mouseEvent", this);
+            app.registerMethod("dispose", this);
+        }
+    }
+
+    /** Waits up to 200 ms for the reply to the request sent at set-up; true if it came. */
+    private static boolean firstReply(Device d) {
+        long deadline = System.nanoTime() + 200_000_000L;
+        while (true) {
+            if (d.poll_data()) {
+                return true;
+            }
+            if (System.nanoTime() - deadline > 0) {
+                return false;
+            }
+            java.util.concurrent.locks.LockSupport.parkNanos(1_000_000);
+        }
+    }
+
+    private static Device setUp(Board board, HaplyPreset preset) {
+        Device d = new Device(DEVICE_ID, board);
+        preset.configure(d);
+        d.device_set_parameters();
+        d.device_read_request();          // so that the handle's starting pose can be read
+        return d;
+    }
+
+    /**
+     * Opens a session on a 2018 Haply (the paper's device, {@link HaplyPreset#HAPLY_2018}): the first board
+     * found, or the emulator with the mouse as the hand. Call it in {@code setup()}, after {@code size()}.
+     *
+     * @param app the sketch ({@code this}); null for a JVM program (no mouse, no Processing hooks)
+     * @return the session, device set up, no loop yet
+     */
+    public static HapticSession open(PApplet app) {
+        return open(app, HaplyPreset.HAPLY_2018);
+    }
+
+    /**
+     * Opens a session on the given hardware: the first Haply board found, or else the emulator of that hardware
+     * with the mouse as the hand. A board that is found but fails at set-up also falls back to the emulator;
+     * {@link #status()} says so. (A board that stays silent stops the loop after
+     * its link timeout, and {@link #status()} says that too.)
+     *
+     * @param app    the sketch ({@code this}); null for a JVM program
+     * @param preset the hardware
+     * @return the session, device set up, no loop yet
+     */
+    public static HapticSession open(PApplet app, HaplyPreset preset) {
+        if (preset == null) {
+            throw new IllegalArgumentException("HapticSession.open: preset must not be null");
+        }
+        return new HapticSession(app, preset, HaplyConnection.open(preset), null);
+    }
+
+    /**
+     * Opens a session on the emulator even if a board is plugged in (for tests, or to try a sketch away from
+     * the device).
+     *
+     * @param app    the sketch ({@code this}); null for a JVM program
+     * @param preset the emulated hardware
+     * @return the session, device set up, no loop yet
+     */
+    public static HapticSession openEmulated(PApplet app, HaplyPreset preset) {
+        if (preset == null) {
+            throw new IllegalArgumentException("HapticSession.openEmulated: preset must not be null");
+        }
+        return new HapticSession(app, preset, HaplyConnection.emulated(preset, "emulated board (asked for)"), null);
+    }
+
+    /**
+     * Stops the current loop, if any (the board stays open, the motors get zero torque), and makes a new one
+     * on the model's avatar (a HapticInput3D), with the session's mapping and real-time request. It is not
+     * started: change its settings (rate, gains, mode) and call {@link HapticLoop#start()}.
+     *
+     * @param model  the model
+     * @param avatar the name of its HapticInput3D
+     * @return the new loop, not started
+     */
+    public HapticLoop attach(PhysicalModel model, String avatar) {
+        return attach(new PhysicalModelAvatar(model, avatar));
+    }
+
+    /**
+     * As {@link #attach(PhysicalModel, String)}, for any {@link AvatarLink}.
+     *
+     * @param avatar the avatar link
+     * @return the new loop, not started
+     */
+    public synchronized HapticLoop attach(AvatarLink avatar) {
+        if (closed) {
+            throw new IllegalStateException("HapticSession.attach: the session is closed");
+        }
+        HapticLoop old = loop;
+        if (old != null) {
+            old.stop();
+        }
+        HapticLoop l = new HapticLoop(device, preset.newKinematics(), avatar);
+        if (yUp) {
+            // model y = height - pixel y: a negative gain flips y, and x, which the mirror then no longer does
+            l.setPositionGain(-alpha);
+            l.setOrigin(ox, windowHeight - oy, 0);
+            l.setMirrorX(false);
+        } else {
+            l.setPositionGain(alpha);
+            l.setOrigin(ox, oy, 0);
+            l.setMirrorX(true);
+        }
+        l.setRealtimePriority(REALTIME_PRIORITY);
+        loop = l;
+        return l;
+    }
+
+    /** The current loop, or null before {@link #attach}. */
+    public HapticLoop loop() {
+        return loop;
+    }
+
+    /** The device (set up). */
+    public Device device() {
+        return device;
+    }
+
+    /** The hardware preset. */
+    public HaplyPreset preset() {
+        return preset;
+    }
+
+    /** True if the board is the emulator (no Haply found). */
+    public boolean isEmulated() {
+        return connection.isEmulated();
+    }
+
+    /** The emulator, or null on real hardware. */
+    public BoardEmulator emulator() {
+        return connection.emulator();
+    }
+
+    /**
+     * One line for the screen: which board (or that the mouse is the hand), and why the loop stopped if it
+     * stopped by itself.
+     */
+    public String status() {
+        HapticLoop l = loop;
+        String f = l == null ? null : l.failure();
+        return f == null ? boardStatus : boardStatus + ". Haptic loop stopped: " + f;
+    }
+
+    /**
+     * Where the handle was when the session opened, in model units under the session's mapping: a good
+     * starting position for the avatar ({@code mdl.addHapticInput3D("avatar", haptics.home(), 10)}).
+     */
+    public Vect3D home() {
+        return new Vect3D(-alpha * homeX + ox, modelY(alpha * homeY + oy), 0);
+    }
+
+    /**
+     * The comfortable workspace in model units under the session's mapping (x mirrored): writes xmin, xmax,
+     * ymin, ymax into out[0..3].
+     */
+    public void workspace(double[] out) {
+        double a = -alpha * box[1] + ox;
+        double b = -alpha * box[0] + ox;
+        out[0] = Math.min(a, b);
+        out[1] = Math.max(a, b);
+        double c = modelY(alpha * box[2] + oy);
+        double d = modelY(alpha * box[3] + oy);
+        out[2] = Math.min(c, d);
+        out[3] = Math.max(c, d);
+    }
+
+    private double modelY(double pixelY) {
+        return yUp ? windowHeight - pixelY : pixelY;
+    }
+
+    /**
+     * Chooses the model's y axis for the loops attached from now on: down the window, as Processing draws (false,
+     * the default: model units are pixels), or up (true: model y = window height - pixel y, as in a sketch that
+     * draws with {@code translate(0, height); scale(1, -1);}), for scenes with gravity and floors. Also changes
+     * {@link #home()}, {@link #workspace(double[])} and how the mouse is read.
+     */
+    public void setModelYUp(boolean up) {
+        yUp = up;
+    }
+
+    /** True if the model's y axis points up the window (see {@link #setModelYUp(boolean)}). */
+    public boolean isModelYUp() {
+        return yUp;
+    }
+
+    /** The position gain the session gives each loop: pixels (model units) per metre. */
+    public double positionGain() {
+        return alpha;
+    }
+
+    /**
+     * Tells the session how the sketch draws the model, so that the mouse lands on the avatar: a model point
+     * (x, y) is drawn at pixel (offsetX + scale x, offsetY + scale y), or (offsetX + scale x, window height -
+     * offsetY - scale y) when the model's y axis points up. Default: scale 1, offset 0 (model units are
+     * pixels).
+     */
+    public void setView(double scale, double offsetX, double offsetY) {
+        if (!(scale != 0) || !Double.isFinite(scale) || !Double.isFinite(offsetX) || !Double.isFinite(offsetY)) {
+            throw new IllegalArgumentException("HapticSession.setView: scale must be finite and non-zero and the "
+                    + "offsets finite, got " + scale + ", " + offsetX + ", " + offsetY);
+        }
+        viewScale = scale;
+        viewX = offsetX;
+        viewY = offsetY;
+    }
+
+    /**
+     * Moves the emulated hand towards a pixel of the window (through the view and the current loop's mapping,
+     * kept inside the workspace). Does nothing on real hardware or before {@link #attach}. {@link #pre()} calls
+     * it with the mouse.
+     */
+    public void handTowardsPixel(double px, double py) {
+        HapticLoop l = loop;
+        if (!connection.isEmulated() || l == null) {
+            return;
+        }
+        double my = yUp ? (windowHeight - py - viewY) / viewScale : (py - viewY) / viewScale;
+        l.modelToDevice((px - viewX) / viewScale, my, tmp);
+        double x = Math.max(box[0], Math.min(box[1], tmp[0]));
+        double y = Math.max(box[2], Math.min(box[3], tmp[1]));
+        connection.setHandTarget(x, y);
+    }
+
+    /**
+     * The force the hand felt at the last tick, in newtons, along the model's axes (as the current loop maps
+     * them), for drawing an arrow at the avatar: writes fx, fy into out[0], out[1]; zeros before
+     * {@link #attach}.
+     */
+    public void forceInModel(double[] out) {
+        HapticLoop l = loop;
+        if (l == null) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
+        l.deviceForce(out);
+        double gx = l.isMirrorX() ? -l.positionGain() : l.positionGain();
+        if (gx < 0) {
+            out[0] = -out[0];
+        }
+        if (l.positionGain() < 0) {
+            out[1] = -out[1];
+        }
+    }
+
+    /**
+     * A short line of telemetry for the screen ("1000 Hz, 0.02 % missed, jitter p99 40 us, real-time"),
+     * refreshed at most once a second (a telemetry snapshot copies the loop's window of 65,536 ticks, too
+     * much to do every frame).
+     */
+    public String telemetryLine() {
+        HapticLoop l = loop;
+        if (l == null) {
+            return "no haptic loop";
+        }
+        long now = System.nanoTime();
+        if (l != telemetryOf || now - telemetryAt > 1_000_000_000L) {
+            HapticTelemetry t = l.telemetry();
+            String sched = l.scheduling();
+            telemetryText = String.format(java.util.Locale.ROOT,
+                    "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
+                    100 * t.missedFraction(), t.jitterP99Us,
+                    sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
+            telemetryOf = l;
+            telemetryAt = now;
+        }
+        return telemetryText;
+    }
+
+    /** Processing calls this before each {@code draw()}: the emulated hand follows the mouse once it has moved. */
+    public void pre() {
+        if (app != null && mouseSeen) {
+            handTowardsPixel(app.mouseX, app.mouseY);
+        }
+    }
+
+    /** Processing calls this for mouse events: the first move or drag over the window hands the hand to the mouse. */
+    public void mouseEvent(MouseEvent e) {
+        int a = e.getAction();
+        if (a == MouseEvent.MOVE || a == MouseEvent.DRAG || a == MouseEvent.PRESS) {
+            mouseSeen = true;
+        }
+    }
+
+    /**
+     * Draws {@link #status()} in the bottom-left corner of the window, on a band that keeps it readable,
+     * whatever the sketch's transforms and styles (they are restored).
+     */
+    public void drawStatus() {
+        if (app == null) {
+            return;
+        }
+        String s = status();
+        app.pushMatrix();
+        app.pushStyle();
+        app.resetMatrix();
+        app.textSize(13);
+        app.textAlign(PApplet.LEFT, PApplet.BASELINE);
+        app.noStroke();
+        boolean trouble = loop != null && loop.failure() != null;
+        app.fill(trouble ? 0xE0A02020 : connection.isEmulated() ? 0xD0303848 : 0xD0205030);
+        app.rect(0, app.height - 24, Math.min(app.width, app.textWidth(s) + 20), 24);
+        app.fill(255);
+        app.text(s, 10, app.height - 8);
+        app.popStyle();
+        app.popMatrix();
+    }
+
+    /** Stops the loop and closes the board (zero torques, then a reset) and the emulator. */
+    @Override
+    public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        HapticLoop l = loop;
+        if (l != null) {
+            l.close();
+        }
+        connection.close();
+    }
+
+    /** Same as {@link #close()}; Processing calls it when the sketch ends. */
+    public void dispose() {
+        close();
+    }
+
+    /**
+     * The comfortable workspace of a pantograph: the widest rectangle, twice as wide as tall, centred between
+     * the motors, whose top edge is at the calibration pose's height, and whose every point on a 9 by 5 grid
+     * is within reach. Writes xmin, xmax, ymin, ymax (metres) into out.
+     */
+    static void workspaceOf(PantographKinematics k, double[] out) {
+        double reach = k.l() + k.bigL();
+        double xc = 0.5 * k.d();
+        double top = topOfWorkspace(k);
+        double lo = 0;
+        double hi = reach;
+        double[] th = new double[2];
+        for (int it = 0; it < 40; it++) {
+            double h = 0.5 * (lo + hi);
+            boolean ok = true;
+            for (int i = 0; i <= 8 && ok; i++) {
+                for (int j = 0; j <= 4 && ok; j++) {
+                    ok = k.inverse(xc - h + 2 * h * i / 8, top + h * j / 4, th);
+                }
+            }
+            if (ok) {
+                lo = h;
+            } else {
+                hi = h;
+            }
+        }
+        out[0] = xc - lo;
+        out[1] = xc + lo;
+        out[2] = top;
+        out[3] = top + lo;
+    }
+
+    /** The lowest y where the point between the motors is reachable with some margin, at least a tenth of l. */
+    private static double topOfWorkspace(PantographKinematics k) {
+        double[] th = new double[2];
+        double xc = 0.5 * k.d();
+        double y = 0.1 * k.l();
+        double step = 0.001;
+        while (y < k.l() + k.bigL() && !k.inverse(xc, y, th)) {
+            y += step;
+        }
+        // a little below the first reachable point, clear of the singular pose with the arms folded
+        return Math.max(y + 0.02 * (k.l() + k.bigL()), 0.5 * k.l());
+    }
+}
