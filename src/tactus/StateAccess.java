@@ -40,7 +40,7 @@ final class StateAccess {
 
     /** Moves a mass to a validated position with zero velocity; its links forget their previous distance. */
     void setPosition(int id, Vect3D pos) {
-        engine.setPosition(id, pos.x, pos.y, pos.z);
+        c.writes().setPosition(id, pos.x, pos.y, pos.z);
     }
 
     /** Sets the velocity (units per second) of an inertial mass, keeping its position. */
@@ -48,14 +48,14 @@ final class StateAccess {
         c.params.requireInertial(op, id);
         engine.position(id, tmp);
         UnitScale u = c.units();
-        engine.setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - u.velocityIn(vel.x),
+        c.writes().setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - u.velocityIn(vel.x),
                 tmp[1] - u.velocityIn(vel.y), tmp[2] - u.velocityIn(vel.z));
     }
 
     /** Adds a force (model units) to a mass for the next step only. */
     void addImpulse(int id, double fx, double fy, double fz) {
         UnitScale u = c.units();
-        engine.addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
+        c.writes().addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
     }
 
     /** Puts a free mass under velocity control at (vx, vy, vz) units per second. */
@@ -85,7 +85,7 @@ final class StateAccess {
 
     /** Sets the target that an input module follows through its EWMA. */
     void setInputTarget(int id, double x, double y, double z) {
-        engine.setInputTarget(id, x, y, z);
+        c.writes().setInputTarget(id, x, y, z);
     }
 
     /**
