@@ -180,6 +180,16 @@ final class Ownership {
         return s;
     }
 
+    /** @return the sequence number of the last command posted (for tests and measurements). */
+    long postedSeq() {
+        return posted;
+    }
+
+    /** @return the sequence number of the last command applied (for tests and measurements). */
+    long appliedSeq() {
+        return applied;
+    }
+
     /** @return true when the owner has not stepped for {@link #IDLE_NANOS} (or never has). */
     boolean ownerIdle() {
         return owner == null || System.nanoTime() - lastStep > IDLE_NANOS;
@@ -211,6 +221,18 @@ final class Ownership {
     /** The outermost lock entry of an editor: previous commands are applied first, then it prepares. */
     void beginEdit() {
         awaitAll();
+        preparer = Thread.currentThread();
+    }
+
+    /**
+     * The outermost lock entry of a parameter or state change: it prepares at once (its writes are absolute, or keep
+     * the value current when applied), except under THROW, where it first waits for earlier changes so that the
+     * values its undo restores are the applied ones.
+     */
+    void beginChange() {
+        if (core.guard.policy() == StabilityPolicy.THROW) {
+            awaitAll();
+        }
         preparer = Thread.currentThread();
     }
 

@@ -168,9 +168,8 @@ final class PaperQueries {
             for (int id : ids) {
                 LinkKind kind = engine.linkKind(id);
                 undo.add(c.subsets.snapshot(false, id));
-                c.writes().setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : engine.linkStiffness(id),
-                        kind.hasDamping() ? u.dampingIn(Z) : engine.linkDamping(id),
-                        kind.hasLength() ? dist : engine.linkLength(id));
+                c.writes().setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : Double.NaN,
+                        kind.hasDamping() ? u.dampingIn(Z) : Double.NaN, kind.hasLength() ? dist : Double.NaN);
             }
         } finally {
             c.guard.resume();

@@ -69,8 +69,8 @@ final class ParamEditor {
             Check.finite(op, n, "Z", Z);
         }
         double oldK = engine.oscStiffness(id), oldZ = engine.oscDamping(id);
-        c.writes().setOscillator(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
-                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z));
+        c.writes().setOscillator(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z));
         c.guard.afterChange(() -> engine.setOscillator(id, oldK, oldZ));
     }
 
@@ -118,8 +118,8 @@ final class ParamEditor {
             checkLength(op, n, kind, len);
         }
         double oldK = engine.linkStiffness(id), oldZ = engine.linkDamping(id), oldL = engine.linkLength(id);
-        c.writes().setLinkParams(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
-                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z), Double.isNaN(len) ? oldL : len);
+        c.writes().setLinkParams(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z), len);
         c.guard.afterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
     }
 

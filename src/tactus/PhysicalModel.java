@@ -130,6 +130,27 @@ public class PhysicalModel {
         }
     }
 
+    /**
+     * Takes the lock for a parameter or state change. While the model is stepped in realtime, the change is prepared
+     * without waiting for earlier queued changes to be applied (under THROW it does wait, so that its undo is
+     * exact): a run of setters returns at once, in order.
+     */
+    void enterChange() {
+        Ownership o = core.own;
+        if (o != null && o.isOwnerThread()) {
+            return;
+        }
+        lock.lock();
+        if (o != null && lock.getHoldCount() == 1) {
+            try {
+                o.beginChange();
+            } catch (RuntimeException | Error e) {
+                lock.unlock();
+                throw e;
+            }
+        }
+    }
+
     /** Takes the lock and checks, under it, that a handle's module is still part of the model. */
     void enter(Module handle) {
         enter();
@@ -517,7 +538,7 @@ public class PhysicalModel {
      */
     public void setGravity(double magnitude) {
         Check.finite("setGravity", "gravity", "magnitude", magnitude);
-        enter();
+        enterChange();
         try {
             core.time.setGravity(magnitude);
         } finally {
@@ -541,7 +562,7 @@ public class PhysicalModel {
         if (direction.x == 0 && direction.y == 0 && direction.z == 0) {
             throw Check.fail("setGravityDirection", "gravity", "direction must not be the zero vector");
         }
-        enter();
+        enterChange();
         try {
             core.time.setGravityDirection(direction.x, direction.y, direction.z);
         } finally {
@@ -570,7 +591,7 @@ public class PhysicalModel {
     /** Sets the air friction applied to every moving mass (REAL_UNITS: N·s/m), &ge; 0 in normal use. */
     public void setFriction(double f) {
         Check.finite("setFriction", "friction", "friction", f);
-        enter();
+        enterChange();
         try {
             double old = core.time.friction();
             core.time.setFriction(f);
@@ -672,7 +693,7 @@ public class PhysicalModel {
 
     /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
     public void tuneOsc(String name, double freqHz, double t60) {
-        enter();
+        enterChange();
         try {
             OscTuning.tune(core, "tuneOsc", core.dir.massId("tuneOsc", name), freqHz, t60);
         } finally {
@@ -1078,7 +1099,7 @@ public class PhysicalModel {
      */
     public void setMatPosition(String name, Vect3D pos) {
         Check.vector("setMatPosition", name, "pos", pos);
-        enter();
+        enterChange();
         try {
             core.state.setPosition(core.dir.massId("setMatPosition", name), pos);
         } finally {
@@ -1088,7 +1109,7 @@ public class PhysicalModel {
 
     /** Moves the mass at an index to a position with zero velocity (see {@link #setMatPosition}). */
     public void setMatPosAt(int i, Vect3D pos) {
-        enter();
+        enterChange();
         try {
             int id = core.dir.massAt("setMatPosAt", i);
             Check.vector("setMatPosAt", core.dir.massName(id), "pos", pos);
@@ -1101,7 +1122,7 @@ public class PhysicalModel {
     /** Sets the velocity of a mass, in units per second, keeping its position. */
     public void setMatVelocity(String name, Vect3D vel) {
         Check.vector("setMatVelocity", name, "vel", vel);
-        enter();
+        enterChange();
         try {
             core.state.setVelocity("setMatVelocity", core.dir.massId("setMatVelocity", name), vel);
         } finally {
@@ -1112,7 +1133,7 @@ public class PhysicalModel {
     /** Adds a force to a mass for the next step only (REAL_UNITS: N). */
     public void triggerForceImpulse(String name, double fx, double fy, double fz) {
         checkForce("triggerForceImpulse", name, fx, fy, fz);
-        enter();
+        enterChange();
         try {
             core.state.addImpulse(core.dir.massId("triggerForceImpulse", name), fx, fy, fz);
         } finally {
@@ -1123,7 +1144,7 @@ public class PhysicalModel {
     /** Adds a force to the mass at an index for the next step only. */
     public void triggerForceImpulse(int i, double fx, double fy, double fz) {
         checkForce("triggerForceImpulse", String.valueOf(i), fx, fy, fz);
-        enter();
+        enterChange();
         try {
             core.state.addImpulse(core.dir.massAt("triggerForceImpulse", i), fx, fy, fz);
         } finally {
@@ -1344,7 +1365,7 @@ public class PhysicalModel {
     /** Sets the inertia of every mass whose name contains {@code tag} (a substring match). */
     public void setMatParamsForName(String tag, double mass) {
         Check.name("setMatParamsForName", tag);
-        enter();
+        enterChange();
         try {
             core.paper.setMassForName("setMatParamsForName", tag, mass);
         } finally {
@@ -1361,7 +1382,7 @@ public class PhysicalModel {
         Check.finite("setLinkParamsForName", tag, "K", K);
         Check.finite("setLinkParamsForName", tag, "Z", Z);
         Check.finite("setLinkParamsForName", tag, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
         } finally {
@@ -1376,7 +1397,7 @@ public class PhysicalModel {
     public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
         Check.vector("changeDistXBetweenSubset", subset, "center", center);
         Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
         } finally {
@@ -1455,7 +1476,7 @@ public class PhysicalModel {
 
     /** Sets the inertia of a mass, finite and &gt; 0. */
     public void setMatMass(String name, double mass) {
-        enter();
+        enterChange();
         try {
             core.params.setMass("setMatMass", core.dir.massId("setMatMass", name), mass);
         } finally {
@@ -1465,7 +1486,7 @@ public class PhysicalModel {
 
     /** Sets the inertia of the mass at an index. */
     public void setMatMassAt(int i, double mass) {
-        enter();
+        enterChange();
         try {
             core.params.setMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
         } finally {
@@ -1476,7 +1497,7 @@ public class PhysicalModel {
     /** Sets the internal stiffness of an oscillator (REAL_UNITS: N/m); its coefficients update at once. */
     public void setMatStiffness(String name, double K) {
         Check.finite("setMatStiffness", name, "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatStiffness", core.dir.massId("setMatStiffness", name), K, Double.NaN);
         } finally {
@@ -1487,7 +1508,7 @@ public class PhysicalModel {
     /** Sets the internal stiffness of the oscillator at an index. */
     public void setMatStiffnessAt(int i, double K) {
         Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatStiffnessAt", core.dir.massAt("setMatStiffnessAt", i), K, Double.NaN);
         } finally {
@@ -1498,7 +1519,7 @@ public class PhysicalModel {
     /** Sets the internal damping of an oscillator (REAL_UNITS: N·s/m). */
     public void setMatDamping(String name, double Z) {
         Check.finite("setMatDamping", name, "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatDamping", core.dir.massId("setMatDamping", name), Double.NaN, Z);
         } finally {
@@ -1509,7 +1530,7 @@ public class PhysicalModel {
     /** Sets the internal damping of the oscillator at an index. */
     public void setMatDampingAt(int i, double Z) {
         Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatDampingAt", core.dir.massAt("setMatDampingAt", i), Double.NaN, Z);
         } finally {
@@ -1662,7 +1683,7 @@ public class PhysicalModel {
     /** Sets the stiffness of an interaction. */
     public void setLinkStiffness(String name, double K) {
         Check.finite("setLinkStiffness", name, "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkStiffness", core.dir.linkId("setLinkStiffness", name), K, Double.NaN,
                     Double.NaN);
@@ -1674,7 +1695,7 @@ public class PhysicalModel {
     /** Sets the stiffness of the interaction at an index. */
     public void setLinkStiffnessAt(int i, double K) {
         Check.finite("setLinkStiffnessAt", String.valueOf(i), "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkStiffnessAt", core.dir.linkAt("setLinkStiffnessAt", i), K, Double.NaN,
                     Double.NaN);
@@ -1686,7 +1707,7 @@ public class PhysicalModel {
     /** Sets the damping of an interaction. */
     public void setLinkDamping(String name, double Z) {
         Check.finite("setLinkDamping", name, "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDamping", core.dir.linkId("setLinkDamping", name), Double.NaN, Z,
                     Double.NaN);
@@ -1698,7 +1719,7 @@ public class PhysicalModel {
     /** Sets the damping of the interaction at an index. */
     public void setLinkDampingAt(int i, double Z) {
         Check.finite("setLinkDampingAt", String.valueOf(i), "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDampingAt", core.dir.linkAt("setLinkDampingAt", i), Double.NaN, Z,
                     Double.NaN);
@@ -1710,7 +1731,7 @@ public class PhysicalModel {
     /** Sets the length parameter (rest length, threshold, radius, offset or limit) of an interaction. */
     public void setLinkDRest(String name, double d) {
         Check.finite("setLinkDRest", name, "d", d);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDRest", core.dir.linkId("setLinkDRest", name), Double.NaN, Double.NaN, d);
         } finally {
@@ -1721,7 +1742,7 @@ public class PhysicalModel {
     /** Sets the length parameter of the interaction at an index. */
     public void setLinkDRestAt(int i, double d) {
         Check.finite("setLinkDRestAt", String.valueOf(i), "d", d);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDRestAt", core.dir.linkAt("setLinkDRestAt", i), Double.NaN, Double.NaN, d);
         } finally {
@@ -1734,7 +1755,7 @@ public class PhysicalModel {
         Check.finite("setLinkParams", name, "K", K);
         Check.finite("setLinkParams", name, "Z", Z);
         Check.finite("setLinkParams", name, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkParams", core.dir.linkId("setLinkParams", name), K, Z, dist);
         } finally {
@@ -1747,7 +1768,7 @@ public class PhysicalModel {
     /** Sets the device position that a HapticInput3D (or PosInput3D) follows through its EWMA. */
     public void setHapticPosition(String name, Vect3D pos) {
         Check.vector("setHapticPosition", name, "pos", pos);
-        enter();
+        enterChange();
         try {
             int id = core.dir.massId("setHapticPosition", name);
             core.state.requireInput("setHapticPosition", id);
@@ -1932,7 +1953,7 @@ public class PhysicalModel {
      * "dist". Every member is checked before any is changed, so an error leaves the model unchanged.
      */
     public void changeParamOfSubset(double value, String subset, String param) {
-        enter();
+        enterChange();
         try {
             core.subsets.changeParam("changeParamOfSubset", value, subset, param);
         } finally {

@@ -46,10 +46,8 @@ final class StateAccess {
     /** Sets the velocity (units per second) of an inertial mass, keeping its position. */
     void setVelocity(String op, int id, Vect3D vel) {
         c.params.requireInertial(op, id);
-        engine.position(id, tmp);
         UnitScale u = c.units();
-        c.writes().setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - u.velocityIn(vel.x),
-                tmp[1] - u.velocityIn(vel.y), tmp[2] - u.velocityIn(vel.z));
+        c.writes().setVelocity(id, u.velocityIn(vel.x), u.velocityIn(vel.y), u.velocityIn(vel.z));
     }
 
     /** Adds a force (model units) to a mass for the next step only. */

@@ -10,7 +10,8 @@ import tactus.engine.Engine;
  */
 final class WriteBatch extends Command implements EngineWrites {
     private static final int MASS = 0, OSC = 1, LINK = 2, PLANE = 3, ATTR = 4, POS = 5, STATE = 6, FORCE = 7,
-            TARGET = 8, MEDIUM = 9;
+            TARGET = 8, MEDIUM = 9, VELOCITY = 10;
+    private final double[] tmp = new double[3];
     private int[] ops = new int[4];
     private int[] ids = new int[4];
     private double[] v = new double[24];
@@ -71,6 +72,10 @@ final class WriteBatch extends Command implements EngineWrites {
         put3(at + 3, px, py, pz);
     }
 
+    public void setVelocity(int id, double dx, double dy, double dz) {
+        put3(add(VELOCITY, id), dx, dy, dz);
+    }
+
     public void addForce(int id, double fx, double fy, double fz) {
         put3(add(FORCE, id), fx, fy, fz);
     }
@@ -83,6 +88,10 @@ final class WriteBatch extends Command implements EngineWrites {
         int at = add(MEDIUM, -1);
         put3(at, gx, gy, gz);
         v[at + 3] = friction;
+    }
+
+    private static double keep(double value, double current) {
+        return Double.isNaN(value) ? current : value;
     }
 
     private void put3(int at, double a, double b, double c) {
@@ -102,10 +111,15 @@ final class WriteBatch extends Command implements EngineWrites {
                     e.setMass(id, v[at]);
                     break;
                 case OSC:
-                    e.setOscillator(id, v[at], v[at + 1]);
+                    e.setOscillator(id, keep(v[at], e.oscStiffness(id)), keep(v[at + 1], e.oscDamping(id)));
                     break;
                 case LINK:
-                    e.setLinkParams(id, v[at], v[at + 1], v[at + 2]);
+                    e.setLinkParams(id, keep(v[at], e.linkStiffness(id)), keep(v[at + 1], e.linkDamping(id)),
+                            keep(v[at + 2], e.linkLength(id)));
+                    break;
+                case VELOCITY:
+                    e.position(id, tmp);
+                    e.setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - v[at], tmp[1] - v[at + 1], tmp[2] - v[at + 2]);
                     break;
                 case PLANE:
                     e.setPlanePosition(id, v[at]);
