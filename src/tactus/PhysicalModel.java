@@ -238,6 +238,32 @@ public class PhysicalModel {
         }
     }
 
+    /**
+     * Queues the start of a controller's ramp when the model is stepped in realtime by another thread.
+     *
+     * @return false when the caller should start the ramp itself (no realtime stepping, or it is the owner)
+     */
+    boolean postRamp(ParamController pc, float target, long steps, Vect3D center) {
+        Ownership o = core.own;
+        if (o == null || o.isOwnerThread()) {
+            return false;
+        }
+        enterChange();
+        try {
+            RampTargets t = RampTargets.resolve(core, pc.getSubsetName(), pc.getParamName(), pc.lastTarget(), target,
+                    center);
+            core.own.post(new Command() {
+                @Override
+                void apply(ModelCore c) {
+                    pc.startRamp(target, steps, t);
+                }
+            });
+        } finally {
+            exit();
+        }
+        return true;
+    }
+
     /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
     public boolean isRealtimeStepping() {
         return core.own != null;

@@ -19,7 +19,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the stepping thread takes no lock, other threads'
- * changes are queued and applied between two stepping calls, in order, each exactly once; the result is bit for bit
+ * changes (parameters, subsets, the medium, positions, velocities, impulses, controller ramps) are queued and applied
+ * between two stepping calls, in order, each exactly once; the result is bit for bit
  * the one of applying the same changes synchronously at the same step; and the stepping thread neither waits nor
  * allocates while changes arrive.
  */
@@ -48,6 +49,12 @@ class RealtimeSteppingTest {
         // gravity and friction stay on: switching either on or off changes the step plan (a recompilation)
         pm.setGravity(1e-6);
         pm.setFriction(1e-6);
+        pm.createLinkSubset("tail");
+        for (int i = 15; i <= MASSES; i++) {
+            pm.addLinkToSubset("s" + i, "tail");
+        }
+        pm.addParamController("ramp", "tail", "stiffness", 0.005f);
+        pm.getParamController("ramp").init(0.1f);
         pm.init();
         return pm;
     }
@@ -58,7 +65,7 @@ class RealtimeSteppingTest {
         List<Consumer<PhysicalModel>> list = new ArrayList<>();
         for (int i = 0; i < count; i++) {
             double v = r.nextDouble();
-            switch (r.nextInt(12)) {
+            switch (r.nextInt(13)) {
                 case 0: list.add(pm -> pm.setLinkStiffness("s3", 0.05 + 0.1 * v)); break;
                 case 1: list.add(pm -> pm.setLinkDamping("s3", 0.0005 + 0.001 * v)); break;
                 case 2: list.add(pm -> pm.setMatMass("m5", 0.8 + 0.4 * v)); break;
@@ -70,7 +77,8 @@ class RealtimeSteppingTest {
                 case 8: list.add(pm -> pm.triggerForceImpulse("m9", 0, 0.01 * v, 0)); break;
                 case 9: list.add(pm -> pm.setLinkParamsForName("s1", 0.05 + 0.1 * v, 0.001, 1)); break;
                 case 10: list.add(pm -> pm.setMatStiffness("osc", 0.02 + 0.05 * v)); break;
-                default: list.add(pm -> pm.setLinkDRest("s12", 0.9 + 0.2 * v)); break;
+                case 11: list.add(pm -> pm.setLinkDRest("s12", 0.9 + 0.2 * v)); break;
+                default: list.add(pm -> pm.getParamController("ramp").triggerRamp((float) (0.05 + 0.1 * v))); break;
             }
         }
         return list;
