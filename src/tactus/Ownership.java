@@ -54,6 +54,10 @@ final class Ownership {
     boolean inRamp;
     private final Analyzer analyzer;
     private volatile boolean closed;
+    /** Sequence number of the last command that changed parameters or structure: what a reader must wait for. */
+    private volatile long lastParamSeq;
+    /** Avatar forces for readers on other threads. */
+    final ForceTaps taps = new ForceTaps();
 
     Ownership(ModelCore core) {
         this.core = core;
@@ -142,6 +146,9 @@ final class Ownership {
     }
 
     void endStep() {
+        if (!taps.isEmpty()) {
+            taps.collect(core.engine);
+        }
         gate.set(FREE);
     }
 
@@ -175,6 +182,9 @@ final class Ownership {
         long s = posted + 1;
         c.seq = s;
         posted = s;
+        if (!(c instanceof WriteBatch) || ((WriteBatch) c).changesParameters()) {
+            lastParamSeq = s;
+        }
         Command prev = tail.getAndSet(c);
         prev.next = c;
         return s;
@@ -218,9 +228,13 @@ final class Ownership {
         awaitApplied(posted);
     }
 
-    /** The outermost lock entry of an editor: previous commands are applied first, then it prepares. */
+    /**
+     * The outermost lock entry of an editor: earlier changes of parameters or structure are applied first (so that
+     * getters see them), then it prepares. Queued state pokes (avatar targets, impulses, positions) are not waited
+     * for: the state moves every step anyway.
+     */
     void beginEdit() {
-        awaitAll();
+        awaitApplied(lastParamSeq);
         preparer = Thread.currentThread();
     }
 

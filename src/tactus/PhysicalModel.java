@@ -1819,11 +1819,14 @@ public class PhysicalModel {
     public Vect3D getHapticForce(String name, Vect3D out) {
         Ownership o = core.own;
         if (o != null && !o.isOwnerThread()) {
-            return structural(() -> {
+            enter();
+            try {
                 int id = core.dir.massId("getHapticForce", name);
                 core.state.requireInput("getHapticForce", id);
-                return core.state.takeForce(id, out);
-            });
+                return core.state.takeTappedForce(o.taps.tap(id), out);
+            } finally {
+                exit();
+            }
         }
         enter();
         try {

@@ -99,6 +99,13 @@ final class StateAccess {
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
     }
 
+    /** {@link #takeForce} for a reader on another thread of a realtime-stepped model (see {@link ForceTaps}). */
+    Vect3D takeTappedForce(ForceTaps.Tap tap, Vect3D out) {
+        c.own.taps.take(engine, tap, tmp);
+        UnitScale u = c.units();
+        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
+    }
+
     double kineticEnergy() {
         return c.units().forceOut(EnergyMeter.kinetic(engine.plan()));
     }

@@ -17,6 +17,16 @@ final class WriteBatch extends Command implements EngineWrites {
     private double[] v = new double[24];
     private int n;
 
+    /** @return true when the batch changes a parameter or the medium (not only the state). */
+    boolean changesParameters() {
+        for (int i = 0; i < n; i++) {
+            if (ops[i] <= ATTR || ops[i] == MEDIUM) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     boolean isEmpty() {
         return n == 0;
     }

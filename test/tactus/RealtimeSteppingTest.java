@@ -53,6 +53,8 @@ class RealtimeSteppingTest {
         for (int i = 15; i <= MASSES; i++) {
             pm.addLinkToSubset("s" + i, "tail");
         }
+        pm.addHapticInput3D("avatar", new Vect3D(5, 0.5, 0), 30);
+        pm.addContact3D("touch", 1, 0.05, 0.001, "avatar", "m4");
         pm.addParamController("ramp", "tail", "stiffness", 0.005f);
         pm.getParamController("ramp").init(0.1f);
         pm.init();
@@ -345,5 +347,55 @@ class RealtimeSteppingTest {
         }
         assertTrue(someRoundClean, "no round without allocation: " + java.util.Arrays.toString(bytes));
         pm.endRealtimeStepping();
+    }
+
+    /**
+     * A haptic thread reads the avatar's force about every millisecond while the owner steps: it never waits for the
+     * owner, and the sum of its reads is the force summed over every step, the same (to rounding) as one read of the
+     * same model stepped without realtime mode.
+     */
+    @Test
+    void avatarForceReadByAnotherThreadIsConserved() throws Exception {
+        PhysicalModel live = build();
+        live.beginRealtimeStepping();
+        final int calls = 1500;
+        AtomicBoolean done = new AtomicBoolean();
+        Thread owner = new Thread(() -> {
+            for (int i = 0; i < calls; i++) {
+                live.computeNSteps(64);
+                if ((i & 15) == 0) {
+                    LockSupport.parkNanos(100_000L);
+                }
+            }
+            done.set(true);
+        }, "test owner");
+        double[] sum = new double[3];
+        int reads = 0;
+        owner.start();
+        Vect3D f = new Vect3D();
+        while (!done.get()) {
+            live.getHapticForce("avatar", f);
+            sum[0] += f.x;
+            sum[1] += f.y;
+            sum[2] += f.z;
+            reads++;
+            LockSupport.parkNanos(1_000_000L);
+        }
+        owner.join(60_000);
+        live.getHapticForce("avatar", f);
+        sum[0] += f.x;
+        sum[1] += f.y;
+        sum[2] += f.z;
+        PhysicalModel ref = build();
+        for (int i = 0; i < calls; i++) {
+            ref.computeNSteps(64);
+        }
+        Vect3D total = ref.getHapticForce("avatar");
+        assertTrue(reads > 10, "reads: " + reads);
+        assertTrue(Math.abs(total.y) > 1e-3, "the contact pushes: " + total);
+        assertEquals(total.x, sum[0], 1e-9 * Math.abs(total.y) + 1e-12);
+        assertEquals(total.y, sum[1], 1e-9 * Math.abs(total.y));
+        assertEquals(total.z, sum[2], 1e-9 * Math.abs(total.y) + 1e-12);
+        live.endRealtimeStepping();
     }
 }
