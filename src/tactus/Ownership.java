@@ -344,7 +344,9 @@ final class Ownership {
 
     /**
      * Runs the stability analysis of changes posted under WARN on its own daemon thread (once for a burst of
-     * changes), so that the calls return as soon as they are queued. It takes the model's lock like any editor.
+     * changes), so that the calls return as soon as they are queued. It takes the model's lock like any editor, and
+     * rests three times as long as each analysis took, so that it never uses more than a quarter of a core (the
+     * audio thread needs the rest): a warning may come some tens of milliseconds after the change on a big model.
      */
     private final class Analyzer implements Runnable {
         private volatile boolean requested;
@@ -369,6 +371,7 @@ final class Ownership {
                     continue;
                 }
                 requested = false;
+                long t0 = System.nanoTime();
                 java.util.concurrent.locks.Lock lock = core.model.getLock();
                 lock.lock();
                 try {
@@ -381,6 +384,8 @@ final class Ownership {
                 } finally {
                     lock.unlock();
                 }
+                // at most a quarter of a core: changes arriving meanwhile are analysed together afterwards
+                LockSupport.parkNanos(3 * (System.nanoTime() - t0));
             }
         }
     }
