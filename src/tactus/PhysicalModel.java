@@ -21,7 +21,9 @@ import tactus.engine.MassKind;
  * called "col"): a call that addresses an interaction by a shared name acts on the first one added that is
  * still in the model.
  *
- * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once. Long stepping
+ * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once, except while the
+ * model is stepped in realtime ({@link #beginRealtimeStepping()}, which a {@code tactus.audio.PhyUGen} does): then
+ * the stepping thread takes no lock and other threads' changes are queued for it (docs/audio.md). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
  * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
@@ -78,7 +80,8 @@ public class PhysicalModel {
 
     /**
      * @return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
-     *     atomic with respect to other threads
+     *     atomic with respect to other threads (while the model is stepped in realtime, with respect to other
+     *     editors only: the stepping thread never takes it, and the changes made meanwhile are queued in order)
      */
     public Lock getLock() {
         return lock;
