@@ -65,13 +65,17 @@ final class Ownership {
         this.head = stub;
         this.tail = new AtomicReference<>(stub);
         this.analyzer = new Analyzer();
-        analyzer.start();
     }
 
     // ---------------------------------------------------------------- roles
 
     boolean isOwnerThread() {
         return owner == Thread.currentThread();
+    }
+
+    /** @return true when the current thread is applying queued commands (the owner, or an editor draining). */
+    boolean isApplying() {
+        return applier == Thread.currentThread();
     }
 
     /** @return where the current thread's engine writes go. */
@@ -339,7 +343,10 @@ final class Ownership {
             gate.set(FREE);
         }
         closed = true;
-        analyzer.request();
+        Thread t = analyzer.thread;
+        if (t != null) {
+            LockSupport.unpark(t);
+        }
     }
 
     /**
@@ -349,25 +356,49 @@ final class Ownership {
      * audio thread needs the rest): a warning may come some tens of milliseconds after the change on a big model.
      */
     private final class Analyzer implements Runnable {
+        /** How long the helper thread waits for work before it ends (a later change starts a new one). */
+        private static final long IDLE_EXIT_NANOS = 5_000_000_000L;
         private volatile boolean requested;
-        private final Thread thread = new Thread(this, "Tactus stability analysis");
+        private volatile Thread thread;
 
-        void start() {
-            thread.setDaemon(true);
-            thread.start();
-        }
-
-        /** Asks for an analysis; never blocks and never allocates (the owner may call it). */
+        /**
+         * Asks for an analysis. Never blocks and never allocates when the helper thread runs; an editor's request
+         * starts it if it is not running. A request from the stepping thread itself never starts it: its changes are
+         * then analysed with the next editor's.
+         */
         void request() {
             requested = true;
-            LockSupport.unpark(thread);
+            Thread t = thread;
+            if (t != null) {
+                LockSupport.unpark(t);
+            } else if (!isOwnerThread()) {
+                start();
+            }
+        }
+
+        private synchronized void start() {
+            if (thread == null && !closed) {
+                Thread t = new Thread(this, "Tactus stability analysis");
+                t.setDaemon(true);
+                thread = t;
+                t.start();
+            }
         }
 
         @Override
         public void run() {
+            long idleSince = System.nanoTime();
             while (!closed) {
                 if (!requested) {
-                    LockSupport.park(this);
+                    if (System.nanoTime() - idleSince > IDLE_EXIT_NANOS) {
+                        synchronized (this) {
+                            if (!requested) {
+                                thread = null;
+                                return;
+                            }
+                        }
+                    }
+                    LockSupport.parkNanos(this, IDLE_EXIT_NANOS / 4);
                     continue;
                 }
                 requested = false;
@@ -386,7 +417,9 @@ final class Ownership {
                 }
                 // at most a quarter of a core: changes arriving meanwhile are analysed together afterwards
                 LockSupport.parkNanos(3 * (System.nanoTime() - t0));
+                idleSince = System.nanoTime();
             }
+            thread = null;
         }
     }
 }

@@ -187,8 +187,8 @@ public class PhysicalModel {
         enter();
         try {
             Ownership o = core.own;
-            if (o == null || o.isOwnerThread()) {
-                return body.get();
+            if (o == null || o.isOwnerThread() || o.isApplying()) {
+                return body.get(); // not realtime, or already on the thread that applies changes
             }
             return o.run(body);
         } finally {

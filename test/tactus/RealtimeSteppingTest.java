@@ -398,4 +398,36 @@ class RealtimeSteppingTest {
         assertEquals(total.z, sum[2], 1e-9 * Math.abs(total.y) + 1e-12);
         live.endRealtimeStepping();
     }
+
+    /**
+     * Realtime stepping begun before the model is built (as a PhyUGen subclass does in its constructor): with no
+     * owner stepping yet, every change (including a structural call made from inside another, addOsc3DTuned) is
+     * applied at once by the calling thread, and the model steps like one built without realtime mode.
+     */
+    @Test
+    void buildingWithNoOwnerYetAppliesEverythingAtOnce() {
+        org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(20), () -> {
+            PhysicalModel plain = new PhysicalModel(44100, 60);
+            PhysicalModel rt = new PhysicalModel(44100, 60);
+            rt.beginRealtimeStepping();
+            for (PhysicalModel pm : new PhysicalModel[] {plain, rt}) {
+                pm.addGround3D("g", new Vect3D(0, 0, 0));
+                pm.addOsc3DTuned("o", 1, 440, 0.5, new Vect3D(1, 0.1, 0), new Vect3D());
+                pm.addMass3D("m", 1, new Vect3D(2, 0, 0), new Vect3D());
+                pm.addSpringDamper3D("s", 1, 0.05, 0.001, "o", "m");
+                pm.createLinkSubset("all");
+                pm.addLinkToSubset("s", "all");
+                pm.init();
+                pm.changeStiffnessParamOfSubset(0.04, "all");
+                assertEquals(0.04, pm.getLinkStiffness("s"));
+            }
+            assertEquals(plain.getOscFrequency("o"), rt.getOscFrequency("o"));
+            plain.computeNSteps(1000);
+            rt.computeNSteps(1000);
+            assertEquals(plain.getMatPosition("m").y, rt.getMatPosition("m").y);
+            assertEquals(plain.getMatPosition("o").y, rt.getMatPosition("o").y);
+            rt.endRealtimeStepping();
+            assertTrue(!rt.isRealtimeStepping());
+        });
+    }
 }
