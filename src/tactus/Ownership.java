@@ -352,7 +352,7 @@ final class Ownership {
     /**
      * Runs the stability analysis of changes posted under WARN on its own daemon thread (once for a burst of
      * changes), so that the calls return as soon as they are queued. It takes the model's lock like any editor, and
-     * rests three times as long as each analysis took, so that it never uses more than a quarter of a core (the
+     * rests seven times as long as each analysis took (however many requests arrive meanwhile), so that it never uses more than an eighth of a core (the
      * audio thread needs the rest): a warning may come some tens of milliseconds after the change on a big model.
      */
     private final class Analyzer implements Runnable {
@@ -415,8 +415,12 @@ final class Ownership {
                 } finally {
                     lock.unlock();
                 }
-                // at most a quarter of a core: changes arriving meanwhile are analysed together afterwards
-                LockSupport.parkNanos(3 * (System.nanoTime() - t0));
+                // at most an eighth of a core: changes arriving meanwhile are analysed together afterwards (a loop,
+                // since each request unparks this thread)
+                long until = System.nanoTime() + 7 * (System.nanoTime() - t0);
+                for (long now = System.nanoTime(); now < until && !closed; now = System.nanoTime()) {
+                    LockSupport.parkNanos(this, until - now);
+                }
                 idleSince = System.nanoTime();
             }
             thread = null;

@@ -22,6 +22,7 @@ import tactus.Vect3D;
 public final class AudioBench {
     private static final int RATE = 44100;
     private static boolean quick;
+    private static tactus.StabilityPolicy editPolicy = tactus.StabilityPolicy.WARN;
 
     private AudioBench() {
     }
@@ -111,8 +112,9 @@ public final class AudioBench {
             // audio buffers while draw (60 fps), haptics (1 kHz) and an editor (a change every 3 ms) run
             int n = args.length > 1 ? Integer.parseInt(args[1]) : 1000;
             double seconds = args.length > 2 ? Double.parseDouble(args[2]) : 6;
+            editPolicy = args.length > 3 ? tactus.StabilityPolicy.valueOf(args[3]) : tactus.StabilityPolicy.WARN;
             System.out.println("## Per-buffer time, " + n + "-mass string with avatar; draw 60 fps, haptic 1 kHz, a "
-                    + "parameter change every 3 ms (StabilityPolicy.WARN)");
+                    + "parameter change every 3 ms (StabilityPolicy." + editPolicy + ")");
             System.out.println("| audio path | buffer frames | period ms | buffers | p50 ms | p99.9 ms | max ms | "
                     + "buffers over their period | changes made |");
             System.out.println("|---|---|---|---|---|---|---|---|---|");
@@ -308,6 +310,7 @@ public final class AudioBench {
      */
     private static void editingRun(int n, int bs, boolean realtime, double seconds) throws Exception {
         PhysicalModel pm = string(n, true);
+        pm.setStabilityPolicy(editPolicy);
         AvatarExchange ex = new AvatarExchange();
         PhyUGen u = null;
         if (realtime) {
