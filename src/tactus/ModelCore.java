@@ -25,7 +25,11 @@ final class ModelCore {
     /** Parameter controllers by name, in creation order (see {@link ParamController}). */
     private final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
     /** The same controllers as an array, so that the stepping path checks them without allocating an iterator. */
-    private ParamController[] controllerArray = new ParamController[0];
+    private volatile ParamController[] controllerArray = new ParamController[0];
+    /** Engine writes that go straight to the engine. */
+    final EngineWrites direct = EngineWrites.direct(engine);
+    /** The realtime-stepping mode, or null (see {@link PhysicalModel#beginRealtimeStepping()}). */
+    volatile Ownership own;
     /** True once init() has run: from then on topology edits compile at once, on the editing thread. */
     boolean initialized;
 
@@ -40,6 +44,22 @@ final class ModelCore {
         this.state = new StateAccess(this);
         this.snapshots = new SnapshotWriter(this);
         this.paper = new PaperQueries(this);
+        this.time.core = this;
+    }
+
+    /**
+     * @return where the current thread's parameter and state writes go: the engine, or the batch an editor of a
+     *     realtime-stepped model is preparing
+     */
+    EngineWrites writes() {
+        Ownership o = own;
+        return o == null ? direct : o.writes(direct);
+    }
+
+    /** Enters or leaves the realtime-stepping mode (under the model's lock). */
+    void setOwnership(Ownership o) {
+        own = o;
+        guard.own = o;
     }
 
     /** Adds or replaces a named parameter controller. */
@@ -70,6 +90,10 @@ final class ModelCore {
 
     /** Advances every running ramp by one step, with the stability check deferred to the end of the batch. */
     void advanceRamps() {
+        Ownership o = own;
+        if (o != null) {
+            o.inRamp = true;
+        }
         guard.defer();
         try {
             for (ParamController pc : controllerArray) {
@@ -77,6 +101,9 @@ final class ModelCore {
             }
         } finally {
             guard.resume();
+            if (o != null) {
+                o.inRamp = false;
+            }
         }
     }
 

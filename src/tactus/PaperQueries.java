@@ -168,9 +168,8 @@ final class PaperQueries {
             for (int id : ids) {
                 LinkKind kind = engine.linkKind(id);
                 undo.add(c.subsets.snapshot(false, id));
-                engine.setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : engine.linkStiffness(id),
-                        kind.hasDamping() ? u.dampingIn(Z) : engine.linkDamping(id),
-                        kind.hasLength() ? dist : engine.linkLength(id));
+                c.writes().setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : Double.NaN,
+                        kind.hasDamping() ? u.dampingIn(Z) : Double.NaN, kind.hasLength() ? dist : Double.NaN);
             }
         } finally {
             c.guard.resume();
@@ -186,7 +185,7 @@ final class PaperQueries {
         int[] ids = c.subsets.memberIds(c.subsets.requireMatSubset(op, subset));
         int n = ids.length;
         for (int k = 0; k < n; k++) {
-            engine.setPosition(ids[k], center.x + d * (k - (n - 1) / 2.0), center.y, center.z);
+            c.writes().setPosition(ids[k], center.x + d * (k - (n - 1) / 2.0), center.y, center.z);
         }
     }
 }

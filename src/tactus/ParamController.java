@@ -19,6 +19,8 @@ public class ParamController extends AbstractController {
     private long step;
     private long rampSteps;
     private Vect3D center;
+    /** The resolved members while a ramp started by a realtime stepping thread runs (else null). */
+    private RampTargets targets;
 
     /**
      * Creates a controller; the model normally does this ({@link PhysicalModel#addParamController}).
@@ -50,7 +52,14 @@ public class ParamController extends AbstractController {
             throw new IllegalArgumentException("triggerRamp(\"" + subsetName + "\"): the target must be finite, got "
                     + target);
         }
-        rampSteps = Math.max(1, Math.round((double) rampTime * pm.getSimRate()));
+        long steps = Math.max(1, Math.round((double) rampTime * pm.getSimRate()));
+        if ("distX".equals(param) && center == null) {
+            center = pm.getBarycenterOfSubset(subsetName);
+        }
+        if (pm.postRamp(this, target, steps, center)) {
+            return; // realtime stepping: the stepping thread starts the ramp between two steps
+        }
+        rampSteps = steps;
         setParam("vmin", 0);
         setParam("vmax", rampSteps);
         setParam("min", previous);
@@ -58,6 +67,25 @@ public class ParamController extends AbstractController {
         previous = target;
         step = 0;
         ramping = true;
+    }
+
+    /**
+     * Starts a ramp from the last target to {@code target} over {@code steps} steps without allocating: what
+     * {@link #triggerRamp(float)} does on the thread that steps a realtime-stepped model.
+     */
+    void startRamp(float target, long steps, RampTargets resolved) {
+        targets = resolved;
+        rampSteps = steps;
+        a = (target - previous) / (float) steps;
+        b = target - a * steps;
+        previous = target;
+        step = 0;
+        ramping = true;
+    }
+
+    /** @return the target of the last ramp (or the initial value): where the next ramp starts. */
+    float lastTarget() {
+        return previous;
     }
 
     /** @return true while a ramp is running. */
@@ -78,6 +106,11 @@ public class ParamController extends AbstractController {
     }
 
     private void apply(float value) {
+        RampTargets t = targets;
+        if (t != null && pm.core.own != null && pm.core.own.isOwnerThread()) {
+            t.apply(pm.core, value);
+            return;
+        }
         if ("distX".equals(param)) {
             if (center == null) {
                 center = pm.getBarycenterOfSubset(subsetName);

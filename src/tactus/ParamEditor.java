@@ -44,7 +44,7 @@ final class ParamEditor {
         requireInertial(op, id);
         Check.positive(op, c.dir.massName(id), "mass", mass);
         double old = engine.mass(id);
-        engine.setMass(id, mass);
+        c.writes().setMass(id, mass);
         c.guard.afterChange(() -> engine.setMass(id, old));
     }
 
@@ -69,8 +69,8 @@ final class ParamEditor {
             Check.finite(op, n, "Z", Z);
         }
         double oldK = engine.oscStiffness(id), oldZ = engine.oscDamping(id);
-        engine.setOscillator(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
-                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z));
+        c.writes().setOscillator(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z));
         c.guard.afterChange(() -> engine.setOscillator(id, oldK, oldZ));
     }
 
@@ -118,8 +118,8 @@ final class ParamEditor {
             checkLength(op, n, kind, len);
         }
         double oldK = engine.linkStiffness(id), oldZ = engine.linkDamping(id), oldL = engine.linkLength(id);
-        engine.setLinkParams(id, Double.isNaN(K) ? oldK : c.units().stiffnessIn(K),
-                Double.isNaN(Z) ? oldZ : c.units().dampingIn(Z), Double.isNaN(len) ? oldL : len);
+        c.writes().setLinkParams(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
+                Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z), len);
         c.guard.afterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
     }
 
@@ -144,7 +144,7 @@ final class ParamEditor {
         requireKind(op, id, LinkKind.PLANE_CONTACT3D);
         Check.finite(op, c.dir.linkName(id), "pos", pos);
         double old = engine.planePosition(id);
-        engine.setPlanePosition(id, pos);
+        c.writes().setPlanePosition(id, pos);
         c.guard.afterChange(() -> engine.setPlanePosition(id, old));
     }
 
@@ -158,7 +158,7 @@ final class ParamEditor {
         requireKind(op, id, LinkKind.ATTRACTOR3D);
         Check.finite(op, c.dir.linkName(id), "attr", attr);
         double old = engine.attraction(id);
-        engine.setAttraction(id, c.units().forceIn(attr));
+        c.writes().setAttraction(id, c.units().forceIn(attr));
         c.guard.afterChange(() -> engine.setAttraction(id, old));
     }
 

@@ -21,7 +21,9 @@ import tactus.engine.MassKind;
  * called "col"): a call that addresses an interaction by a shared name acts on the first one added that is
  * still in the model.
  *
- * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once. Long stepping
+ * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once, except while the
+ * model is stepped in realtime ({@link #beginRealtimeStepping()}, which a {@code tactus.audio.PhyUGen} does): then
+ * the stepping thread takes no lock and other threads' changes are queued for it (docs/audio.md). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
  * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
@@ -78,7 +80,8 @@ public class PhysicalModel {
 
     /**
      * @return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
-     *     atomic with respect to other threads
+     *     atomic with respect to other threads (while the model is stepped in realtime, with respect to other
+     *     editors only: the stepping thread never takes it, and the changes made meanwhile are queued in order)
      */
     public Lock getLock() {
         return lock;
@@ -102,31 +105,205 @@ public class PhysicalModel {
         if (system == null) {
             throw new IllegalArgumentException("setParamSystem: the unit system must not be null");
         }
+        structuralDo(() -> {
+            core.time.setParamSystem(system);
+        });
+    }
+
+    // =================================================================== locking, for the facade and its handles
+
+    /**
+     * Takes the lock. While the model is stepped in realtime ({@link #beginRealtimeStepping()}), the stepping thread
+     * takes nothing, and another thread's outermost entry first waits until the changes it queued earlier are
+     * applied, then prepares its own change (see {@link Ownership}).
+     */
+    void enter() {
+        Ownership o = core.own;
+        if (o != null && o.isOwnerThread()) {
+            return;
+        }
+        lock.lock();
+        if (o != null && lock.getHoldCount() == 1) {
+            try {
+                o.beginEdit();
+            } catch (RuntimeException | Error e) {
+                lock.unlock();
+                throw e;
+            }
+        }
+    }
+
+    /**
+     * Takes the lock for a parameter or state change. While the model is stepped in realtime, the change is prepared
+     * without waiting for earlier queued changes to be applied (under THROW it does wait, so that its undo is
+     * exact): a run of setters returns at once, in order.
+     */
+    void enterChange() {
+        Ownership o = core.own;
+        if (o != null && o.isOwnerThread()) {
+            return;
+        }
+        lock.lock();
+        if (o != null && lock.getHoldCount() == 1) {
+            try {
+                o.beginChange();
+            } catch (RuntimeException | Error e) {
+                lock.unlock();
+                throw e;
+            }
+        }
+    }
+
+    /** Takes the lock and checks, under it, that a handle's module is still part of the model. */
+    void enter(Module handle) {
+        enter();
+        if (!handle.isValid()) {
+            exit();
+            handle.checkValid();
+        }
+    }
+
+    /** Leaves the lock; an editor of a realtime-stepped model posts the change it prepared (see {@link #enter()}). */
+    void exit() {
+        if (!lock.isHeldByCurrentThread()) {
+            return; // the realtime stepping thread, which took nothing
+        }
+        try {
+            Ownership o = core.own;
+            if (o != null && lock.getHoldCount() == 1) {
+                o.endEdit();
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Runs a structural change (modules, subsets, groups, rates, divergence settings): under the lock, or, while the
+     * model is stepped in realtime, as a command the stepping thread runs between two steps while this thread waits
+     * (its stability analysis then runs here).
+     */
+    private <T> T structural(java.util.function.Supplier<T> body) {
         enter();
         try {
-            core.time.setParamSystem(system);
+            Ownership o = core.own;
+            if (o == null || o.isOwnerThread() || o.isApplying()) {
+                return body.get(); // not realtime, or already on the thread that applies changes
+            }
+            return o.run(body);
         } finally {
             exit();
         }
     }
 
-    // =================================================================== locking, for the facade and its handles
-
-    void enter() {
-        lock.lock();
+    private void structuralDo(Runnable body) {
+        structural(() -> {
+            body.run();
+            return null;
+        });
     }
 
-    /** Takes the lock and checks, under it, that a handle's module is still part of the model. */
-    void enter(Module handle) {
-        lock.lock();
-        if (!handle.isValid()) {
-            lock.unlock();
-            handle.checkValid();
+    // =================================================================== realtime stepping
+
+    /**
+     * Hands the model to one realtime stepping thread (an audio thread): from now on the thread that steps the model
+     * ({@link #computeStep()}, {@link #computeNSteps(int)}, {@link #draw_physics()}) is its owner. The owner never
+     * takes the model's lock, so it never waits for another thread. Every other thread's change is validated,
+     * converted and (for parameters) prepared on that thread, queued, and applied by the owner between two steps.
+     * {@link tactus.audio.PhyUGen} calls this; see docs/audio.md for which calls are queued and when they apply.
+     * Calling it again does nothing.
+     */
+    public void beginRealtimeStepping() {
+        enter();
+        try {
+            if (core.own == null) {
+                core.setOwnership(new Ownership(core));
+            }
+        } finally {
+            exit();
         }
     }
 
-    void exit() {
-        lock.unlock();
+    /**
+     * Ends realtime stepping: waits for the owner's current step, applies what is still queued, and returns to the
+     * locked mode. Call it once the owner no longer steps the model.
+     */
+    public void endRealtimeStepping() {
+        enter();
+        try {
+            Ownership o = core.own;
+            if (o != null) {
+                o.close();
+                core.setOwnership(null);
+            }
+        } finally {
+            exit();
+        }
+    }
+
+    /**
+     * Queues the start of a controller's ramp when the model is stepped in realtime by another thread.
+     *
+     * @return false when the caller should start the ramp itself (no realtime stepping, or it is the owner)
+     */
+    boolean postRamp(ParamController pc, float target, long steps, Vect3D center) {
+        Ownership o = core.own;
+        if (o == null || o.isOwnerThread()) {
+            return false;
+        }
+        enterChange();
+        try {
+            RampTargets t = RampTargets.resolve(core, pc.getSubsetName(), pc.getParamName(), pc.lastTarget(), target,
+                    center);
+            core.own.post(new Command() {
+                @Override
+                void apply(ModelCore c) {
+                    pc.startRamp(target, steps, t);
+                }
+            });
+        } finally {
+            exit();
+        }
+        return true;
+    }
+
+    /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
+    public boolean isRealtimeStepping() {
+        return core.own != null;
+    }
+
+    /**
+     * One stepping call of a realtime-stepped model, on the calling thread (which becomes the owner): applies the
+     * queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
+     *
+     * @return the number of steps run (0 when the call had to be skipped, see {@link Ownership#beginStep()})
+     */
+    private int stepOwned(Ownership o, int n) {
+        if (!o.beginStep()) {
+            return 0;
+        }
+        try {
+            int done = 0;
+            while (done < n) {
+                boolean ramping = core.ramping();
+                int ran;
+                if (ramping) {
+                    core.advanceRamps();
+                    ran = core.engine.step(1);
+                } else {
+                    ran = core.engine.step(n - done);
+                }
+                core.snapshots.afterSteps(ran);
+                done += ran;
+                if (ran == 0) {
+                    break;
+                }
+            }
+            core.watch.check();
+            return done;
+        } finally {
+            o.endStep();
+        }
     }
 
     // =================================================================== rates and stepping
@@ -153,12 +330,9 @@ public class PhysicalModel {
         if (rate <= 0) {
             throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
         }
-        enter();
-        try {
+        structuralDo(() -> {
             core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** @return the display rate, in frames per second. */
@@ -176,12 +350,9 @@ public class PhysicalModel {
         if (rate <= 0) {
             throw new IllegalArgumentException("setDisplayRate: the rate must be > 0 Hz, got " + rate);
         }
-        enter();
-        try {
+        structuralDo(() -> {
             core.time.setDisplayRate(rate);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /**
@@ -189,15 +360,12 @@ public class PhysicalModel {
      * it once after building; from then on every topology change is compiled at once, by the thread making it.
      */
     public void init() {
-        enter();
-        try {
+        structuralDo(() -> {
             core.engine.compile();
             core.initialized = true;
             core.guard.arm();
             core.snapshots.publish();
-        } finally {
-            exit();
-        }
+        });
     }
 
     /**
@@ -207,6 +375,12 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
+        Ownership o = core.own;
+        if (o != null) {
+            int n = structural(() -> core.time.stepsForFrame());
+            stepOwned(o, n);
+            return n;
+        }
         enter();
         try {
             int n = core.time.stepsForFrame();
@@ -220,6 +394,11 @@ public class PhysicalModel {
 
     /** Runs one simulation step. */
     public void computeStep() {
+        Ownership o = core.own;
+        if (o != null) {
+            stepOwned(o, 1);
+            return;
+        }
         enter();
         try {
             if (core.ramping()) {
@@ -237,6 +416,11 @@ public class PhysicalModel {
     public void computeNSteps(int n) {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
+        }
+        Ownership o = core.own;
+        if (o != null) {
+            stepOwned(o, n);
+            return;
         }
         enter();
         try {
@@ -311,13 +495,10 @@ public class PhysicalModel {
         if (threads < 1 || threads > 64) {
             throw new IllegalArgumentException("setThreads: the thread count must be in 1..64, got " + threads);
         }
-        enter();
-        try {
+        structuralDo(() -> {
             core.engine.setThreads(threads);
             core.topology.compileIfRunning();
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** @return the number of threads large models may use. */
@@ -359,12 +540,9 @@ public class PhysicalModel {
      * steps on the calling thread. Worker threads also stop by themselves once the model is no longer reachable.
      */
     public void dispose() {
-        enter();
-        try {
+        structuralDo(() -> {
             core.engine.close();
-        } finally {
-            exit();
-        }
+        });
     }
 
     /**
@@ -389,7 +567,7 @@ public class PhysicalModel {
      */
     public void setGravity(double magnitude) {
         Check.finite("setGravity", "gravity", "magnitude", magnitude);
-        enter();
+        enterChange();
         try {
             core.time.setGravity(magnitude);
         } finally {
@@ -413,7 +591,7 @@ public class PhysicalModel {
         if (direction.x == 0 && direction.y == 0 && direction.z == 0) {
             throw Check.fail("setGravityDirection", "gravity", "direction must not be the zero vector");
         }
-        enter();
+        enterChange();
         try {
             core.time.setGravityDirection(direction.x, direction.y, direction.z);
         } finally {
@@ -442,7 +620,7 @@ public class PhysicalModel {
     /** Sets the air friction applied to every moving mass (REAL_UNITS: N·s/m), &ge; 0 in normal use. */
     public void setFriction(double f) {
         Check.finite("setFriction", "friction", "friction", f);
-        enter();
+        enterChange();
         try {
             double old = core.time.friction();
             core.time.setFriction(f);
@@ -536,18 +714,15 @@ public class PhysicalModel {
 
     private Mass addTunedOsc(String op, MassKind kind, String name, double mass, double freqHz, double t60,
                              Vect3D pos, Vect3D vel) {
-        enter();
-        try {
+        return structural(() -> {
             double[] kz = OscTuning.coefficients(core, op, name, mass, freqHz, t60);
             return addMass(op, kind, name, mass, pos, vel, kz[0], kz[1], 1);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
     public void tuneOsc(String name, double freqHz, double t60) {
-        enter();
+        enterChange();
         try {
             OscTuning.tune(core, "tuneOsc", core.dir.massId("tuneOsc", name), freqHz, t60);
         } finally {
@@ -596,12 +771,9 @@ public class PhysicalModel {
     private Mass addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
                          double K, double Z, int smoothing) {
         ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
-        enter();
-        try {
+        return structural(() -> {
             return core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
-        } finally {
-            exit();
-        }
+        });
     }
 
     // =================================================================== adding interactions
@@ -710,14 +882,11 @@ public class PhysicalModel {
     private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2,
                                 double K, double Z, double len, double aux, int axis) {
         ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
-        enter();
-        try {
+        return structural(() -> {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
             return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
-        } finally {
-            exit();
-        }
+        });
     }
 
     private String nameOf(Mass m) {
@@ -959,7 +1128,7 @@ public class PhysicalModel {
      */
     public void setMatPosition(String name, Vect3D pos) {
         Check.vector("setMatPosition", name, "pos", pos);
-        enter();
+        enterChange();
         try {
             core.state.setPosition(core.dir.massId("setMatPosition", name), pos);
         } finally {
@@ -969,7 +1138,7 @@ public class PhysicalModel {
 
     /** Moves the mass at an index to a position with zero velocity (see {@link #setMatPosition}). */
     public void setMatPosAt(int i, Vect3D pos) {
-        enter();
+        enterChange();
         try {
             int id = core.dir.massAt("setMatPosAt", i);
             Check.vector("setMatPosAt", core.dir.massName(id), "pos", pos);
@@ -982,7 +1151,7 @@ public class PhysicalModel {
     /** Sets the velocity of a mass, in units per second, keeping its position. */
     public void setMatVelocity(String name, Vect3D vel) {
         Check.vector("setMatVelocity", name, "vel", vel);
-        enter();
+        enterChange();
         try {
             core.state.setVelocity("setMatVelocity", core.dir.massId("setMatVelocity", name), vel);
         } finally {
@@ -993,7 +1162,7 @@ public class PhysicalModel {
     /** Adds a force to a mass for the next step only (REAL_UNITS: N). */
     public void triggerForceImpulse(String name, double fx, double fy, double fz) {
         checkForce("triggerForceImpulse", name, fx, fy, fz);
-        enter();
+        enterChange();
         try {
             core.state.addImpulse(core.dir.massId("triggerForceImpulse", name), fx, fy, fz);
         } finally {
@@ -1004,7 +1173,7 @@ public class PhysicalModel {
     /** Adds a force to the mass at an index for the next step only. */
     public void triggerForceImpulse(int i, double fx, double fy, double fz) {
         checkForce("triggerForceImpulse", String.valueOf(i), fx, fy, fz);
-        enter();
+        enterChange();
         try {
             core.state.addImpulse(core.dir.massAt("triggerForceImpulse", i), fx, fy, fz);
         } finally {
@@ -1020,45 +1189,33 @@ public class PhysicalModel {
      */
     public void triggerVelocityControl(String name, double vx, double vy, double vz) {
         checkForce("triggerVelocityControl", name, vx, vy, vz);
-        enter();
-        try {
+        structuralDo(() -> {
             core.state.driveVelocity("triggerVelocityControl", core.dir.massId("triggerVelocityControl", name), vx,
                     vy, vz);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Puts the mass at an index under velocity control (see {@link #triggerVelocityControl(String, double, double, double)}). */
     public void triggerVelocityControl(int i, double vx, double vy, double vz) {
         checkForce("triggerVelocityControl", String.valueOf(i), vx, vy, vz);
-        enter();
-        try {
+        structuralDo(() -> {
             core.state.driveVelocity("triggerVelocityControl", core.dir.massAt("triggerVelocityControl", i), vx, vy,
                     vz);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Ends the velocity control of a mass: it keeps moving at the velocity it had, and feels forces again. */
     public void stopVelocityControl(String name) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.state.stopDriving(core.dir.massId("stopVelocityControl", name));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Ends the velocity control of the mass at an index. */
     public void stopVelocityControl(int i) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.state.stopDriving(core.dir.massAt("stopVelocityControl", i));
-        } finally {
-            exit();
-        }
+        });
     }
 
     static void checkForce(String op, String element, double fx, double fy, double fz) {
@@ -1237,7 +1394,7 @@ public class PhysicalModel {
     /** Sets the inertia of every mass whose name contains {@code tag} (a substring match). */
     public void setMatParamsForName(String tag, double mass) {
         Check.name("setMatParamsForName", tag);
-        enter();
+        enterChange();
         try {
             core.paper.setMassForName("setMatParamsForName", tag, mass);
         } finally {
@@ -1254,7 +1411,7 @@ public class PhysicalModel {
         Check.finite("setLinkParamsForName", tag, "K", K);
         Check.finite("setLinkParamsForName", tag, "Z", Z);
         Check.finite("setLinkParamsForName", tag, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
         } finally {
@@ -1269,7 +1426,7 @@ public class PhysicalModel {
     public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
         Check.vector("changeDistXBetweenSubset", subset, "center", center);
         Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
         } finally {
@@ -1348,7 +1505,7 @@ public class PhysicalModel {
 
     /** Sets the inertia of a mass, finite and &gt; 0. */
     public void setMatMass(String name, double mass) {
-        enter();
+        enterChange();
         try {
             core.params.setMass("setMatMass", core.dir.massId("setMatMass", name), mass);
         } finally {
@@ -1358,7 +1515,7 @@ public class PhysicalModel {
 
     /** Sets the inertia of the mass at an index. */
     public void setMatMassAt(int i, double mass) {
-        enter();
+        enterChange();
         try {
             core.params.setMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
         } finally {
@@ -1369,7 +1526,7 @@ public class PhysicalModel {
     /** Sets the internal stiffness of an oscillator (REAL_UNITS: N/m); its coefficients update at once. */
     public void setMatStiffness(String name, double K) {
         Check.finite("setMatStiffness", name, "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatStiffness", core.dir.massId("setMatStiffness", name), K, Double.NaN);
         } finally {
@@ -1380,7 +1537,7 @@ public class PhysicalModel {
     /** Sets the internal stiffness of the oscillator at an index. */
     public void setMatStiffnessAt(int i, double K) {
         Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatStiffnessAt", core.dir.massAt("setMatStiffnessAt", i), K, Double.NaN);
         } finally {
@@ -1391,7 +1548,7 @@ public class PhysicalModel {
     /** Sets the internal damping of an oscillator (REAL_UNITS: N·s/m). */
     public void setMatDamping(String name, double Z) {
         Check.finite("setMatDamping", name, "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatDamping", core.dir.massId("setMatDamping", name), Double.NaN, Z);
         } finally {
@@ -1402,7 +1559,7 @@ public class PhysicalModel {
     /** Sets the internal damping of the oscillator at an index. */
     public void setMatDampingAt(int i, double Z) {
         Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setOsc("setMatDampingAt", core.dir.massAt("setMatDampingAt", i), Double.NaN, Z);
         } finally {
@@ -1555,7 +1712,7 @@ public class PhysicalModel {
     /** Sets the stiffness of an interaction. */
     public void setLinkStiffness(String name, double K) {
         Check.finite("setLinkStiffness", name, "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkStiffness", core.dir.linkId("setLinkStiffness", name), K, Double.NaN,
                     Double.NaN);
@@ -1567,7 +1724,7 @@ public class PhysicalModel {
     /** Sets the stiffness of the interaction at an index. */
     public void setLinkStiffnessAt(int i, double K) {
         Check.finite("setLinkStiffnessAt", String.valueOf(i), "K", K);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkStiffnessAt", core.dir.linkAt("setLinkStiffnessAt", i), K, Double.NaN,
                     Double.NaN);
@@ -1579,7 +1736,7 @@ public class PhysicalModel {
     /** Sets the damping of an interaction. */
     public void setLinkDamping(String name, double Z) {
         Check.finite("setLinkDamping", name, "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDamping", core.dir.linkId("setLinkDamping", name), Double.NaN, Z,
                     Double.NaN);
@@ -1591,7 +1748,7 @@ public class PhysicalModel {
     /** Sets the damping of the interaction at an index. */
     public void setLinkDampingAt(int i, double Z) {
         Check.finite("setLinkDampingAt", String.valueOf(i), "Z", Z);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDampingAt", core.dir.linkAt("setLinkDampingAt", i), Double.NaN, Z,
                     Double.NaN);
@@ -1603,7 +1760,7 @@ public class PhysicalModel {
     /** Sets the length parameter (rest length, threshold, radius, offset or limit) of an interaction. */
     public void setLinkDRest(String name, double d) {
         Check.finite("setLinkDRest", name, "d", d);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDRest", core.dir.linkId("setLinkDRest", name), Double.NaN, Double.NaN, d);
         } finally {
@@ -1614,7 +1771,7 @@ public class PhysicalModel {
     /** Sets the length parameter of the interaction at an index. */
     public void setLinkDRestAt(int i, double d) {
         Check.finite("setLinkDRestAt", String.valueOf(i), "d", d);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkDRestAt", core.dir.linkAt("setLinkDRestAt", i), Double.NaN, Double.NaN, d);
         } finally {
@@ -1627,7 +1784,7 @@ public class PhysicalModel {
         Check.finite("setLinkParams", name, "K", K);
         Check.finite("setLinkParams", name, "Z", Z);
         Check.finite("setLinkParams", name, "dist", dist);
-        enter();
+        enterChange();
         try {
             core.params.setLink("setLinkParams", core.dir.linkId("setLinkParams", name), K, Z, dist);
         } finally {
@@ -1640,7 +1797,7 @@ public class PhysicalModel {
     /** Sets the device position that a HapticInput3D (or PosInput3D) follows through its EWMA. */
     public void setHapticPosition(String name, Vect3D pos) {
         Check.vector("setHapticPosition", name, "pos", pos);
-        enter();
+        enterChange();
         try {
             int id = core.dir.massId("setHapticPosition", name);
             core.state.requireInput("setHapticPosition", id);
@@ -1663,6 +1820,17 @@ public class PhysicalModel {
      * (see {@link #getHapticForce(String)}) and returns it.
      */
     public Vect3D getHapticForce(String name, Vect3D out) {
+        Ownership o = core.own;
+        if (o != null && !o.isOwnerThread()) {
+            enter();
+            try {
+                int id = core.dir.massId("getHapticForce", name);
+                core.state.requireInput("getHapticForce", id);
+                return core.state.takeTappedForce(o.taps.tap(id), out);
+            } finally {
+                exit();
+            }
+        }
         enter();
         try {
             int id = core.dir.massId("getHapticForce", name);
@@ -1677,42 +1845,30 @@ public class PhysicalModel {
 
     /** Removes an interaction (the first one with this name). */
     public void removeLink(String name) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.topology.removeLink(core.dir.linkId("removeLink", name));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes the interaction at an index. */
     public void removeLink(int i) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.topology.removeLink(core.dir.linkAt("removeLink", i));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes a mass and every interaction connected to it. */
     public void removeMatAndConnectedLinks(String name) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.topology.removeMass(core.dir.massId("removeMatAndConnectedLinks", name));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes the mass at an index and every interaction connected to it. */
     public void removeMatAndConnectedLinks(int i) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.topology.removeMass(core.dir.massAt("removeMatAndConnectedLinks", i));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /**
@@ -1722,22 +1878,16 @@ public class PhysicalModel {
      * @return the handle of the new fixed point
      */
     public Ground3D changeToFixedPoint(String name) {
-        enter();
-        try {
+        return structural(() -> {
             return core.topology.makeFixed(core.dir.massId("changeToFixedPoint", name));
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes every mass, interaction, subset and contact group; names become free again, and a diverged model may run again. */
     public void clearModel() {
-        enter();
-        try {
+        structuralDo(() -> {
             core.topology.clear();
-        } finally {
-            exit();
-        }
+        });
     }
 
     // =================================================================== subsets
@@ -1745,83 +1895,59 @@ public class PhysicalModel {
     /** Creates an empty named group of masses, for grouped parameter changes. */
     public void createMatSubset(String subset) {
         Check.name("createMatSubset", subset);
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.createMatSubset(subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Creates an empty named group of interactions. */
     public void createLinkSubset(String subset) {
         Check.name("createLinkSubset", subset);
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.createLinkSubset(subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Adds a mass to a mass subset. */
     public void addMatToSubset(String mass, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massId("addMatToSubset", mass), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Adds the mass at an index to a mass subset. */
     public void addMatToSubset(int i, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massAt("addMatToSubset", i), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Adds an interaction (the first one with this name) to a link subset. */
     public void addLinkToSubset(String link, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkId("addLinkToSubset", link), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Adds the interaction at an index to a link subset. */
     public void addLinkToSubset(int i, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkAt("addLinkToSubset", i), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes a mass from a mass subset. */
     public void removeMatFromSubset(String mass, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.removeMat("removeMatFromSubset", core.dir.massId("removeMatFromSubset", mass), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Removes an interaction from a link subset. */
     public void removeLinkFromSubset(String link, String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.removeLink("removeLinkFromSubset", core.dir.linkId("removeLinkFromSubset", link), subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** @return the names of the members of a mass or link subset, in the order they were added. */
@@ -1859,7 +1985,7 @@ public class PhysicalModel {
      * "dist". Every member is checked before any is changed, so an error leaves the model unchanged.
      */
     public void changeParamOfSubset(double value, String subset, String param) {
-        enter();
+        enterChange();
         try {
             core.subsets.changeParam("changeParamOfSubset", value, subset, param);
         } finally {
@@ -1911,23 +2037,17 @@ public class PhysicalModel {
      */
     public void addContactGroup(String subset, double threshold, double K, double Z) {
         checkGroupArgs("addContactGroup", subset, threshold, K, Z);
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.addContactGroup("addContactGroup", subset, threshold, K, Z);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Changes the threshold, stiffness and damping of a subset's contact group. */
     public void setContactGroupParams(String subset, double threshold, double K, double Z) {
         checkGroupArgs("setContactGroupParams", subset, threshold, K, Z);
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.setContactGroupParams("setContactGroupParams", subset, threshold, K, Z);
-        } finally {
-            exit();
-        }
+        });
     }
 
     private static void checkGroupArgs(String op, String subset, double threshold, double K, double Z) {
@@ -1938,12 +2058,9 @@ public class PhysicalModel {
 
     /** Removes a subset's contact group (the subset itself stays). */
     public void removeContactGroup(String subset) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.subsets.removeContactGroup("removeContactGroup", subset);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** @return true when the mass subset has a contact group. */
@@ -2025,12 +2142,9 @@ public class PhysicalModel {
      * {@link DivergenceException} but notify it once per divergence. Pass null to go back to exceptions.
      */
     public void setDivergenceListener(DivergenceListener listener) {
-        enter();
-        try {
+        structuralDo(() -> {
             core.watch.setListener(listener);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Sets how often (in steps, &ge; 1, default 64) the running model is checked for divergence. */
@@ -2039,23 +2153,17 @@ public class PhysicalModel {
             throw new IllegalArgumentException("setDivergenceCheckInterval: the interval must be >= 1 step, got "
                     + steps);
         }
-        enter();
-        try {
+        structuralDo(() -> {
             core.engine.setDivergenceCheckInterval(steps);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** Sets the largest coordinate magnitude still considered sane (default 1e12 model length units). */
     public void setDivergenceLimit(double limit) {
         Check.positive("setDivergenceLimit", "limit", "limit", limit);
-        enter();
-        try {
+        structuralDo(() -> {
             core.engine.guard().setLimit(limit);
-        } finally {
-            exit();
-        }
+        });
     }
 
     /** @return true when the model has diverged and is frozen. */
@@ -2070,12 +2178,9 @@ public class PhysicalModel {
 
     /** Lets a diverged model step again; repair its state first (positions, parameters). */
     public void clearDivergence() {
-        enter();
-        try {
+        structuralDo(() -> {
             core.watch.clear();
-        } finally {
-            exit();
-        }
+        });
     }
 
     // =================================================================== energy

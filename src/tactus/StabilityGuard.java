@@ -20,6 +20,8 @@ final class StabilityGuard {
     private boolean armed;
     private int deferred;
     private String lastWarning;
+    /** The realtime-stepping mode of the model, or null. */
+    volatile Ownership own;
 
     StabilityGuard(Engine engine, Directory dir, Timebase time, SubsetBook subsets) {
         this.engine = engine;
@@ -54,11 +56,17 @@ final class StabilityGuard {
 
     /** Suspends the check until the matching {@link #resume()}: for changes made as one batch. */
     void defer() {
-        deferred++;
+        Ownership o = own;
+        if (o == null || !o.ignoresDeferral()) {
+            deferred++;
+        }
     }
 
     void resume() {
-        deferred--;
+        Ownership o = own;
+        if (o == null || !o.ignoresDeferral()) {
+            deferred--;
+        }
     }
 
     /**
@@ -66,7 +74,19 @@ final class StabilityGuard {
      * null for a check of the model as built) and an exception is thrown.
      */
     void afterChange(Runnable undo) {
-        if (!armed || policy == StabilityPolicy.OFF || deferred > 0) {
+        Ownership o = own;
+        if (o != null && o.interceptCheck(undo)) {
+            return; // realtime stepping: collected for the editor, analysed later, or a ramp step
+        }
+        if (deferred > 0) {
+            return;
+        }
+        check(undo);
+    }
+
+    /** Analyses the model now (whatever the deferral); under THROW an unstable model is undone and refused. */
+    void check(Runnable undo) {
+        if (!armed || policy == StabilityPolicy.OFF) {
             return;
         }
         tactus.engine.StabilityReport r = analyze();

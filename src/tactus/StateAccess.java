@@ -40,22 +40,20 @@ final class StateAccess {
 
     /** Moves a mass to a validated position with zero velocity; its links forget their previous distance. */
     void setPosition(int id, Vect3D pos) {
-        engine.setPosition(id, pos.x, pos.y, pos.z);
+        c.writes().setPosition(id, pos.x, pos.y, pos.z);
     }
 
     /** Sets the velocity (units per second) of an inertial mass, keeping its position. */
     void setVelocity(String op, int id, Vect3D vel) {
         c.params.requireInertial(op, id);
-        engine.position(id, tmp);
         UnitScale u = c.units();
-        engine.setState(id, tmp[0], tmp[1], tmp[2], tmp[0] - u.velocityIn(vel.x),
-                tmp[1] - u.velocityIn(vel.y), tmp[2] - u.velocityIn(vel.z));
+        c.writes().setVelocity(id, u.velocityIn(vel.x), u.velocityIn(vel.y), u.velocityIn(vel.z));
     }
 
     /** Adds a force (model units) to a mass for the next step only. */
     void addImpulse(int id, double fx, double fy, double fz) {
         UnitScale u = c.units();
-        engine.addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
+        c.writes().addForce(id, u.forceIn(fx), u.forceIn(fy), u.forceIn(fz));
     }
 
     /** Puts a free mass under velocity control at (vx, vy, vz) units per second. */
@@ -85,7 +83,7 @@ final class StateAccess {
 
     /** Sets the target that an input module follows through its EWMA. */
     void setInputTarget(int id, double x, double y, double z) {
-        engine.setInputTarget(id, x, y, z);
+        c.writes().setInputTarget(id, x, y, z);
     }
 
     /**
@@ -97,6 +95,13 @@ final class StateAccess {
         if (engine.massKind(id) == MassKind.POS_INPUT3D) {
             return out.set(0, 0, 0);
         }
+        UnitScale u = c.units();
+        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
+    }
+
+    /** {@link #takeForce} for a reader on another thread of a realtime-stepped model (see {@link ForceTaps}). */
+    Vect3D takeTappedForce(ForceTaps.Tap tap, Vect3D out) {
+        c.own.taps.take(engine, tap, tmp);
         UnitScale u = c.units();
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
     }

@@ -177,6 +177,13 @@ final class SubsetBook {
                 : "damping".equals(param) ? u.dampingOut(engine.linkDamping(id)) : engine.linkLength(id);
     }
 
+    /** Checks that {@code value} suits parameter {@code param} of every given member (see {@link #changeParam}). */
+    void checkAll(String op, boolean isMat, int[] ids, String param, double value) {
+        for (int id : ids) {
+            checkMember(op, isMat, id, param, value);
+        }
+    }
+
     private void checkMember(String op, boolean isMat, int id, String param, double value) {
         if (isMat) {
             MassKind k = engine.massKind(id);

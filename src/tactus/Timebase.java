@@ -20,6 +20,8 @@ final class Timebase {
     private double gravity;
     private final Vect3D gravityDir = new Vect3D(0, 0, 1);
     private double friction;
+    /** The model's rooms (set once by ModelCore), for the engine writes of the medium. */
+    ModelCore core;
 
     Timebase(Engine engine, Directory dir, paramSystem system, int simRate, int dispRate) {
         this.engine = engine;
@@ -174,7 +176,7 @@ final class Timebase {
 
     private void applyMedium() {
         double g = units.accelerationIn(gravity);
-        engine.setGravity(-g * gravityDir.x, -g * gravityDir.y, -g * gravityDir.z);
-        engine.setFriction(units.dampingIn(friction));
+        EngineWrites w = core != null ? core.writes() : EngineWrites.direct(engine);
+        w.setMedium(-g * gravityDir.x, -g * gravityDir.y, -g * gravityDir.z, units.dampingIn(friction));
     }
 }

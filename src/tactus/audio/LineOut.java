@@ -5,8 +5,10 @@ import ddf.minim.Minim;
 import java.io.PrintStream;
 
 /**
- * Opens Minim's line out, and never returns null: on a machine without a usable sound card (where
- * {@code Minim.getLineOut()} prints an error and returns null) it says so clearly and returns an
+ * Opens Minim's line out, and never returns null. With Tactus on the class path, {@code Minim.getLineOut()} itself
+ * works on a machine with no sound card: it plays into the {@link VirtualMixerProvider virtual output}. If it still
+ * returns null (Tactus's mixer is not registered, or the format is not one it plays), this class says so clearly
+ * and returns an
  * {@code AudioOutput} backed by a {@link SilentAudioOut}, which keeps computing the patched UGens in real
  * time (so models still step and haptics still get forces) and discards the sound. To hear the result
  * anyway, render it with {@link OfflineRenderer}.
@@ -53,7 +55,7 @@ public final class LineOut {
         return out != null ? out : silent(type, bufferSize, sampleRate, System.err);
     }
 
-    private static AudioOutput silent(int type, int bufferSize, float sampleRate, PrintStream messages) {
+    static AudioOutput silent(int type, int bufferSize, float sampleRate, PrintStream messages) {
         if (messages != null) {
             messages.println("Tactus audio: no sound output (Minim.getLineOut() returned null: no sound card, or "
                     + (type == Minim.STEREO ? "stereo" : "mono") + " " + sampleRate + " Hz 16-bit is not supported). "

@@ -139,6 +139,15 @@ public class PhyUGen extends UGen {
         boundModel = mdl;
     }
 
+    /**
+     * @return the model this unit generator plays ({@link #mdl}), for the sketch's other threads: its changes are
+     *     queued for the audio thread, and {@code getSnapshot()} gives positions to draw; null for a
+     *     {@link SteppedModel} that is not a {@code PhysicalModel}
+     */
+    public PhysicalModel getModel() {
+        return mdl;
+    }
+
     // ------------------------------------------------------------------ listening points
 
     /**

@@ -7,13 +7,11 @@ import tactus.Vect3D;
 import tactus.paramSystem;
 
 /**
- * The one adapter from {@link SteppedModel} to today's public {@link PhysicalModel} API. Names are resolved
- * once into handles; the per-sample methods reuse scratch vectors and allocate nothing of their own.
- *
- * <p>Cost note: {@link #sampleLock()} is the model's lock, so {@link PhyUGen} takes it once per sample and the
- * inner calls re-enter it cheaply (about 20-40 ns uncontended). Interaction reads still look the name up in a
- * hash table per call. Nothing on the per-sample path allocates: avatar forces are read with
- * {@code getHapticForce(String, Vect3D out)} ({@code PhyUGenAllocationTest}).
+ * The one adapter from {@link SteppedModel} to the public {@link PhysicalModel} API. Creating it puts the model in
+ * realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the thread that steps it (Minim's audio thread)
+ * takes no lock and never waits for another thread; other threads' changes are queued and applied between two
+ * samples. Names are resolved once into handles; the per-sample methods reuse scratch vectors and allocate nothing
+ * ({@code PhyUGenAllocationTest}). Interaction reads look the name up in a hash table per call.
  */
 public final class PhysicalModelStepper implements SteppedModel {
     private final PhysicalModel model;
@@ -42,7 +40,11 @@ public final class PhysicalModelStepper implements SteppedModel {
         this.model = model;
         this.realUnits = model.getParamSystem() == paramSystem.REAL_UNITS;
         this.rate = model.getSimRate();
+        model.beginRealtimeStepping();
     }
+
+    /** A lock that is never contended: realtime stepping needs none around a sample. */
+    private static final java.util.concurrent.locks.Lock NO_LOCK = new NoLock();
 
     /** @return the wrapped model. */
     public PhysicalModel model() {
@@ -69,7 +71,7 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     @Override
     public java.util.concurrent.locks.Lock sampleLock() {
-        return model.getLock();
+        return NO_LOCK;
     }
 
     @Override
@@ -189,4 +191,34 @@ public final class PhysicalModelStepper implements SteppedModel {
         out[2] = f.z;
     }
 
+
+    /** The no-op lock of {@link #sampleLock()}. */
+    private static final class NoLock implements java.util.concurrent.locks.Lock {
+        @Override
+        public void lock() {
+        }
+
+        @Override
+        public void lockInterruptibly() {
+        }
+
+        @Override
+        public boolean tryLock() {
+            return true;
+        }
+
+        @Override
+        public boolean tryLock(long time, java.util.concurrent.TimeUnit unit) {
+            return true;
+        }
+
+        @Override
+        public void unlock() {
+        }
+
+        @Override
+        public java.util.concurrent.locks.Condition newCondition() {
+            throw new UnsupportedOperationException("PhysicalModelStepper: no conditions on the sample lock");
+        }
+    }
 }

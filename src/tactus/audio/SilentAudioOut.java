@@ -14,7 +14,8 @@ import javax.sound.sampled.Control;
  * pace of the sample rate (so a {@link PhyUGen} patched into it still steps its model in real time, and
  * the output's {@code left/right/mix} buffers and recorders still get the samples) and discards the sound.
  * Wrap it as {@code new AudioOutput(new SilentAudioOut(...))}; {@link LineOut} does so when there is no
- * sound card.
+ * sound card. When the system property {@value HeadlessRecording#PROPERTY} names a WAV file, what it computes is
+ * recorded there as 16-bit PCM (see {@link HeadlessRecording}).
  */
 @SuppressWarnings("deprecation") // Minim's AudioOut SPI is built on its deprecated AudioSignal and AudioEffect
 public final class SilentAudioOut implements AudioOut {
@@ -81,6 +82,8 @@ public final class SilentAudioOut implements AudioOut {
         float[] right = new float[bufferSize];
         long period = Math.round(bufferSize * 1e9 / format.getSampleRate());
         long deadline = System.nanoTime();
+        HeadlessRecording rec = HeadlessRecording.claim(format);
+        byte[] pcm = rec == null ? null : new byte[bufferSize * 4];
         while (running) {
             AudioSignal s = signal;
             java.util.Arrays.fill(left, 0f);
@@ -109,6 +112,9 @@ public final class SilentAudioOut implements AudioOut {
                     l.samples(left);
                 }
             }
+            if (rec != null) {
+                rec.writeFloats(left, stereo ? right : null, bufferSize, pcm);
+            }
             buffersRendered++;
             deadline += period;
             long wait = deadline - System.nanoTime();
@@ -117,6 +123,9 @@ public final class SilentAudioOut implements AudioOut {
             } else if (wait < -1_000_000_000L) {
                 deadline = System.nanoTime(); // fell behind by over a second: do not try to catch up
             }
+        }
+        if (rec != null) {
+            rec.close();
         }
     }
 

@@ -22,6 +22,7 @@ import tactus.Vect3D;
 public final class AudioBench {
     private static final int RATE = 44100;
     private static boolean quick;
+    private static tactus.StabilityPolicy editPolicy = tactus.StabilityPolicy.WARN;
 
     private AudioBench() {
     }
@@ -105,6 +106,31 @@ public final class AudioBench {
         boolean overheadOnly = args.length > 0 && args[0].equals("overhead");
         if (args.length > 0 && args[0].equals("buffers")) {
             bufferTimes(1000);
+            return;
+        }
+        if (args.length > 0 && args[0].equals("editing")) {
+            // audio buffers while draw (60 fps), haptics (1 kHz) and an editor (a change every 3 ms) run
+            int n = args.length > 1 ? Integer.parseInt(args[1]) : 1000;
+            double seconds = args.length > 2 ? Double.parseDouble(args[2]) : 6;
+            editPolicy = args.length > 3 ? tactus.StabilityPolicy.valueOf(args[3]) : tactus.StabilityPolicy.WARN;
+            System.out.println("## Per-buffer time, " + n + "-mass string with avatar; draw 60 fps, haptic 1 kHz, a "
+                    + "parameter change every 3 ms (StabilityPolicy." + editPolicy + ")");
+            System.out.println("| audio path | buffer frames | period ms | buffers | p50 ms | p99.9 ms | max ms | "
+                    + "buffers over their period | changes made |");
+            System.out.println("|---|---|---|---|---|---|---|---|---|");
+            for (int bs : new int[] {256, 1024}) {
+                editingRun(n, bs, true, seconds);
+                editingRun(n, bs, false, seconds);
+            }
+            return;
+        }
+        if (args.length > 0 && args[0].equals("topology")) {
+            System.out.println("## Stepping calls that apply a queued change (wall ns of that one computeStep())");
+            System.out.println("| string masses | plain step p50 ns | parameter change: max ns | topology change (add + remove a spring): max ns |");
+            System.out.println("|---|---|---|---|");
+            for (int n : new int[] {1000, 10000}) {
+                topologyRun(n);
+            }
             return;
         }
         if (args.length > 0 && args[0].equals("threads")) {
@@ -272,5 +298,170 @@ public final class AudioBench {
                     times[buffers / 2] / 1e6, times[(int) Math.min(buffers - 1, Math.floor(buffers * 0.999))] / 1e6,
                     times[buffers - 1] / 1e6, over);
         }
+    }
+
+    /**
+     * Buffers computed as Minim does while three other threads run: draw() at 60 fps, the haptic loop at 1 kHz and an
+     * editor that changes a spring's stiffness every 3 ms. {@code realtime}: a PhyUGen (the model stepped in realtime:
+     * the audio thread takes no lock; draw reads getSnapshot(), haptics go through an AvatarExchange, changes are
+     * queued). Otherwise the locked path of before: the audio thread holds the model lock around each sample, draw
+     * reads every position through the locked getter, haptics call setHapticPosition / getHapticForce, and each change
+     * runs its validation and stability analysis under the lock.
+     */
+    private static void editingRun(int n, int bs, boolean realtime, double seconds) throws Exception {
+        PhysicalModel pm = string(n, true);
+        pm.setStabilityPolicy(editPolicy);
+        AvatarExchange ex = new AvatarExchange();
+        PhyUGen u = null;
+        if (realtime) {
+            u = new PhyUGen(pm);
+            u.listenToMass("m3", SteppedModel.Y, 100, 0);
+            u.attachAvatar("avatar", ex);
+            u.setSampleRate(RATE);
+        }
+        final PhyUGen ugen = u;
+        float[] frame = new float[2];
+        Vect3D listen = new Vect3D();
+        Vect3D target = new Vect3D(0.5, 0.5, 0);
+        java.util.concurrent.locks.Lock lock = pm.getLock();
+        Runnable sample = realtime ? () -> ugen.tick(frame) : () -> {
+            lock.lock();
+            try {
+                pm.computeStep();
+                pm.getMatPosition("m3", listen);
+            } finally {
+                lock.unlock();
+            }
+        };
+        for (int i = 0; i < 100_000; i++) {
+            sample.run(); // warm-up
+        }
+        int buffers = (int) (seconds * RATE / bs);
+        long[] times = new long[buffers];
+        long period = Math.round(bs * 1e9 / RATE);
+        java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.atomic.AtomicLong changes = new java.util.concurrent.atomic.AtomicLong();
+        Thread haptic = new Thread(() -> {
+            double[] f = new double[3];
+            Vect3D fv = new Vect3D();
+            Vect3D pos = new Vect3D();
+            long next = System.nanoTime();
+            int k = 0;
+            while (!stop.get()) {
+                double x = 0.5 + 0.001 * Math.sin(k++ * 0.01);
+                if (realtime) {
+                    ex.publishPosition(x, 0.5, 0);
+                    ex.takeForce(f);
+                } else {
+                    pm.setHapticPosition("avatar", pos.set(x, 0.5, 0));
+                    pm.getHapticForce("avatar", fv);
+                }
+                next += 1_000_000;
+                LockSupport.parkNanos(next - System.nanoTime());
+            }
+        }, "haptic");
+        Thread draw = new Thread(() -> {
+            Vect3D v = new Vect3D();
+            double sink = 0;
+            long next = System.nanoTime();
+            while (!stop.get()) {
+                if (realtime) {
+                    tactus.ModelSnapshot snap = pm.getSnapshot();
+                    for (int i = 0; i < snap.getNumberOfMats(); i++) {
+                        sink += snap.y(i);
+                    }
+                } else {
+                    for (int i = 1; i <= n; i++) {
+                        sink += pm.getMatPosition("m" + i, v).y;
+                    }
+                }
+                next += 16_666_667;
+                LockSupport.parkNanos(next - System.nanoTime());
+            }
+            if (sink == 42) {
+                System.out.print("");
+            }
+        }, "draw");
+        Thread editor = new Thread(() -> {
+            long next = System.nanoTime();
+            int k = 0;
+            while (!stop.get()) {
+                pm.setLinkStiffness("s" + (k % n), (k & 1) == 0 ? 0.2 : 0.19);
+                k++;
+                changes.incrementAndGet();
+                next += 3_000_000;
+                LockSupport.parkNanos(next - System.nanoTime());
+            }
+        }, "editor");
+        for (Thread t : new Thread[] {haptic, draw, editor}) {
+            t.setDaemon(true);
+            t.start();
+        }
+        long deadline = System.nanoTime();
+        int over = 0;
+        for (int b = 0; b < buffers; b++) {
+            long t0 = System.nanoTime();
+            for (int i = 0; i < bs; i++) {
+                sample.run();
+            }
+            times[b] = System.nanoTime() - t0;
+            if (times[b] > period) {
+                over++;
+            }
+            deadline += period;
+            long wait = deadline - System.nanoTime();
+            if (wait > 0) {
+                LockSupport.parkNanos(wait);
+            }
+        }
+        stop.set(true);
+        for (Thread t : new Thread[] {haptic, draw, editor}) {
+            t.join();
+        }
+        Arrays.sort(times);
+        System.out.printf(Locale.ROOT, "| %s | %d | %.2f | %d | %.3f | %.3f | %.3f | %d | %d |%n",
+                realtime ? "PhyUGen, realtime stepping" : "locked per sample (before)", bs, period / 1e6, buffers,
+                times[buffers / 2] / 1e6, times[(int) Math.min(buffers - 1, Math.floor(buffers * 0.999))] / 1e6,
+                times[buffers - 1] / 1e6, over, changes.get());
+    }
+
+    /** What applying a queued change costs the stepping thread: the step that applies it, parameter vs topology. */
+    private static void topologyRun(int n) throws Exception {
+        PhysicalModel pm = string(n, false);
+        pm.setStabilityPolicy(tactus.StabilityPolicy.OFF);
+        pm.beginRealtimeStepping();
+        long[] plain = new long[20_000];
+        for (int i = 0; i < 50_000; i++) {
+            pm.computeStep();
+        }
+        for (int i = 0; i < plain.length; i++) {
+            long t0 = System.nanoTime();
+            pm.computeStep();
+            plain[i] = System.nanoTime() - t0;
+        }
+        Arrays.sort(plain);
+        long paramMax = 0;
+        long topoMax = 0;
+        for (int r = 0; r < 20; r++) {
+            Thread ed = new Thread(() -> pm.setLinkStiffness("s5", 0.19));
+            ed.start();
+            ed.join();
+            long t0 = System.nanoTime();
+            pm.computeStep();
+            paramMax = Math.max(paramMax, System.nanoTime() - t0);
+            // a structural change waits for the owner: let a helper thread make it while this thread steps
+            Thread topo = new Thread(() -> {
+                pm.addSpringDamper3D("extra", 0.05, 0.001, 0, "m2", "m4");
+                pm.removeLink("extra");
+            });
+            topo.start();
+            while (topo.isAlive()) {
+                long t1 = System.nanoTime();
+                pm.computeStep();
+                topoMax = Math.max(topoMax, System.nanoTime() - t1);
+            }
+        }
+        System.out.printf(Locale.ROOT, "| %d | %d | %d | %d |%n", n, plain[plain.length / 2], paramMax, topoMax);
+        pm.endRealtimeStepping();
     }
 }
