@@ -83,14 +83,13 @@ class ExamplesTest {
      * {@value #RECORD_PROPERTY}; then switch it on. Until then a recording that exists is checked, and a missing
      * one is not an error.
      */
-    static final boolean RECORDING_REQUIRED = false;
+    static final boolean RECORDING_REQUIRED = true;
 
     /**
      * Examples exempt from the "does something on its own" check, by sketch name, each waiting for its owner to
      * make it move without a mouse. Remove a name as soon as its sketch animates on its own.
      */
-    static final Set<String> STILL_UNTIL_FIXED = Set.of(
-            "PluckedString"); // the string rests until the mouse plucks it (examples/PluckedString, issue #9)
+    static final Set<String> STILL_UNTIL_FIXED = Set.of();
 
     static Path examplesRoot() {
         return Paths.get(System.getProperty("tactus.sketch.examples", "examples"));
