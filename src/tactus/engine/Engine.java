@@ -25,6 +25,7 @@ public final class Engine implements AutoCloseable {
     private boolean effectsDirty;
     private long steps;
     private boolean stencils = true;
+    private boolean sweeps = true;
     private ParallelStepper stepper;
     private java.lang.ref.Cleaner.Cleanable stepperCleanup;
     private int parallelMinElements = 20_000;
@@ -327,6 +328,22 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
+     * Chooses how stencil runs are stepped. Enabled (the default): each run in one sweep over its memory per
+     * step, and a run of offset 1 (a chain, the rows of a mesh) whose masses are all of one kind moves those
+     * masses itself, block by block just ahead of its links, instead of leaving them to their own kernel.
+     * Disabled: as before sweeps existed, every mass kernel first, then each run in two passes (near ends,
+     * then far ends); kept to compare the two (benchmarks, tests). Both give the same physics: a mass whose
+     * forces all come from its run's links (the inside of a chain) gets the same bits either way, others may
+     * differ by round-off (forces from several kernels are summed in another order).
+     */
+    public void setStencilSweeps(boolean enabled) {
+        if (enabled != sweeps) {
+            sweeps = enabled;
+            effectsDirty = true;
+        }
+    }
+
+    /**
      * Stencil runs pay off while the model is cache-resident, and always when several threads step it (only
      * runs split across threads; index-array links run on one thread).
      */
@@ -358,10 +375,11 @@ public final class Engine implements AutoCloseable {
     /** Compiles the scene now if its topology or effects changed since the last compile. */
     public void compile() {
         if (topologyDirty || plan == null) {
-            plan = PlanCompiler.compile(masses, links, medium, plan, useStencils(), groups);
+            plan = PlanCompiler.compile(masses, links, medium, plan, useStencils(), sweeps, groups);
             topologyDirty = false;
             effectsDirty = false;
         } else if (effectsDirty) {
+            plan.sweepRuns = sweeps;
             plan.selectKernels();
             effectsDirty = false;
         }
