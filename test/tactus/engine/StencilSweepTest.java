@@ -265,4 +265,32 @@ class StencilSweepTest {
             }
         }
     }
+
+    /**
+     * Runs stepped in one sweep are used at any size; in the two-pass form only up to 16,384 masses (above that
+     * index arrays were faster). Switching recompiles the plan and carries the state over: the string goes on
+     * exactly where it was.
+     */
+    @Test
+    void sweepsUseRunsAtAnySizeAndSwitchingKeepsTheState() {
+        Engine e = string(MassKind.MASS2D_PLANE, StencilPlanner.MAX_MASSES + 100, true);
+        assertEquals(1, e.stencilRunCount(), "with sweeps a long string is a run");
+        e.step(50);
+        double[] before = new double[3];
+        double[] after = new double[3];
+        int probe = 777;
+        e.position(probe, before);
+        e.setStencilSweeps(false);
+        assertEquals(0, e.stencilRunCount(), "two-pass runs stop at 16,384 masses");
+        e.position(probe, after);
+        assertArrayEquals(before, after);
+        Engine reference = string(MassKind.MASS2D_PLANE, StencilPlanner.MAX_MASSES + 100, true);
+        reference.step(50);
+        e.step(50);
+        reference.step(50);
+        e.position(probe, after);
+        reference.position(probe, before);
+        // index arrays add the same two forces per mass, so the string goes on bit for bit
+        assertArrayEquals(before, after);
+    }
 }
