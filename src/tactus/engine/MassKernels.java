@@ -27,9 +27,9 @@ final class MassKernels {
             case DRIVEN3D:
                 return new Driven3D(p, s, e);
             case MASS2D_PLANE:
-                return new Plane2D(p, s, e);
+                return new Plane2D(p, s, e, plain);
             case MASS1D:
-                return new Line1D(p, s, e);
+                return new Line1D(p, s, e, plain);
             case OSC3D:
                 return new Osc3D(p, s, e);
             case OSC1D:
@@ -110,13 +110,18 @@ final class MassKernels {
             free(p.z, p.pz, p.fz, p.invM, from, to);
         }
 
-        private static void free(double[] x, double[] px, double[] f, double[] im, int s, int e) {
-            for (int i = s; i < e; i++) {
-                double xi = x[i];
-                x[i] = xi + (xi - px[i]) + f[i] * im[i];
-                px[i] = xi;
-                f[i] = 0;
-            }
+    }
+
+    /**
+     * One coordinate of a mass with neither friction nor gravity: X(n+1) = X(n) + (X(n) - X(n-1)) + F/M, the
+     * exact reduction of {@link #damped} with retention 1 and no gravity (up to the sign of a zero position).
+     */
+    static void free(double[] x, double[] px, double[] f, double[] im, int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + (xi - px[i]) + f[i] * im[i];
+            px[i] = xi;
+            f[i] = 0;
         }
     }
 
@@ -145,30 +150,48 @@ final class MassKernels {
         }
     }
 
-    /** Mass2DPlane: x and y move as a Mass3D; z stays on its plane. */
+    /**
+     * Mass2DPlane: x and y move as a Mass3D; z stays on its plane. With neither friction nor gravity
+     * ({@code plain}) it uses the reduced update of {@link #free}.
+     */
     static final class Plane2D extends SlotKernel {
-        Plane2D(StepPlan p, int s, int e) {
+        private final boolean plain;
+
+        Plane2D(StepPlan p, int s, int e, boolean plain) {
             super(p, s, e);
+            this.plain = plain;
         }
 
         @Override
         void step(int from, int to) {
-            Medium m = p.medium;
-            damped(p.x, p.px, p.fx, p.invM, p.retention, m.gx, from, to);
-            damped(p.y, p.py, p.fy, p.invM, p.retention, m.gy, from, to);
+            if (plain) {
+                free(p.x, p.px, p.fx, p.invM, from, to);
+                free(p.y, p.py, p.fy, p.invM, from, to);
+            } else {
+                Medium m = p.medium;
+                damped(p.x, p.px, p.fx, p.invM, p.retention, m.gx, from, to);
+                damped(p.y, p.py, p.fy, p.invM, p.retention, m.gy, from, to);
+            }
             Arrays.fill(p.fz, from, to, 0.0);
         }
     }
 
-    /** Mass1D: only z moves. */
+    /** Mass1D: only z moves; with neither friction nor gravity ({@code plain}), by the reduced update. */
     static final class Line1D extends SlotKernel {
-        Line1D(StepPlan p, int s, int e) {
+        private final boolean plain;
+
+        Line1D(StepPlan p, int s, int e, boolean plain) {
             super(p, s, e);
+            this.plain = plain;
         }
 
         @Override
         void step(int from, int to) {
-            damped(p.z, p.pz, p.fz, p.invM, p.retention, p.medium.gz, from, to);
+            if (plain) {
+                free(p.z, p.pz, p.fz, p.invM, from, to);
+            } else {
+                damped(p.z, p.pz, p.fz, p.invM, p.retention, p.medium.gz, from, to);
+            }
             Arrays.fill(p.fx, from, to, 0.0);
             Arrays.fill(p.fy, from, to, 0.0);
         }

@@ -12,7 +12,7 @@ final class PlanCompiler {
     }
 
     static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old, boolean stencils,
-                            java.util.List<ContactGroupSpec> groups) {
+                            boolean sweeps, java.util.List<ContactGroupSpec> groups) {
         int kinds = MassKind.values().length;
         int[] counts = new int[kinds];
         for (int id = 0; id < mt.count; id++) {
@@ -66,6 +66,7 @@ final class PlanCompiler {
         System.arraycopy(newSlot, 0, mt.slot, 0, mt.count);
         fillLinks(lt, p, old);
         p.groups = buildGroups(groups, mt, newSlot, p);
+        p.sweepRuns = sweeps;
         p.selectKernels();
         return p;
     }

@@ -15,10 +15,11 @@ final class StencilPlanner {
     /** Largest gap between consecutive lower slots inside a run (filled with placeholders). */
     static final int MAX_GAP = 4;
     /**
-     * Largest model (in masses) stepped with stencil runs. Runs trade extra memory traffic (scratch arrays,
-     * per-slot parameters) for vectorised arithmetic: a win while the model sits in the core's caches, a loss
-     * once it streams from memory (measured: a 100x100 sheet is 1.3x faster with runs, a 150x150 sheet 1.15x
-     * slower).
+     * Largest model (in masses) stepped with stencil runs in their two-pass form ({@link Engine#setStencilSweeps}
+     * off). Two-pass runs trade extra memory traffic (scratch arrays, per-slot parameters, a second pass over the
+     * forces) for vectorised arithmetic: a win while the model sits in the core's caches, a loss once it streams
+     * from memory (measured: a 100x100 sheet is 1.3x faster with runs, a 150x150 sheet 1.15x slower). Runs
+     * stepped in one sweep have no such limit.
      */
     static final int MAX_MASSES = 16_384;
     /** Smallest share of real links among the run's slots. */

@@ -57,6 +57,11 @@ public final class StepPlan {
     double[] stencilFarZ;
     /** Contact groups (broad-phase contacts), run right after the explicit Contact3D links. */
     ContactGroupKernel[] groups = new ContactGroupKernel[0];
+    /**
+     * true (the default): stencil runs are stepped in one sweep, and chains move their own masses
+     * ({@link #selectKernels()}); false: masses by their own kernels, then every run in two passes.
+     */
+    boolean sweepRuns = true;
     private Kernel[] kernels = new Kernel[0];
     private int kernelsVersion;
 
@@ -119,11 +124,15 @@ public final class StepPlan {
 
     /** @return the names of the kernels this plan runs per step, in order, for diagnostics. */
     public String[] kernelNames() {
-        String[] names = new String[kernels.length];
-        for (int i = 0; i < kernels.length; i++) {
-            names[i] = kernels[i].getClass().getSimpleName();
+        java.util.ArrayList<String> names = new java.util.ArrayList<>();
+        for (Kernel k : kernels) {
+            if (k instanceof StencilKernel && ((StencilKernel) k).masses() != null) {
+                // a run that also moves its masses: both computations, the masses first
+                names.add(((StencilKernel) k).masses().getClass().getSimpleName());
+            }
+            names.add(k.getClass().getSimpleName());
         }
-        return names;
+        return names.toArray(new String[0]);
     }
 
     int start(MassKind k) {
@@ -138,17 +147,78 @@ public final class StepPlan {
         return batches[k.ordinal()];
     }
 
-    /** Selects the kernels for the kinds present and the effects switched on. */
+    /**
+     * Selects the kernels for the kinds present and the effects switched on: the mass kernels (in kind order),
+     * then the stencil runs that move their own masses (see below), then the interaction kernels (in link-kind
+     * order; within a batch the index-array links, then the runs).
+     *
+     * <p>A stencil run with offset 1 (a chain, or the rows of a mesh) whose slots all belong to one mass kind,
+     * and overlap no other such run, takes over the mass update of those slots ({@link StencilKernel#fused}):
+     * one sweep over the chain's memory per step instead of two. The kind's own kernel then covers the rest of
+     * its slots, if any. Only the order in which forces from different kernels are summed changes.
+     */
     void selectKernels() {
         java.util.ArrayList<Kernel> list = new java.util.ArrayList<>();
         boolean plainMasses = !medium.hasGravity() && !medium.hasFriction();
+        boolean anyRun = false;
+        for (LinkBatch b : batches) {
+            anyRun |= b != null && b.runs.length > 0;
+        }
+        if (anyRun && stencilVecX == null) {
+            stencilVecX = new double[nMass];
+            stencilVecY = new double[nMass];
+            stencilVecZ = new double[nMass];
+            stencilDist = new double[nMass];
+            stencilFarX = new double[nMass];
+            stencilFarY = new double[nMass];
+            stencilFarZ = new double[nMass];
+        }
+        // runs that move their own masses, and the slot ranges they take
+        java.util.IdentityHashMap<StencilRun, StencilKernel> fused = new java.util.IdentityHashMap<>();
+        java.util.ArrayList<int[]> taken = new java.util.ArrayList<>();
+        for (LinkKind k : LinkKind.values()) {
+            LinkBatch b = batch(k);
+            if (b == null) {
+                continue;
+            }
+            for (StencilRun run : b.runs) {
+                MassKind kind = sweepRuns && run.o == 1 ? kindHolding(run.s, run.e + 1) : null;
+                if (kind == null || overlaps(taken, run.s, run.e + 1)) {
+                    continue;
+                }
+                MassKernels.SlotKernel masses =
+                        (MassKernels.SlotKernel) MassKernels.create(kind, this, run.s, run.e + 1, plainMasses);
+                fused.put(run, StencilKernel.fused(run, this, masses));
+                taken.add(new int[] {run.s, run.e + 1});
+            }
+        }
+        taken.sort((u, v) -> Integer.compare(u[0], v[0]));
         for (MassKind k : MassKind.values()) {
             int s = start(k);
             int e = end(k);
-            if (s == e) {
+            // the kind's slots that no fused run moves
+            for (int[] t : taken) {
+                if (t[0] >= s && t[1] <= e) {
+                    if (t[0] > s) {
+                        list.add(MassKernels.create(k, this, s, t[0], plainMasses));
+                    }
+                    s = t[1];
+                }
+            }
+            if (s < e) {
+                list.add(MassKernels.create(k, this, s, e, plainMasses));
+            }
+        }
+        for (LinkKind k : LinkKind.values()) {
+            LinkBatch b = batch(k);
+            if (b == null) {
                 continue;
             }
-            list.add(MassKernels.create(k, this, s, e, plainMasses));
+            for (StencilRun run : b.runs) {
+                if (fused.containsKey(run)) {
+                    list.add(fused.get(run));
+                }
+            }
         }
         for (LinkKind k : LinkKind.values()) {
             LinkBatch b = batch(k);
@@ -163,19 +233,31 @@ public final class StepPlan {
                 list.add(LinkKernels.create(b, this));
             }
             for (StencilRun run : b.runs) {
-                if (stencilVecX == null) {
-                    stencilVecX = new double[nMass];
-                    stencilVecY = new double[nMass];
-                    stencilVecZ = new double[nMass];
-                    stencilDist = new double[nMass];
-                    stencilFarX = new double[nMass];
-                    stencilFarY = new double[nMass];
-                    stencilFarZ = new double[nMass];
+                if (!fused.containsKey(run)) {
+                    list.add(sweepRuns ? StencilKernel.sweep(run, this) : StencilKernel.twoPass(run, this));
                 }
-                list.add(new StencilKernel(run, this));
             }
         }
         kernels = list.toArray(new Kernel[0]);
         kernelsVersion++;
+    }
+
+    /** @return the mass kind whose slots include all of [s, e), or null if they span several kinds. */
+    private MassKind kindHolding(int s, int e) {
+        for (MassKind k : MassKind.values()) {
+            if (start(k) <= s && e <= end(k)) {
+                return k;
+            }
+        }
+        return null;
+    }
+
+    private static boolean overlaps(java.util.List<int[]> ranges, int s, int e) {
+        for (int[] t : ranges) {
+            if (s < t[1] && t[0] < e) {
+                return true;
+            }
+        }
+        return false;
     }
 }

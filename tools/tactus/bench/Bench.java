@@ -167,6 +167,7 @@ public final class Bench {
                 System.out.println("== parallel stepping (forked JVM)");
                 md = md + ParallelBench.section();
             }
+            md = md + keptSections(out);
             File parent = out.getAbsoluteFile().getParentFile();
             if (parent != null) {
                 parent.mkdirs();
@@ -283,6 +284,35 @@ public final class Bench {
             v[i] = Double.parseDouble(p[i]);
         }
         return v;
+    }
+
+    /** Marks the start of a hand-written section of the report that a new run keeps (measured by other tools). */
+    static final String KEPT_BEGIN = "<!-- kept by gradle bench: begin -->";
+    /** Marks the end of a kept section. */
+    static final String KEPT_END = "<!-- kept by gradle bench: end -->";
+
+    /**
+     * @return the kept sections of the existing report (each from {@link #KEPT_BEGIN} to {@link #KEPT_END}, markers
+     *     included), to append to the new one; empty when there is none or the file cannot be read
+     */
+    static String keptSections(File report) {
+        String old;
+        try {
+            old = new String(Files.readAllBytes(report.toPath()), StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            return "";
+        }
+        StringBuilder kept = new StringBuilder();
+        int from = 0;
+        while (true) {
+            int b = old.indexOf(KEPT_BEGIN, from);
+            int e = b < 0 ? -1 : old.indexOf(KEPT_END, b);
+            if (e < 0) {
+                return kept.toString();
+            }
+            kept.append('\n').append(old, b, e + KEPT_END.length()).append('\n');
+            from = e + KEPT_END.length();
+        }
     }
 
     /** @return the first three fields of /proc/loadavg (1, 5, 15 minutes), or "unknown". */

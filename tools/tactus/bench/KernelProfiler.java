@@ -128,6 +128,12 @@ final class KernelProfiler {
                 int o = (Integer) field(run, "o");
                 name = "StencilKernel(o=" + o + ")";
                 count = e - s;
+                Object masses = field(k, "masses");
+                if (masses != null) {
+                    // a run that moves its own masses: slots [s, e + o)
+                    name = name + " + its masses (" + masses.getClass().getSimpleName() + ")";
+                    count += e + o - s;
+                }
             } else if (batch != null) {
                 LinkKind kind = (LinkKind) field(batch, "kind");
                 int n = (Integer) field(batch, "n");
