@@ -31,6 +31,16 @@ final class ForceTaps {
     private volatile Tap[] taps = new Tap[0];
     private final double[] tmp = new double[3];
 
+    /** @return the tap of an input module, or null if no other thread has read its force yet. Any thread. */
+    Tap find(int id) {
+        for (Tap t : taps) {
+            if (t.id == id) {
+                return t;
+            }
+        }
+        return null;
+    }
+
     /** @return the tap of an input module, created on first use. The caller holds the model's lock. */
     Tap tap(int id) {
         for (Tap t : taps) {

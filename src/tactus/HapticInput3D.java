@@ -33,7 +33,7 @@ public final class HapticInput3D extends Mass {
     public Vect3D takeForce(Vect3D out) {
         model.enter(this);
         try {
-            return model.core.state.takeForce(id, out);
+            return model.core.state.takeAvatarForce(id, out);
         } finally {
             model.exit();
         }

@@ -118,19 +118,7 @@ public class PhysicalModel {
      * applied, then prepares its own change (see {@link Ownership}).
      */
     void enter() {
-        Ownership o = core.own;
-        if (o != null && o.isOwnerThread()) {
-            return;
-        }
-        lock.lock();
-        if (o != null && lock.getHoldCount() == 1) {
-            try {
-                o.beginEdit();
-            } catch (RuntimeException | Error e) {
-                lock.unlock();
-                throw e;
-            }
-        }
+        enter(false);
     }
 
     /**
@@ -139,6 +127,10 @@ public class PhysicalModel {
      * exact): a run of setters returns at once, in order.
      */
     void enterChange() {
+        enter(true);
+    }
+
+    private void enter(boolean change) {
         Ownership o = core.own;
         if (o != null && o.isOwnerThread()) {
             return;
@@ -146,7 +138,11 @@ public class PhysicalModel {
         lock.lock();
         if (o != null && lock.getHoldCount() == 1) {
             try {
-                o.beginChange();
+                if (change) {
+                    o.beginChange();
+                } else {
+                    o.beginEdit();
+                }
             } catch (RuntimeException | Error e) {
                 lock.unlock();
                 throw e;
@@ -1820,22 +1816,11 @@ public class PhysicalModel {
      * (see {@link #getHapticForce(String)}) and returns it.
      */
     public Vect3D getHapticForce(String name, Vect3D out) {
-        Ownership o = core.own;
-        if (o != null && !o.isOwnerThread()) {
-            enter();
-            try {
-                int id = core.dir.massId("getHapticForce", name);
-                core.state.requireInput("getHapticForce", id);
-                return core.state.takeTappedForce(o.taps.tap(id), out);
-            } finally {
-                exit();
-            }
-        }
         enter();
         try {
             int id = core.dir.massId("getHapticForce", name);
             core.state.requireInput("getHapticForce", id);
-            return core.state.takeForce(id, out);
+            return core.state.takeAvatarForce(id, out);
         } finally {
             exit();
         }

@@ -99,6 +99,36 @@ final class StateAccess {
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
     }
 
+    /**
+     * The avatar force for whichever thread asks: {@link #takeForce} on a model that is not stepped in realtime;
+     * on one that is, another thread reads through a {@link ForceTaps tap}, and the stepping thread reads the tap
+     * too once one exists (the tap collects the engine's accumulator after each stepping call), plus whatever the
+     * engine gathered since. Each avatar's force must be read from one thread only.
+     */
+    Vect3D takeAvatarForce(int id, Vect3D out) {
+        Ownership o = c.own;
+        if (o == null) {
+            return takeForce(id, out);
+        }
+        if (!o.isOwnerThread()) {
+            return takeTappedForce(o.taps.tap(id), out);
+        }
+        ForceTaps.Tap t = o.taps.find(id);
+        if (t == null) {
+            return takeForce(id, out);
+        }
+        o.taps.take(engine, t, tmp);
+        double x = tmp[0];
+        double y = tmp[1];
+        double z = tmp[2];
+        engine.takeForce(id, tmp);
+        if (engine.massKind(id) == MassKind.POS_INPUT3D) {
+            return out.set(0, 0, 0);
+        }
+        UnitScale u = c.units();
+        return out.set(u.forceOut(x + tmp[0]), u.forceOut(y + tmp[1]), u.forceOut(z + tmp[2]));
+    }
+
     /** {@link #takeForce} for a reader on another thread of a realtime-stepped model (see {@link ForceTaps}). */
     Vect3D takeTappedForce(ForceTaps.Tap tap, Vect3D out) {
         c.own.taps.take(engine, tap, tmp);

@@ -2,10 +2,8 @@ package tactus.audio;
 
 import javax.sound.sampled.AudioFormat;
 import javax.sound.sampled.AudioSystem;
-import javax.sound.sampled.Control;
 import javax.sound.sampled.DataLine;
 import javax.sound.sampled.Line;
-import javax.sound.sampled.LineListener;
 import javax.sound.sampled.LineUnavailableException;
 import javax.sound.sampled.Mixer;
 import javax.sound.sampled.SourceDataLine;
@@ -16,7 +14,7 @@ import javax.sound.sampled.SourceDataLine;
  * can play the format, or when {@code javax.sound.sampled.SourceDataLine} names {@link VirtualMixerProvider}; see
  * there.
  */
-final class VirtualMixer implements Mixer {
+final class VirtualMixer extends BareLine implements Mixer {
     /** The mixer's name, vendor, description and version. */
     static final Mixer.Info INFO = new Mixer.Info("Tactus virtual output", "Tactus",
             "Plays into nothing in real time (no sound card); records when -Dtactus.audio.record=<file.wav>",
@@ -163,28 +161,5 @@ final class VirtualMixer implements Mixer {
     @Override
     public boolean isOpen() {
         return true;
-    }
-
-    @Override
-    public Control[] getControls() {
-        return new Control[0];
-    }
-
-    @Override
-    public boolean isControlSupported(Control.Type control) {
-        return false;
-    }
-
-    @Override
-    public Control getControl(Control.Type control) {
-        throw new IllegalArgumentException("Tactus virtual output: no control " + control);
-    }
-
-    @Override
-    public void addLineListener(LineListener listener) {
-    }
-
-    @Override
-    public void removeLineListener(LineListener listener) {
     }
 }

@@ -3,10 +3,8 @@ package tactus.audio;
 import java.util.concurrent.locks.LockSupport;
 import javax.sound.sampled.AudioFormat;
 import javax.sound.sampled.AudioSystem;
-import javax.sound.sampled.Control;
 import javax.sound.sampled.DataLine;
 import javax.sound.sampled.Line;
-import javax.sound.sampled.LineListener;
 import javax.sound.sampled.SourceDataLine;
 
 /**
@@ -17,7 +15,7 @@ import javax.sound.sampled.SourceDataLine;
  * runs dry and restarts its clock at the next write (an underrun, silent). Every byte written is also appended to
  * the run's {@link HeadlessRecording} when {@value HeadlessRecording#PROPERTY} is set.
  */
-final class VirtualSourceLine implements SourceDataLine {
+final class VirtualSourceLine extends BareLine implements SourceDataLine {
     private final DataLine.Info info;
     private AudioFormat format;
     private int bufferBytes;
@@ -222,28 +220,5 @@ final class VirtualSourceLine implements SourceDataLine {
     @Override
     public boolean isOpen() {
         return open;
-    }
-
-    @Override
-    public Control[] getControls() {
-        return new Control[0];
-    }
-
-    @Override
-    public boolean isControlSupported(Control.Type control) {
-        return false;
-    }
-
-    @Override
-    public Control getControl(Control.Type control) {
-        throw new IllegalArgumentException("Tactus virtual output: no control " + control);
-    }
-
-    @Override
-    public void addLineListener(LineListener listener) {
-    }
-
-    @Override
-    public void removeLineListener(LineListener listener) {
     }
 }

@@ -27,6 +27,15 @@ public interface AvatarLink {
         return -1;
     }
 
+    /**
+     * True if {@link #setTarget} and {@link #takeForce} never wait for another thread (a link over lock-free
+     * channels, such as an audio-side exchange); the haptic loop then calls it directly in
+     * {@link HapticLoop.Mode#AUDIO} instead of wrapping it in a {@link DecoupledAvatar}. Default: false.
+     */
+    default boolean neverWaits() {
+        return false;
+    }
+
     /** Advances the model by n steps (haptics-only mode; in audio mode the audio thread steps it). */
     void step(int n);
 }

@@ -270,7 +270,8 @@ public final class HapticLoop implements AutoCloseable {
     /**
      * In {@link Mode#AUDIO}, wraps the avatar in a {@link DecoupledAvatar} at {@link #start()} (true, the
      * default) so that a tick never waits for the model's lock, or calls the avatar directly (false). An
-     * avatar that is already a {@code DecoupledAvatar} is never wrapped twice. Ignored in HAPTICS_ONLY mode.
+     * avatar that is already a {@code DecoupledAvatar} is never wrapped twice, and one that says it
+     * {@linkplain AvatarLink#neverWaits() never waits} is never wrapped. Ignored in HAPTICS_ONLY mode.
      */
     public void setDecoupledInAudioMode(boolean decouple) {
         beforeStart("setDecoupledInAudioMode");
@@ -288,7 +289,7 @@ public final class HapticLoop implements AutoCloseable {
     /** True if, in this configuration, the ticks reach the avatar through a {@link DecoupledAvatar}. */
     public boolean isDecoupled() {
         return avatar instanceof DecoupledAvatar
-                || (mode == Mode.AUDIO && decoupleInAudioMode);
+                || (mode == Mode.AUDIO && decoupleInAudioMode && !avatar.neverWaits());
     }
 
     /** Starts the loop thread and its watchdog. The device must be set up. */
@@ -299,7 +300,7 @@ public final class HapticLoop implements AutoCloseable {
         if (!device.isConfigured()) {
             throw new IllegalStateException("HapticLoop.start: call device_set_parameters() on the device first");
         }
-        if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar)) {
+        if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar) && !avatar.neverWaits()) {
             ownDecoupler = new DecoupledAvatar(avatar);
             active = ownDecoupler;
         } else {

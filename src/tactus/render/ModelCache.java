@@ -109,7 +109,7 @@ final class ModelCache {
         for (int i = 0; i < nm; i++) {
             matModuleType t = s.getMatType(i);
             massTypes[i] = t;
-            inertia[i] = live && hasInertia(t) ? m.getMatMassAt(i) : 0;
+            inertia[i] = live && isSimulated(t) ? m.getMatMassAt(i) : 0;
         }
         for (int l = 0; l < nl; l++) {
             linkModuleType t = s.getLinkType(l);
@@ -129,7 +129,11 @@ final class ModelCache {
         links = nl;
     }
 
-    private static boolean hasInertia(matModuleType t) {
+    /**
+     * True for masses that the model moves by their inertia: not fixed points, avatars or position drivers
+     * (the drawer colours only these by speed or force; the others have no inertia to cache).
+     */
+    static boolean isSimulated(matModuleType t) {
         switch (t) {
             case Ground3D:
             case Ground1D:

@@ -374,7 +374,7 @@ public final class ModelDrawer {
             matModuleType type = s.getMatType(i);
             MassStyle ms = style.mass(type);
             int argb = ms.argb();
-            if (by != ColorBy.TYPE && isSimulated(type)) {
+            if (by != ColorBy.TYPE && ModelCache.isSimulated(type)) {
                 argb = (argb & 0xFF000000) | (scaleOf.colorAt(massValue(s, i, by)) & 0x00FFFFFF);
             }
             float r = scale * ms.radius(cache.inertia(i));
@@ -403,23 +403,9 @@ public final class ModelDrawer {
 
     private static final matModuleType[] ARROW_TYPES = matModuleType.values();
 
-    /** Masses that the model moves (not fixed points, avatars or position drivers) take the scale's colour. */
-    private static boolean isSimulated(matModuleType t) {
-        switch (t) {
-            case Ground3D:
-            case Ground1D:
-            case HapticInput3D:
-            case PosInput3D:
-            case UNDEFINED:
-                return false;
-            default:
-                return true;
-        }
-    }
-
     /** The speed or force norm of a mass for colouring; 0 for masses that are not simulated. */
     private static double massValue(ModelSnapshot s, int i, ColorBy by) {
-        if (!isSimulated(s.getMatType(i))) {
+        if (!ModelCache.isSimulated(s.getMatType(i))) {
             return 0;
         }
         return by == ColorBy.SPEED ? s.speed(i) : s.forceNorm(i);

@@ -55,6 +55,12 @@ final class ExchangeAvatar implements AvatarLink {
         this.loop = haptics;
     }
 
+    /** The exchange is lock-free: the haptic loop calls this link directly. */
+    @Override
+    public boolean neverWaits() {
+        return true;
+    }
+
     @Override
     public void setTarget(double x, double y, double z) {
         exchange.publishPosition(x, y, z);
