@@ -49,6 +49,11 @@ public final class HapticSession implements AutoCloseable {
     public static final double TOUR_PERIOD_Y = 4.0;
     /** Time over which the idle tour blends from the handle's home position onto its path, in seconds. */
     public static final double TOUR_RAMP = 2.0;
+    /**
+     * When the idle tour first crosses the middle of the workspace, in seconds after it started (then every 6 s):
+     * soon, so that a scene built in the middle is touched within the first seconds.
+     */
+    public static final double TOUR_CENTRE_TIME = 2.5;
     /** Half-size of the idle tour against the workspace's half-size (each axis). */
     public static final double TOUR_EXTENT = 0.7;
 
@@ -299,7 +304,8 @@ public final class HapticSession implements AutoCloseable {
      * Where the idle tour puts the hand t seconds after it started, in device coordinates (metres, x from motor 1
      * towards motor 2, y away from the motors): a 3:2 Lissajous figure centred in the comfortable workspace,
      * {@value #TOUR_EXTENT} of its half-width and half-height wide and tall, x swinging with period
-     * {@value #TOUR_PERIOD_X} s and y with period {@value #TOUR_PERIOD_Y} s. Over the first {@value #TOUR_RAMP} s
+     * {@value #TOUR_PERIOD_X} s and y with period {@value #TOUR_PERIOD_Y} s, through the middle at
+     * {@value #TOUR_CENTRE_TIME} s and every 6 s after. Over the first {@value #TOUR_RAMP} s
      * the target blends smoothly (zero velocity at t = 0) from the handle's home position onto the figure, so the
      * tour starts where the handle is, without a jump (from the nearest point of the workspace if home is outside
      * it). Every point is inside the workspace.
@@ -313,8 +319,9 @@ public final class HapticSession implements AutoCloseable {
         double cy = 0.5 * (box[2] + box[3]);
         double ax = TOUR_EXTENT * 0.5 * (box[1] - box[0]);
         double ay = TOUR_EXTENT * 0.5 * (box[3] - box[2]);
-        double px = cx + ax * Math.sin(2 * Math.PI * tt / TOUR_PERIOD_X);
-        double py = cy - ay * Math.sin(2 * Math.PI * tt / TOUR_PERIOD_Y);   // first towards the motors
+        double tc = tt - TOUR_CENTRE_TIME;
+        double px = cx + ax * Math.sin(2 * Math.PI * tc / TOUR_PERIOD_X);
+        double py = cy + ay * Math.sin(2 * Math.PI * tc / TOUR_PERIOD_Y);
         // the tour starts at home; a calibration pose outside the workspace (the 2DIY v2's) is brought to its edge
         double hx = Math.max(box[0], Math.min(box[1], homeX));
         double hy = Math.max(box[2], Math.min(box[3], homeY));

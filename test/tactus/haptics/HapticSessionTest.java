@@ -340,6 +340,12 @@ class HapticSessionTest {
                 assertEquals(0.5 * (box[2] + box[3]), sumY / n, 1e-3 * h, p.name());
                 assertEquals(HapticSession.TOUR_EXTENT * w, maxX - minX, 1e-3 * w, p.name());
                 assertEquals(HapticSession.TOUR_EXTENT * h, maxY - minY, 1e-3 * h, p.name());
+                // through the middle at TOUR_CENTRE_TIME, and every 6 s after
+                for (int k = 0; k < 3; k++) {
+                    s.idleTourTarget(HapticSession.TOUR_CENTRE_TIME + 6 * k, q);
+                    assertEquals(0.5 * (box[0] + box[1]), q[0], 1e-9 * w, p.name());
+                    assertEquals(0.5 * (box[2] + box[3]), q[1], 1e-9 * h, p.name());
+                }
                 // without a PApplet there is no pre(): no tour, and the status does not promise one
                 assertFalse(s.isTouring());
                 assertFalse(s.status().contains("tours"), s.status());
