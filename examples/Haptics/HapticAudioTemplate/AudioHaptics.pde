@@ -2,13 +2,16 @@
 // Audio: a PhyUGen steps the model once per sample (44.1 kHz) inside Minim's output (LineOut gives a silent
 // real-time output when there is no sound card). Haptics: a HapticSession opens the first Haply found (or the
 // emulator, whose hand tours the workspace on its own until the mouse moves, then follows the mouse) and runs
-// its 1 kHz loop on the avatar in AUDIO mode: the loop never steps the model; it queues the device position for
-// the audio thread and reads the force on the avatar without waiting for it (the PhyUGen put the model in
-// realtime stepping), and renders its mean per audio step, held between Minim's bursts of steps (FORCE_GAIN
-// newtons per model force unit). Drawing: ModelRenderer, from a snapshot.
+// its 1 kHz loop in AUDIO mode: it hands the device position to the audio thread and takes the force on the
+// avatar back through an AvatarExchange, without locks. The exchange pairs the summed force with the number of
+// audio steps it covers, so the loop renders the exact mean force per audio step (held between Minim's bursts).
+// (Attaching the session straight to the model's avatar, haptics.attach(mdl, "avatar"), also runs, but while the
+// audio thread steps the model that path reads the force and the step count in two calls, so now and then a tick
+// renders a wrong force for a millisecond; see PluckedString.) Drawing: ModelRenderer, from a snapshot.
 
 PhysicalModel mdl;
 PhyUGen ugen;
+AvatarExchange exchange;
 Minim minim;
 AudioOutput out;
 HapticSession haptics;
@@ -30,6 +33,8 @@ void setup() {
 
   ugen = new PhyUGen(mdl);
   listen(ugen);
+  exchange = new AvatarExchange(AvatarExchange.ForceMode.SUM);   // the loop takes the mean per step itself
+  ugen.attachAvatar("avatar", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);
   ugen.patch(out);
@@ -42,8 +47,22 @@ void setup() {
   alpha = ZOOM_MODEL * 100;
   ox = (float) (alpha * 0.5 * (box[0] + box[1]));
   oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
-  loop = haptics.attach(mdl, "avatar");            // the loop sets its target and takes the force on it
-  loop.setMode(HapticLoop.Mode.AUDIO);              // the audio thread steps the model, not the haptic loop
+  loop = haptics.attach(new AvatarLink() {
+    public void setTarget(double x, double y, double z) {
+      exchange.publishPosition(x, y, z);            // to the audio thread
+    }
+    public void takeForce(double[] f) {
+      takeForceCounted(f);
+    }
+    public long takeForceCounted(double[] f) {
+      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
+    }
+    public void step(int n) {
+      // the audio thread steps the model
+    }
+  });
+  loop.setMode(HapticLoop.Mode.AUDIO);
+  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(FORCE_GAIN);
   loop.setOrigin(ox, oy, 0);

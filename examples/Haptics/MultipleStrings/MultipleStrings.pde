@@ -7,8 +7,8 @@
  * mouse moves, the emulated hand tours the workspace on its own and strums the strings it crosses.
  *
  * Threads: as in PluckedString, the PhyUGen steps the model on the audio thread and the HapticSession's 1 kHz
- * loop is attached straight to the plectrum in AUDIO mode: it queues the handle's position for the audio thread
- * and renders the mean force on the plectrum per audio step (beta newtons per model force unit).
+ * loop (AUDIO mode) talks to it through an AvatarExchange: the handle's position goes in, the summed force on
+ * the plectrum comes back with the number of audio steps it covers, and the loop renders its mean per step.
  */
 
 import tactus.*;
@@ -43,6 +43,7 @@ float left, top;
 PhysicalModel mdl;
 PhyUGen ugen;
 ListeningPoint[] ears = new ListeningPoint[strings];
+AvatarExchange exchange;
 Minim minim;
 AudioOutput out;
 HapticSession haptics;
@@ -93,6 +94,8 @@ void setup() {
   for (int s = 0; s < strings; s++) {
     ears[s] = ugen.listenToMass(massName(s, 3), SteppedModel.Y, volume, -0.8 + 1.6 * s / (strings - 1));
   }
+  exchange = new AvatarExchange(AvatarExchange.ForceMode.SUM);   // the loop takes the mean per step itself
+  ugen.attachAvatar("plectrum", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);      // a silent real-time output when there is no sound card
   strum(0.03);                    // strum once, so that you hear at once that the sound works
@@ -105,8 +108,22 @@ void setup() {
   haptics.deviceWorkspace(box);                     // metres
   ox = (float) (stringLength / 2 + alpha * 0.5 * (box[0] + box[1]));
   oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
-  loop = haptics.attach(mdl, "plectrum");            // the loop sets its target and takes the force on it
-  loop.setMode(HapticLoop.Mode.AUDIO);              // the audio thread steps the model, not the haptic loop
+  loop = haptics.attach(new AvatarLink() {
+    public void setTarget(double x, double y, double z) {
+      exchange.publishPosition(x, y, z);            // to the audio thread
+    }
+    public void takeForce(double[] f) {
+      takeForceCounted(f);
+    }
+    public long takeForceCounted(double[] f) {
+      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
+    }
+    public void step(int n) {
+      // the audio thread steps the model
+    }
+  });
+  loop.setMode(HapticLoop.Mode.AUDIO);
+  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(beta);
   loop.setOrigin(ox, oy, 0);
