@@ -1,18 +1,22 @@
 // The audio-haptic machinery of the template: nothing to change here to try a new model.
 // Audio: a PhyUGen steps the model once per sample (44.1 kHz) inside Minim's output (LineOut gives a silent
-// real-time output when there is no sound card). Haptics: a HapticLoop at 1 kHz on the first Haply found (or
-// an emulated one that follows the mouse) hands the device position to the audio thread and takes the force
-// on the avatar back through an AvatarExchange, without locks. Drawing: ModelRenderer, from a snapshot.
+// real-time output when there is no sound card). Haptics: a HapticSession opens the first Haply found (or the
+// emulator, whose hand tours the workspace on its own until the mouse moves, then follows the mouse) and runs
+// its 1 kHz loop in AUDIO mode: it hands the device position to the audio thread and takes the force on the
+// avatar back through an AvatarExchange, without locks. The exchange pairs the summed force with the number of
+// audio steps it covers, so the loop renders the exact mean force per audio step (held between Minim's bursts).
+// (Attaching the session straight to the model's avatar, haptics.attach(mdl, "avatar"), also runs, but while the
+// audio thread steps the model that path reads the force and the step count in two calls, so now and then a tick
+// renders a wrong force for a millisecond; see PluckedString.) Drawing: ModelRenderer, from a snapshot.
 
 PhysicalModel mdl;
 PhyUGen ugen;
 AvatarExchange exchange;
 Minim minim;
 AudioOutput out;
-HaplyConnection haply;
+HapticSession haptics;
 HapticLoop loop;
 ModelRenderer renderer;
-boolean mouseMovedOnce = false;
 double[] handForce = new double[2];
 double[] handPosition = new double[2];
 float alpha, ox, oy;
@@ -29,38 +33,41 @@ void setup() {
 
   ugen = new PhyUGen(mdl);
   listen(ugen);
-  exchange = new AvatarExchange();
+  exchange = new AvatarExchange(AvatarExchange.ForceMode.SUM);   // the loop takes the mean per step itself
   ugen.attachAvatar("avatar", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);
   ugen.patch(out);
 
-  // model = (-alpha x + ox, alpha y + oy) for the handle at (x, y) metres; the middle of the workspace
-  // (1 cm right of motor 1, 8 cm in front of the motors) is the model's origin
+  // model = (-alpha x + ox, alpha y + oy) for the handle at (x, y) metres; the middle of the device's
+  // workspace is the model's origin. The session closes the board when the sketch ends.
+  haptics = HapticSession.open(this);               // other hardware: HapticSession.open(this, HaplyPreset.TWO_DIY_V3)
+  double[] box = new double[4];
+  haptics.deviceWorkspace(box);                     // metres
   alpha = ZOOM_MODEL * 100;
-  ox = alpha * 0.01;
-  oy = -alpha * 0.08;
-  haply = HaplyConnection.open(HaplyPreset.HAPLY_2018);
-  Device device = new Device((byte) 5, haply.board());
-  HaplyPreset.HAPLY_2018.configure(device);
-  device.device_set_parameters();
-  loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new AvatarLink() {
+  ox = (float) (alpha * 0.5 * (box[0] + box[1]));
+  oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
+  loop = haptics.attach(new AvatarLink() {
     public void setTarget(double x, double y, double z) {
-      exchange.publishPosition(x, y, z);
+      exchange.publishPosition(x, y, z);            // to the audio thread
     }
     public void takeForce(double[] f) {
-      exchange.takeForce(f);
+      takeForceCounted(f);
+    }
+    public long takeForceCounted(double[] f) {
+      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
     }
     public void step(int n) {
       // the audio thread steps the model
     }
   });
   loop.setMode(HapticLoop.Mode.AUDIO);
+  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(FORCE_GAIN);
   loop.setOrigin(ox, oy, 0);
   loop.start();
-  registerMethod("dispose", loop);
+  haptics.setView(PIXELS_PER_UNIT, width / 2, height / 2);   // how the model is drawn: the mouse lands on the avatar
 
   renderer = new ModelRenderer(this);
   renderer.setScale(PIXELS_PER_UNIT);
@@ -73,11 +80,6 @@ void setup() {
 }
 
 void draw() {
-  if (haply.isEmulated() && mouseMovedOnce) {
-    float mx = (mouseX - width / 2) / PIXELS_PER_UNIT;
-    float my = (mouseY - height / 2) / PIXELS_PER_UNIT;
-    haply.setHandTarget((ox - mx) / alpha, (my - oy) / alpha);
-  }
   background(20, 24, 32);
   pushMatrix();
   translate(width / 2, height / 2);
@@ -99,19 +101,6 @@ void draw() {
   textSize(14);
   text("Move the avatar (red) with the Haply, or with the mouse when there is none. Yellow: the force you feel.", 16, 24);
   text("Write your own model in buildModel() in the first tab.", 16, 44);
-  text(String.format("force on the handle %.2f N", Math.hypot(handForce[0], handForce[1])), 16, height - 16);
-  fill(haply.isEmulated() ? color(255, 170, 60) : color(220));
-  text(haply.status(), 16, height - 38);
-  if (loop.failure() != null) {
-    fill(255, 80, 80);
-    text("haptic loop stopped: " + loop.failure(), 16, height - 60);
-  }
-}
-
-void mouseMoved() {
-  mouseMovedOnce = true;
-}
-
-void mouseDragged() {
-  mouseMovedOnce = true;
+  text(String.format("force on the handle %.2f N", Math.hypot(handForce[0], handForce[1])), 16, height - 34);
+  haptics.drawStatus();   // which board, or that the mouse is the hand (and why the loop stopped, if it did)
 }

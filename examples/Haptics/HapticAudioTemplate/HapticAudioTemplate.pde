@@ -2,13 +2,13 @@
  * HapticAudioTemplate: a starting point for your own audio-haptic model. Write the model in buildModel()
  * below and say what to listen to in listen(); the other tab (AudioHaptics) plays it at 44.1 kHz through
  * Minim, runs the 1 kHz haptic loop of a Haply on the avatar, and draws everything, so this tab holds model
- * code only. With no Haply plugged in, an emulated one is used and the mouse is the hand (the screen says so).
+ * code only. With no Haply plugged in, an emulated one is used and the mouse is the hand (the screen says so);
+ * until the mouse moves, the emulated hand tours the middle of the workspace on its own.
  */
 
 import tactus.*;
 import tactus.audio.*;
 import tactus.haptics.*;
-import tactus.haptics.emulator.*;
 import ddf.minim.*;
 
 // Units are algorithmic (per audio step). The model's origin is the middle of the Haply's workspace and

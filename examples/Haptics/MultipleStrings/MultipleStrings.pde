@@ -3,13 +3,17 @@
  * through a Haply: pluck them one at a time, or sweep across all of them for a strum. Each string is the
  * plucked string of the paper (Mass2DPlane masses, spring-dampers, a contact with the plectrum for every
  * mass), all five in one model stepped at 44.1 kHz by a PhyUGen, each heard from its own place in stereo.
- * With no Haply plugged in, an emulated one is used and the mouse is the hand (the screen says so).
+ * With no Haply plugged in, an emulated one is used and the mouse is the hand (the screen says so); until the
+ * mouse moves, the emulated hand tours the workspace on its own and strums the strings it crosses.
+ *
+ * Threads: as in PluckedString, the PhyUGen steps the model on the audio thread and the HapticSession's 1 kHz
+ * loop (AUDIO mode) talks to it through an AvatarExchange: the handle's position goes in, the summed force on
+ * the plectrum comes back with the number of audio steps it covers, and the loop renders its mean per step.
  */
 
 import tactus.*;
 import tactus.audio.*;
 import tactus.haptics.*;
-import tactus.haptics.emulator.*;
 import ddf.minim.*;
 
 // ---- the strings (algorithmic units: per audio step)
@@ -30,8 +34,7 @@ float volume = 20;               // listening gain of each string
 float alpha = 25;
 float beta = 1500;
 float stringLength = (masses + 1) * spacing;
-float ox = stringLength / 2 + alpha * 0.01;
-float oy = -alpha * 0.08;
+float ox, oy;                    // set in setup(): the middle string's middle is the middle of the workspace
 
 // ---- screen
 float zoom = 260;
@@ -43,10 +46,9 @@ ListeningPoint[] ears = new ListeningPoint[strings];
 AvatarExchange exchange;
 Minim minim;
 AudioOutput out;
-HaplyConnection haply;
+HapticSession haptics;
 HapticLoop loop;
 ModelRenderer renderer;
-boolean mouseMovedOnce = false;
 double[] force = new double[2];
 double[] handle = new double[2];
 
@@ -92,36 +94,41 @@ void setup() {
   for (int s = 0; s < strings; s++) {
     ears[s] = ugen.listenToMass(massName(s, 3), SteppedModel.Y, volume, -0.8 + 1.6 * s / (strings - 1));
   }
-  exchange = new AvatarExchange();
+  exchange = new AvatarExchange(AvatarExchange.ForceMode.SUM);   // the loop takes the mean per step itself
   ugen.attachAvatar("plectrum", exchange);
   minim = new Minim(this);
   out = LineOut.open(minim);      // a silent real-time output when there is no sound card
   strum(0.03);                    // strum once, so that you hear at once that the sound works
   ugen.patch(out);
 
-  // Haptics: the first Haply found, or an emulated one that follows the mouse. Other hardware: change the
-  // preset (TWO_DIY_V2, TWO_DIY_V3) and move ox, oy to the middle of its workspace.
-  haply = HaplyConnection.open(HaplyPreset.HAPLY_2018);
-  Device device = new Device((byte) 5, haply.board());
-  HaplyPreset.HAPLY_2018.configure(device);
-  device.device_set_parameters();
-  loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new AvatarLink() {
+  // Haptics: the first Haply found, or the emulator with the mouse as the hand (other hardware:
+  // HapticSession.open(this, HaplyPreset.TWO_DIY_V3)). The session closes the board when the sketch ends.
+  haptics = HapticSession.open(this);
+  double[] box = new double[4];
+  haptics.deviceWorkspace(box);                     // metres
+  ox = (float) (stringLength / 2 + alpha * 0.5 * (box[0] + box[1]));
+  oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
+  loop = haptics.attach(new AvatarLink() {
     public void setTarget(double x, double y, double z) {
-      exchange.publishPosition(x, y, z);
+      exchange.publishPosition(x, y, z);            // to the audio thread
     }
     public void takeForce(double[] f) {
-      exchange.takeForce(f);
+      takeForceCounted(f);
+    }
+    public long takeForceCounted(double[] f) {
+      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
     }
     public void step(int n) {
       // the audio thread steps the model
     }
   });
   loop.setMode(HapticLoop.Mode.AUDIO);
+  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(beta);
   loop.setOrigin(ox, oy, 0);
   loop.start();
-  registerMethod("dispose", loop);
+  haptics.setView(zoom, left, top);                 // how the model is drawn: the mouse lands on the plectrum
 
   renderer = new ModelRenderer(this);
   renderer.setScale(zoom);
@@ -137,12 +144,6 @@ void setup() {
 }
 
 void draw() {
-  if (haply.isEmulated() && mouseMovedOnce) {
-    float mx = (mouseX - left) / zoom;
-    float my = (mouseY - top) / zoom;
-    haply.setHandTarget((ox - mx) / alpha, (my - oy) / alpha);
-  }
-
   background(20, 24, 32);
   pushMatrix();
   translate(left, top);
@@ -165,13 +166,8 @@ void draw() {
   text("Pluck one string, or sweep the plectrum (red) across all five to strum them.", 16, 24);
   text("[ and ]: sphere of action (" + nf(sphere, 1, 2) + ")   UP / DOWN: volume (" + nf(volume, 1, 0)
     + ")   SPACE: strum for you   R: still the strings", 16, 44);
-  text(String.format("force on the handle %.2f N", Math.hypot(force[0], force[1])), 16, height - 16);
-  fill(haply.isEmulated() ? color(255, 170, 60) : color(220));
-  text(haply.status(), 16, height - 38);
-  if (loop.failure() != null) {
-    fill(255, 80, 80);
-    text("haptic loop stopped: " + loop.failure(), 16, height - 60);
-  }
+  text(String.format("force on the handle %.2f N", Math.hypot(force[0], force[1])), 16, height - 34);
+  haptics.drawStatus();   // which board, or that the mouse is the hand (and why the loop stopped, if it did)
 }
 
 // Lifts every string into a triangle of the given height, its apex a quarter of the way along, and lets go.
@@ -183,14 +179,6 @@ void strum(float height) {
       mdl.setMatPosition(massName(s, i), new Vect3D(i * spacing, stringY(s) + y, 0));
     }
   }
-}
-
-void mouseMoved() {
-  mouseMovedOnce = true;
-}
-
-void mouseDragged() {
-  mouseMovedOnce = true;
 }
 
 void keyPressed() {

@@ -29,9 +29,10 @@ import tactus.haptics.emulator.HaplyConnection;
  * lands on the avatar.
  *
  * <p>With a PApplet, the session registers itself with Processing: {@code pre()} moves the emulated hand
- * towards the mouse (once the mouse has moved over the window; until then the hand holds the handle still),
- * and {@code dispose()} stops the loop and closes the board, which sends zero torques. The board also does
- * so from a JVM shutdown hook. The loop asks for real-time scheduling ({@link HapticLoop#setRealtimePriority},
+ * towards the mouse once the mouse has moved over the window; until then the hand takes the handle on a slow
+ * idle tour through the middle of the workspace ({@link #setIdleTour(boolean)}, on by default), so that a
+ * scene shows what the device does before anyone touches the mouse. {@code dispose()} stops the loop and
+ * closes the board, which sends zero torques. The board also does so from a JVM shutdown hook. The loop asks for real-time scheduling ({@link HapticLoop#setRealtimePriority},
  * priority {@value #REALTIME_PRIORITY}) and runs at normal priority where that is not allowed.
  */
 public final class HapticSession implements AutoCloseable {
@@ -42,6 +43,19 @@ public final class HapticSession implements AutoCloseable {
     /** Window size used for the mapping without a PApplet, in pixels. */
     static final int DEFAULT_WIDTH = 800;
     static final int DEFAULT_HEIGHT = 600;
+    /** Period of the idle tour's horizontal swing, in seconds. */
+    public static final double TOUR_PERIOD_X = 6.0;
+    /** Period of the idle tour's vertical swing, in seconds (a 3:2 Lissajous figure: one lap takes 12 s). */
+    public static final double TOUR_PERIOD_Y = 4.0;
+    /** Time over which the idle tour blends from the handle's home position onto its path, in seconds. */
+    public static final double TOUR_RAMP = 2.0;
+    /**
+     * When the idle tour first crosses the middle of the workspace, in seconds after it started (then every 6 s):
+     * soon, so that a scene built in the middle is touched within the first seconds.
+     */
+    public static final double TOUR_CENTRE_TIME = 2.5;
+    /** Half-size of the idle tour against the workspace's half-size (each axis). */
+    public static final double TOUR_EXTENT = 0.7;
 
     private final PApplet app;
     private final HaplyPreset preset;
@@ -60,6 +74,9 @@ public final class HapticSession implements AutoCloseable {
 
     private volatile HapticLoop loop;
     private volatile boolean mouseSeen;
+    private volatile boolean idleTour = true;
+    private long tourStart;                        // System.nanoTime() of the first toured pre(); 0: not yet
+    private final double[] tourTarget = new double[2];
     private double viewScale = 1;
     private double viewX;
     private double viewY;
@@ -85,9 +102,9 @@ public final class HapticSession implements AutoCloseable {
         }
         this.connection = conn;
         this.device = dev;
-        this.boardStatus = conn.isEmulated()
-                ? "No Haply board found: emulated board, the mouse is your hand"
-                : "Haply board: " + conn.status();
+        this.boardStatus = !conn.isEmulated() ? "Haply board: " + conn.status()
+                : why != null ? capitalised(why) + ": emulated board, the mouse is your hand"
+                : "No Haply board found: emulated board, the mouse is your hand";
         workspaceOf(preset.newKinematics(), box);
         PantographKinematics k = preset.newKinematics();
         double hx = 0.5 * (box[0] + box[1]);
@@ -109,6 +126,10 @@ public final class HapticSession implements AutoCloseable {
             app.registerMethod("mouseEvent", this);
             app.registerMethod("dispose", this);
         }
+    }
+
+    private static String capitalised(String s) {
+        return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1);
     }
 
     /** Waits up to 200 ms for the reply to the request sent at set-up; true if it came. */
@@ -245,13 +266,70 @@ public final class HapticSession implements AutoCloseable {
     }
 
     /**
-     * One line for the screen: which board (or that the mouse is the hand), and why the loop stopped if it
-     * stopped by itself.
+     * One line for the screen: which board (or that the mouse is the hand, and, while the idle tour runs, that
+     * the hand tours on its own until the mouse moves), and why the loop stopped if it stopped by itself.
      */
     public String status() {
         HapticLoop l = loop;
         String f = l == null ? null : l.failure();
-        return f == null ? boardStatus : boardStatus + ". Haptic loop stopped: " + f;
+        String s = isTouring() ? boardStatus + "; the hand tours on its own until you move the mouse" : boardStatus;
+        return f == null ? s : s + ". Haptic loop stopped: " + f;
+    }
+
+    /**
+     * Switches the idle tour on (the default) or off. While it is on, the board is emulated, the session has a
+     * PApplet and the mouse has not moved over the window yet, each {@code pre()} moves the emulated hand along
+     * {@link #idleTourTarget(double, double[])}; off, the hand holds the handle still until the mouse moves. The
+     * first mouse move, drag or press ends the tour for good. Switching it off leaves the hand where the tour
+     * was; switching it on again resumes the path from where its clock stands.
+     */
+    public void setIdleTour(boolean on) {
+        idleTour = on;
+    }
+
+    /** True if the idle tour is switched on (see {@link #setIdleTour(boolean)}); it may have ended already. */
+    public boolean isIdleTour() {
+        return idleTour;
+    }
+
+    /**
+     * True while the idle tour drives the emulated hand: switched on, the board emulated, a PApplet to call
+     * {@code pre()}, and no mouse event yet.
+     */
+    public boolean isTouring() {
+        return idleTour && !mouseSeen && app != null && connection.isEmulated();
+    }
+
+    /**
+     * Where the idle tour puts the hand t seconds after it started, in device coordinates (metres, x from motor 1
+     * towards motor 2, y away from the motors): a 3:2 Lissajous figure centred in the comfortable workspace,
+     * {@value #TOUR_EXTENT} of its half-width and half-height wide and tall, x swinging with period
+     * {@value #TOUR_PERIOD_X} s and y with period {@value #TOUR_PERIOD_Y} s, through the middle at
+     * {@value #TOUR_CENTRE_TIME} s and every 6 s after. Over the first {@value #TOUR_RAMP} s
+     * the target blends smoothly (zero velocity at t = 0) from the handle's home position onto the figure, so the
+     * tour starts where the handle is, without a jump (from the nearest point of the workspace if home is outside
+     * it). Every point is inside the workspace.
+     *
+     * @param t   seconds since the tour started (negative counts as 0)
+     * @param out receives x, y in metres
+     */
+    public void idleTourTarget(double t, double[] out) {
+        double tt = Math.max(0, t);
+        double cx = 0.5 * (box[0] + box[1]);
+        double cy = 0.5 * (box[2] + box[3]);
+        double ax = TOUR_EXTENT * 0.5 * (box[1] - box[0]);
+        double ay = TOUR_EXTENT * 0.5 * (box[3] - box[2]);
+        double tc = tt - TOUR_CENTRE_TIME;
+        double px = cx + ax * Math.sin(2 * Math.PI * tc / TOUR_PERIOD_X);
+        double py = cy + ay * Math.sin(2 * Math.PI * tc / TOUR_PERIOD_Y);
+        // the tour starts at home; a calibration pose outside the workspace (the 2DIY v2's) is brought to its edge
+        double hx = Math.max(box[0], Math.min(box[1], homeX));
+        double hy = Math.max(box[2], Math.min(box[3], homeY));
+        double u = Math.min(1, tt / TOUR_RAMP);
+        double s = u * u * (3 - 2 * u);                                       // smoothstep: 0 -> 1, flat ends
+        // home and the figure are both inside the (convex) workspace, so every blend of them is too
+        out[0] = hx + s * (px - hx);
+        out[1] = hy + s * (py - hy);
     }
 
     /**
@@ -275,6 +353,16 @@ public final class HapticSession implements AutoCloseable {
         double d = modelY(alpha * box[3] + oy);
         out[2] = Math.min(c, d);
         out[3] = Math.max(c, d);
+    }
+
+    /**
+     * The comfortable workspace in device coordinates, metres (x from motor 1 towards motor 2, y away from the
+     * motors): writes xmin, xmax, ymin, ymax into out[0..3]. For a sketch that sets its own mapping on the loop
+     * ({@link HapticLoop#setPositionGain}, {@link HapticLoop#setOrigin}) and wants its scene in the middle of it,
+     * where the idle tour goes.
+     */
+    public void deviceWorkspace(double[] out) {
+        System.arraycopy(box, 0, out, 0, 4);
     }
 
     private double modelY(double pixelY) {
@@ -380,14 +468,30 @@ public final class HapticSession implements AutoCloseable {
         return telemetryText;
     }
 
-    /** Processing calls this before each {@code draw()}: the emulated hand follows the mouse once it has moved. */
+    /**
+     * Processing calls this before each {@code draw()}: the emulated hand follows the mouse once it has moved;
+     * until then it follows the idle tour ({@link #setIdleTour(boolean)}), whose clock starts at the first call.
+     */
     public void pre() {
-        if (app != null && mouseSeen) {
+        if (app == null) {
+            return;
+        }
+        if (mouseSeen) {
             handTowardsPixel(app.mouseX, app.mouseY);
+        } else if (isTouring()) {
+            long now = System.nanoTime();
+            if (tourStart == 0) {
+                tourStart = now == 0 ? 1 : now;
+            }
+            idleTourTarget((now - tourStart) * 1e-9, tourTarget);
+            connection.setHandTarget(tourTarget[0], tourTarget[1]);
         }
     }
 
-    /** Processing calls this for mouse events: the first move or drag over the window hands the hand to the mouse. */
+    /**
+     * Processing calls this for mouse events: the first move, drag or press over the window ends the idle tour
+     * and hands the hand to the mouse.
+     */
     public void mouseEvent(MouseEvent e) {
         int a = e.getAction();
         if (a == MouseEvent.MOVE || a == MouseEvent.DRAG || a == MouseEvent.PRESS) {

@@ -246,10 +246,17 @@ class HapticSessionTest {
         double[] ws = new double[4];
         s.workspace(ws);
         assertEquals(320, 0.5 * (ws[0] + ws[1]), 1e-9);
-        // before the mouse has moved, pre() leaves the hand where it is
+        // with the idle tour off, before the mouse has moved, pre() leaves the hand where it is
+        s.setIdleTour(false);
+        assertFalse(s.isTouring());
+        assertFalse(s.status().contains("tours"), s.status());
         app.mouseX = 0;
         app.mouseY = 0;
-        app.runPre();
+        long until = System.nanoTime() + 300_000_000L;
+        while (System.nanoTime() < until) {          // 0.3 s of frames: the tour would have moved the hand
+            app.runPre();
+            LockSupport.parkNanos(16_000_000);
+        }
         await(() -> loop.ticks() > 50, "ticks");
         Vect3D still = pm.getMatPosition("avatar");
         assertEquals(s.home().x, still.x, 2);
@@ -270,6 +277,138 @@ class HapticSessionTest {
         assertFalse(loop.isRunning());
         assertEquals(0, s.emulator().duty(1));
         assertEquals(0, s.emulator().duty(2));
+        assertTrue(s.emulator().isUnplugged());
+    }
+
+    @Test
+    void theIdleTourStartsAtHomeStaysInTheWorkspaceAndLoopsSmoothly() {
+        for (HaplyPreset p : HaplyPreset.values()) {
+            try (HapticSession s = HapticSession.openEmulated(null, p)) {
+                double[] box = new double[4];
+                s.deviceWorkspace(box);
+                double w = box[1] - box[0];
+                double h = box[3] - box[2];
+                // t = 0: the handle's home position (as home() maps it), or the nearest point of the workspace
+                // for a calibration pose outside it
+                HapticLoop loop = s.attach(freeAvatar(s.home()), "avatar");
+                double[] hd = new double[2];
+                loop.modelToDevice(s.home().x, s.home().y, hd);
+                double[] q = new double[2];
+                s.idleTourTarget(0, q);
+                assertEquals(Math.max(box[0], Math.min(box[1], hd[0])), q[0], 1e-9, p.name());
+                assertEquals(Math.max(box[2], Math.min(box[3], hd[1])), q[1], 1e-9, p.name());
+                double[] m = new double[2];
+                s.idleTourTarget(-5, m);                 // before the start: still home
+                assertEquals(q[0], m[0], 0);
+                assertEquals(q[1], m[1], 0);
+                // two laps sampled every 5 ms: inside the workspace, no jump, a slow hand
+                double dt = 0.005;
+                double lap = 12;                          // 3:2 Lissajous of periods 6 s and 4 s
+                double minX = Double.MAX_VALUE;
+                double maxX = -Double.MAX_VALUE;
+                double minY = Double.MAX_VALUE;
+                double maxY = -Double.MAX_VALUE;
+                double sumX = 0;
+                double sumY = 0;
+                int n = 0;
+                double[] prev = q.clone();
+                for (int i = 1; i * dt <= 2 * lap + HapticSession.TOUR_RAMP; i++) {
+                    double t = i * dt;
+                    s.idleTourTarget(t, q);
+                    String at = p + " at t = " + t + " s: (" + q[0] + ", " + q[1] + ")";
+                    assertTrue(q[0] >= box[0] && q[0] <= box[1] && q[1] >= box[2] && q[1] <= box[3], at);
+                    double speed = Math.hypot(q[0] - prev[0], q[1] - prev[1]) / dt;
+                    assertTrue(speed < 0.2, at + " moves at " + speed + " m/s");
+                    prev[0] = q[0];
+                    prev[1] = q[1];
+                    if (t >= HapticSession.TOUR_RAMP + lap) {   // the last full lap, past the ramp
+                        minX = Math.min(minX, q[0]);
+                        maxX = Math.max(maxX, q[0]);
+                        minY = Math.min(minY, q[1]);
+                        maxY = Math.max(maxY, q[1]);
+                        sumX += q[0];
+                        sumY += q[1];
+                        n++;
+                        double[] earlier = new double[2];
+                        s.idleTourTarget(t - lap, earlier);
+                        assertEquals(earlier[0], q[0], 1e-12, at + ": periodic");
+                        assertEquals(earlier[1], q[1], 1e-12, at + ": periodic");
+                    }
+                }
+                // a figure centred in the workspace, TOUR_EXTENT of its half-size each way
+                assertEquals(0.5 * (box[0] + box[1]), sumX / n, 1e-3 * w, p.name());
+                assertEquals(0.5 * (box[2] + box[3]), sumY / n, 1e-3 * h, p.name());
+                assertEquals(HapticSession.TOUR_EXTENT * w, maxX - minX, 1e-3 * w, p.name());
+                assertEquals(HapticSession.TOUR_EXTENT * h, maxY - minY, 1e-3 * h, p.name());
+                // through the middle at TOUR_CENTRE_TIME, and every 6 s after
+                for (int k = 0; k < 3; k++) {
+                    s.idleTourTarget(HapticSession.TOUR_CENTRE_TIME + 6 * k, q);
+                    assertEquals(0.5 * (box[0] + box[1]), q[0], 1e-9 * w, p.name());
+                    assertEquals(0.5 * (box[2] + box[3]), q[1], 1e-9 * h, p.name());
+                }
+                // without a PApplet there is no pre(): no tour, and the status does not promise one
+                assertFalse(s.isTouring());
+                assertFalse(s.status().contains("tours"), s.status());
+            }
+        }
+    }
+
+    @Test
+    void beforeTheMouseMovesTheHandToursAndTheFirstMouseEventEndsTheTour() {
+        HookedApp app = new HookedApp();
+        app.width = 640;
+        app.height = 480;
+        HapticSession s = HapticSession.openEmulated(app, HaplyPreset.HAPLY_2018);
+        try {
+            assertTrue(s.isIdleTour(), "on by default");
+            assertTrue(s.isTouring());
+            assertTrue(s.status().endsWith("the hand tours on its own until you move the mouse"), s.status());
+            PhysicalModel pm = freeAvatar(s.home());
+            HapticLoop loop = s.attach(pm, "avatar");
+            loop.start();
+            double[] ws = new double[4];
+            s.workspace(ws);
+            Vect3D home = s.home();
+            // frames at about 60 Hz for up to 5 s: the avatar leaves home and travels, always inside the workspace
+            double far = 0;
+            double margin = 3;                       // pixels: the hand is a spring, the avatar smooths
+            long until = System.nanoTime() + 5_000_000_000L;
+            while (System.nanoTime() < until && far < 0.25 * (ws[1] - ws[0])) {
+                app.runPre();
+                LockSupport.parkNanos(16_000_000);
+                Vect3D p = pm.getMatPosition("avatar");
+                assertTrue(p.x > ws[0] - margin && p.x < ws[1] + margin && p.y > ws[2] - margin
+                        && p.y < ws[3] + margin, "the avatar left the workspace on the tour: " + p);
+                far = Math.max(far, Math.hypot(p.x - home.x, p.y - home.y));
+            }
+            assertTrue(far >= 0.25 * (ws[1] - ws[0]), "the tour moved the avatar only " + far + " px from home");
+            assertTrue(loop.isRunning(), () -> "loop: " + loop.failure());
+            // the first mouse event ends the tour: the avatar goes to the mouse and stays there
+            int mx = (int) (ws[0] + 0.2 * (ws[1] - ws[0]));
+            int my = (int) (ws[2] + 0.8 * (ws[3] - ws[2]));
+            app.mouseX = mx;
+            app.mouseY = my;
+            s.mouseEvent(new processing.event.MouseEvent(null, 0, processing.event.MouseEvent.MOVE, 0, mx, my, 0, 0));
+            assertFalse(s.isTouring());
+            assertFalse(s.status().contains("tours"), s.status());
+            assertTrue(s.isIdleTour(), "the switch itself stays on");
+            app.runPre();
+            await(() -> {
+                Vect3D p = pm.getMatPosition("avatar");
+                return Math.abs(p.x - mx) < 2 && Math.abs(p.y - my) < 2;
+            }, "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my);
+            LockSupport.parkNanos(500_000_000L);     // let the hand's spring settle from the tour's speed
+            app.runPre();
+            long still = System.nanoTime() + 1_000_000_000L;
+            while (System.nanoTime() < still) {      // a second of frames with the mouse still: no more touring
+                app.runPre();
+                LockSupport.parkNanos(16_000_000);
+                Vect3D p = pm.getMatPosition("avatar");
+                assertTrue(Math.abs(p.x - mx) < 2 && Math.abs(p.y - my) < 2, "the tour went on: " + p);
+            }
+        } finally {
+            app.runDispose();
+        }
         assertTrue(s.emulator().isUnplugged());
     }
 }

@@ -38,7 +38,7 @@ public final class HaplyConnection implements AutoCloseable {
         } catch (HaplyLinkException | UnsatisfiedLinkError | NoClassDefFoundError e) {
             why = e.getMessage();
         }
-        return emulated(preset, "no Haply board found (" + firstSentence(why) + "): emulated board, the mouse is the hand");
+        return emulated(preset, emulatedStatus(firstSentence(why)));
     }
 
     /** An in-process emulator of the preset's hardware whose hand follows {@link #setHandTarget}. */
@@ -47,6 +47,19 @@ public final class HaplyConnection implements AutoCloseable {
         Hand h = Hand.following(emu.x(), emu.y(), 300, 3);
         emu.setHand(h);
         return new HaplyConnection(new Board(emu.connect()), emu, h, status);
+    }
+
+    /**
+     * The status line of the fallback: "no Haply board found: ..." when that is the whole reason (the message of
+     * {@link SerialPorts#findHaply()} says just that in its first sentence), with the reason in brackets otherwise
+     * (a port that could not be opened, a missing serial library).
+     */
+    static String emulatedStatus(String reason) {
+        String tail = ": emulated board, the mouse is the hand";
+        if (reason == null || reason.isEmpty() || reason.trim().equalsIgnoreCase("no Haply board found")) {
+            return "no Haply board found" + tail;
+        }
+        return "no Haply board found (" + reason + ")" + tail;
     }
 
     private static String firstSentence(String s) {

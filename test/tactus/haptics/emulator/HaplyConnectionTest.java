@@ -1,6 +1,7 @@
 package tactus.haptics.emulator;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Assumptions;
@@ -18,6 +19,7 @@ class HaplyConnectionTest {
         try (HaplyConnection c = HaplyConnection.open(HaplyPreset.TWO_DIY_V3)) {
             assertTrue(c.isEmulated());
             assertTrue(c.status().contains("no Haply board found") && c.status().contains("mouse"), c.status());
+            assertFalse(c.status().contains("(no Haply board found"), "the reason said twice: " + c.status());
             Device d = new Device((byte) 5, c.board());
             HaplyPreset.TWO_DIY_V3.configure(d);
             d.device_set_parameters();
@@ -48,5 +50,14 @@ class HaplyConnectionTest {
         assertTrue(SerialPorts.looksLikeHaply("/dev/cu.usbmodem1411", "", -1));
         assertTrue(!SerialPorts.looksLikeHaply("/dev/ttyS0", "Physical Port S0", -1));
         assertTrue(!SerialPorts.looksLikeHaply("/dev/ttyUSB0", "FT232R USB UART", 0x0403));
+    }
+
+    @Test
+    void theFallbackStatusSaysTheReasonOnce() {
+        assertEquals("no Haply board found: emulated board, the mouse is the hand",
+                HaplyConnection.emulatedStatus("no Haply board found"));
+        assertEquals("no Haply board found (port busy): emulated board, the mouse is the hand",
+                HaplyConnection.emulatedStatus("port busy"));
+        assertEquals("no Haply board found: emulated board, the mouse is the hand", HaplyConnection.emulatedStatus(null));
     }
 }
