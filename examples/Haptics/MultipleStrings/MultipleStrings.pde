@@ -108,22 +108,8 @@ void setup() {
   haptics.deviceWorkspace(box);                     // metres
   ox = (float) (stringLength / 2 + alpha * 0.5 * (box[0] + box[1]));
   oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
-  loop = haptics.attach(new AvatarLink() {
-    public void setTarget(double x, double y, double z) {
-      exchange.publishPosition(x, y, z);            // to the audio thread
-    }
-    public void takeForce(double[] f) {
-      takeForceCounted(f);
-    }
-    public long takeForceCounted(double[] f) {
-      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
-    }
-    public void step(int n) {
-      // the audio thread steps the model
-    }
-  });
+  loop = haptics.attach(new ExchangeAvatarLink(exchange));  // position to the audio thread, force back
   loop.setMode(HapticLoop.Mode.AUDIO);
-  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(beta);
   loop.setOrigin(ox, oy, 0);

@@ -13,8 +13,7 @@
  * unit. We chose this over attaching the session to the model's avatar directly (haptics.attach(mdl, "plectrum")
  * in AUDIO mode): while the PhyUGen steps the model in realtime, that path reads the force and the step count in
  * two calls, so now and then a tick divides the force by one step too many or too few and renders a wrong force
- * for a millisecond (seen: 43 % of the true force on one tick in 500). The small AvatarLink below is the only
- * glue, since tactus.haptics and tactus.audio do not know each other.
+ * for a millisecond (seen: 43 % of the true force on one tick in 500). ExchangeAvatarLink is the only glue.
  */
 
 import tactus.*;
@@ -101,22 +100,8 @@ void setup() {
   haptics.deviceWorkspace(box);                     // metres
   ox = (float) (stringLength / 2 + alpha * 0.5 * (box[0] + box[1]));
   oy = (float) (-alpha * 0.5 * (box[2] + box[3]));
-  loop = haptics.attach(new AvatarLink() {
-    public void setTarget(double x, double y, double z) {
-      exchange.publishPosition(x, y, z);            // to the audio thread
-    }
-    public void takeForce(double[] f) {
-      takeForceCounted(f);
-    }
-    public long takeForceCounted(double[] f) {
-      return exchange.takeForce(f);                 // from the audio thread: the sum, and the steps it covers
-    }
-    public void step(int n) {
-      // the audio thread steps the model
-    }
-  });
+  loop = haptics.attach(new ExchangeAvatarLink(exchange));  // position to the audio thread, force back
   loop.setMode(HapticLoop.Mode.AUDIO);
-  loop.setDecoupledInAudioMode(false);              // the exchange never waits: no helper thread needed
   loop.setPositionGain(alpha);
   loop.setForceGain(beta);
   loop.setOrigin(ox, oy, 0);
