@@ -16,7 +16,7 @@ final class Spectrum {
             double w = 0.5 - 0.5 * Math.cos(2 * Math.PI * i / n);
             re[i] = x[offset + i] * w;
         }
-        fft(re, im);
+        tactus.report.Fft.transform(re, im);
         magnitude = new double[n / 2];
         for (int i = 0; i < n / 2; i++) {
             magnitude[i] = Math.hypot(re[i], im[i]);
@@ -54,41 +54,5 @@ final class Spectrum {
 
     static double cents(double f, double reference) {
         return 1200 * Math.log(f / reference) / Math.log(2);
-    }
-
-    private static void fft(double[] re, double[] im) {
-        int n = re.length;
-        for (int i = 1, j = 0; i < n; i++) {
-            int bit = n >> 1;
-            for (; (j & bit) != 0; bit >>= 1) {
-                j ^= bit;
-            }
-            j ^= bit;
-            if (i < j) {
-                double t = re[i];
-                re[i] = re[j];
-                re[j] = t;
-                t = im[i];
-                im[i] = im[j];
-                im[j] = t;
-            }
-        }
-        for (int len = 2; len <= n; len <<= 1) {
-            double ang = -2 * Math.PI / len;
-            for (int i = 0; i < n; i += len) {
-                for (int k = 0; k < len / 2; k++) {
-                    double wr = Math.cos(ang * k);
-                    double wi = Math.sin(ang * k);
-                    int u = i + k;
-                    int v = u + len / 2;
-                    double xr = re[v] * wr - im[v] * wi;
-                    double xi = re[v] * wi + im[v] * wr;
-                    re[v] = re[u] - xr;
-                    im[v] = im[u] - xi;
-                    re[u] += xr;
-                    im[u] += xi;
-                }
-            }
-        }
     }
 }

@@ -36,7 +36,7 @@ public final class Pitch {
             double w = 0.5 * (1 - Math.cos(2 * Math.PI * i / (count - 1)));
             re[i] = w * samples[from + i];
         }
-        fft(re, im);
+        tactus.report.Fft.transform(re, im);
         magnitude = new double[n / 2 + 1];
         for (int k = 0; k <= n / 2; k++) {
             magnitude[k] = Math.hypot(re[k], im[k]);
@@ -90,42 +90,5 @@ public final class Pitch {
             }
         }
         return best;
-    }
-
-    /** In-place radix-2 FFT; the length must be a power of two. */
-    static void fft(double[] re, double[] im) {
-        int n = re.length;
-        for (int i = 1, j = 0; i < n; i++) {
-            int bit = n >> 1;
-            for (; (j & bit) != 0; bit >>= 1) {
-                j ^= bit;
-            }
-            j ^= bit;
-            if (i < j) {
-                double t = re[i];
-                re[i] = re[j];
-                re[j] = t;
-                t = im[i];
-                im[i] = im[j];
-                im[j] = t;
-            }
-        }
-        for (int len = 2; len <= n; len <<= 1) {
-            double angle = -2 * Math.PI / len;
-            for (int i = 0; i < n; i += len) {
-                for (int k = 0; k < len / 2; k++) {
-                    double c = Math.cos(angle * k);
-                    double s = Math.sin(angle * k);
-                    int p = i + k;
-                    int q = p + len / 2;
-                    double xr = re[q] * c - im[q] * s;
-                    double xi = re[q] * s + im[q] * c;
-                    re[q] = re[p] - xr;
-                    im[q] = im[p] - xi;
-                    re[p] += xr;
-                    im[p] += xi;
-                }
-            }
-        }
     }
 }
