@@ -20,8 +20,11 @@ final class ForceTaps {
         /** Written by the owner only, odd while it writes. */
         volatile long seq;
         double sx, sy, sz;
+        /** Written by the owner only: how many steps the sums cover. */
+        long sn;
         /** The reader's last consistent copy of the sums; touched under the model's lock only. */
         double rx, ry, rz;
+        long rn;
 
         Tap(int id) {
             this.id = id;
@@ -62,28 +65,32 @@ final class ForceTaps {
             if (!e.isMass(t.id)) {
                 continue;
             }
-            e.takeForce(t.id, tmp);
+            long n = e.takeForce(t.id, tmp);
             long s = t.seq;
             t.seq = s + 1;
             VarHandle.storeStoreFence();
             t.sx += tmp[0];
             t.sy += tmp[1];
             t.sz += tmp[2];
+            t.sn += n;
             t.seq = s + 2;
         }
     }
 
     /**
-     * Writes the force (model units, summed over the steps) accumulated since the previous read into {@code out}.
-     * Retries while the owner is writing (a few nanoseconds); the caller holds the model's lock.
+     * Writes the force (model units, summed over the steps) accumulated since the previous read into {@code out},
+     * and returns how many steps it covers, read together with it. Retries while the owner is writing (a few
+     * nanoseconds); the caller holds the model's lock, or is the owner.
      */
-    void take(Engine e, Tap t, double[] out) {
+    long take(Engine e, Tap t, double[] out) {
         double x, y, z;
+        long n;
         while (true) {
             long s1 = t.seq;
             x = t.sx;
             y = t.sy;
             z = t.sz;
+            n = t.sn;
             VarHandle.loadLoadFence();
             if ((s1 & 1) == 0 && s1 == t.seq) {
                 break;
@@ -93,14 +100,17 @@ final class ForceTaps {
         out[0] = x - t.rx;
         out[1] = y - t.ry;
         out[2] = z - t.rz;
+        long steps = n - t.rn;
         t.rx = x;
         t.ry = y;
         t.rz = z;
+        t.rn = n;
         if (e.massKind(t.id) == MassKind.POS_INPUT3D) {
             out[0] = 0;
             out[1] = 0;
             out[2] = 0;
         }
+        return steps;
     }
 
     boolean isEmpty() {

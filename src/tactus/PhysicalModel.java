@@ -1812,6 +1812,25 @@ public class PhysicalModel {
     }
 
     /**
+     * As {@link #getHapticForce(String, Vect3D)}, and returns how many model steps the force sums over, read
+     * together with it (0 if no step ran since the last read): force / steps is the mean force per step even while
+     * another thread steps the model in realtime and in bursts (an audio thread). Not in the paper's engine.
+     */
+    public long getHapticForceCounted(String name, Vect3D out) {
+        if (out == null) {
+            throw Check.fail("getHapticForceCounted", name, "out must not be null");
+        }
+        enter();
+        try {
+            int id = core.dir.massId("getHapticForceCounted", name);
+            core.state.requireInput("getHapticForceCounted", id);
+            return core.state.takeAvatarForceCounted(id, out);
+        } finally {
+            exit();
+        }
+    }
+
+    /**
      * Writes the force accumulated on a haptic avatar since the last call into {@code out} without allocating
      * (see {@link #getHapticForce(String)}) and returns it.
      */

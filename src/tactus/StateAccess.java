@@ -87,54 +87,58 @@ final class StateAccess {
     }
 
     /**
-     * Writes the force accumulated on an input module since the last call (summed over the steps in between,
-     * model units) into {@code out} and resets it; a PosInput3D drops its forces and reads zero.
+     * The avatar force for whichever thread asks: the engine's accumulator on a model that is not stepped in
+     * realtime; on one that is, another thread reads through a {@link ForceTaps tap}, and the stepping thread reads
+     * the tap too once one exists (the tap collects the engine's accumulator after each stepping call), plus
+     * whatever the engine gathered since. Each avatar's force must be read from one thread only.
      */
-    Vect3D takeForce(int id, Vect3D out) {
-        engine.takeForce(id, tmp);
-        if (engine.massKind(id) == MassKind.POS_INPUT3D) {
-            return out.set(0, 0, 0);
-        }
-        UnitScale u = c.units();
-        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
+    Vect3D takeAvatarForce(int id, Vect3D out) {
+        takeAvatarForceCounted(id, out);
+        return out;
     }
 
     /**
-     * The avatar force for whichever thread asks: {@link #takeForce} on a model that is not stepped in realtime;
-     * on one that is, another thread reads through a {@link ForceTaps tap}, and the stepping thread reads the tap
-     * too once one exists (the tap collects the engine's accumulator after each stepping call), plus whatever the
-     * engine gathered since. Each avatar's force must be read from one thread only.
+     * As {@link #takeAvatarForce}, and returns how many steps the force sums over, read together with it (the
+     * model units of force are converted to the user's units in {@code out}).
      */
-    Vect3D takeAvatarForce(int id, Vect3D out) {
+    long takeAvatarForceCounted(int id, Vect3D out) {
         Ownership o = c.own;
-        if (o == null) {
-            return takeForce(id, out);
+        long n;
+        double x;
+        double y;
+        double z;
+        if (o != null && !o.isOwnerThread()) {
+            n = o.taps.take(engine, o.taps.tap(id), tmp);
+            x = tmp[0];
+            y = tmp[1];
+            z = tmp[2];
+        } else {
+            ForceTaps.Tap t = o == null ? null : o.taps.find(id);
+            if (t != null) {
+                n = o.taps.take(engine, t, tmp);
+                x = tmp[0];
+                y = tmp[1];
+                z = tmp[2];
+            } else {
+                n = 0;
+                x = 0;
+                y = 0;
+                z = 0;
+            }
+            n += engine.takeForce(id, tmp);
+            x += tmp[0];
+            y += tmp[1];
+            z += tmp[2];
         }
-        if (!o.isOwnerThread()) {
-            return takeTappedForce(o.taps.tap(id), out);
-        }
-        ForceTaps.Tap t = o.taps.find(id);
-        if (t == null) {
-            return takeForce(id, out);
-        }
-        o.taps.take(engine, t, tmp);
-        double x = tmp[0];
-        double y = tmp[1];
-        double z = tmp[2];
-        engine.takeForce(id, tmp);
         if (engine.massKind(id) == MassKind.POS_INPUT3D) {
-            return out.set(0, 0, 0);
+            out.set(0, 0, 0);
+            return n;
         }
         UnitScale u = c.units();
-        return out.set(u.forceOut(x + tmp[0]), u.forceOut(y + tmp[1]), u.forceOut(z + tmp[2]));
+        out.set(u.forceOut(x), u.forceOut(y), u.forceOut(z));
+        return n;
     }
 
-    /** {@link #takeForce} for a reader on another thread of a realtime-stepped model (see {@link ForceTaps}). */
-    Vect3D takeTappedForce(ForceTaps.Tap tap, Vect3D out) {
-        c.own.taps.take(engine, tap, tmp);
-        UnitScale u = c.units();
-        return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
-    }
 
     double kineticEnergy() {
         return c.units().forceOut(EnergyMeter.kinetic(engine.plan()));

@@ -10,10 +10,8 @@
  * it the handle's position and takes back the force on the plectrum through an AvatarExchange, which pairs the
  * summed force with the number of audio steps it covers under one lock-free sequence lock, so the loop renders
  * the exact mean force per audio step (held between Minim's bursts of steps), with beta newtons per model force
- * unit. We chose this over attaching the session to the model's avatar directly (haptics.attach(mdl, "plectrum")
- * in AUDIO mode): while the PhyUGen steps the model in realtime, that path reads the force and the step count in
- * two calls, so now and then a tick divides the force by one step too many or too few and renders a wrong force
- * for a millisecond (seen: 43 % of the true force on one tick in 500). ExchangeAvatarLink is the only glue.
+ * unit. ExchangeAvatarLink is the only glue, and the loop calls it directly since it never waits (attaching the
+ * session to the model's avatar, haptics.attach(mdl, "plectrum"), also works, through a helper thread).
  */
 
 import tactus.*;

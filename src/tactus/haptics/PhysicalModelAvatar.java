@@ -1,6 +1,5 @@
 package tactus.haptics;
 
-import java.util.concurrent.locks.Lock;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 
@@ -14,7 +13,6 @@ public final class PhysicalModelAvatar implements AvatarLink {
     private final String avatar;
     private final Vect3D target = new Vect3D();
     private final Vect3D force = new Vect3D();
-    private long lastStep;
 
     /** Links to the avatar (a HapticInput3D) of this name in the model. */
     public PhysicalModelAvatar(PhysicalModel model, String avatar) {
@@ -27,14 +25,7 @@ public final class PhysicalModelAvatar implements AvatarLink {
         }
         this.model = model;
         this.avatar = avatar;
-        Lock lock = model.getLock();
-        lock.lock();
-        try {
-            model.getHapticForce(avatar);   // fails now, naming the avatar, if it is not an input module
-            lastStep = model.getStepCount();
-        } finally {
-            lock.unlock();
-        }
+        model.getHapticForce(avatar);   // fails now, naming the avatar, if it is not an input module
     }
 
     @Override
@@ -48,23 +39,17 @@ public final class PhysicalModelAvatar implements AvatarLink {
         takeForceCounted(out);
     }
 
-    /** The force summed since the last call and the number of steps it covers, read together under the model's lock. */
+    /**
+     * The force summed since the last call and the number of steps it covers, read together (also while another
+     * thread steps the model in realtime, as a PhyUGen does).
+     */
     @Override
     public long takeForceCounted(double[] out) {
-        Lock lock = model.getLock();
-        lock.lock();
-        try {
-            Vect3D f = model.getHapticForce(avatar, force);
-            out[0] = f.x;
-            out[1] = f.y;
-            out[2] = f.z;
-            long now = model.getStepCount();
-            long n = now - lastStep;
-            lastStep = now;
-            return n;
-        } finally {
-            lock.unlock();
-        }
+        long n = model.getHapticForceCounted(avatar, force);
+        out[0] = force.x;
+        out[1] = force.y;
+        out[2] = force.z;
+        return n;
     }
 
     @Override
