@@ -285,15 +285,27 @@ final class Ownership {
         }
     }
 
-    /** Runs a structural change on the stepping thread and waits for it; then analyses it on this thread. */
+    /**
+     * Runs a structural change on the stepping thread and waits for it; then compiles the new step plan on this
+     * thread while the owner keeps stepping the old one, has the owner swap it in between two steps
+     * ({@link InstallCommand}), and analyses the change on this thread.
+     */
     @SuppressWarnings("unchecked")
     <T> T run(Supplier<T> body) {
-        RunCommand c = new RunCommand(body);
+        RunCommand c = new RunCommand(() -> {
+            core.engine.holdTopology();
+            return body.get();
+        });
         Thread me = Thread.currentThread();
         Thread p = preparer;
         preparer = null; // the body's own writes are made by the applier, straight to the engine
         try {
-            awaitApplied(post(c));
+            try {
+                awaitApplied(post(c));
+            } finally {
+                // the expensive part of the compile, here; the owner only swaps (it compiles in full if raced)
+                awaitApplied(post(new InstallCommand(core.engine.prepareCompile())));
+            }
         } finally {
             preparer = p;
         }

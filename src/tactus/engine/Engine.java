@@ -22,6 +22,11 @@ public final class Engine implements AutoCloseable {
     private final java.util.ArrayList<ContactGroupSpec> groups = new java.util.ArrayList<>();
     private StepPlan plan;
     private boolean topologyDirty = true;
+    /** Counts topology changes, so that a plan prepared on another thread can tell it is still current. */
+    private long topologyVersion;
+    /** True while a topology change waits for a plan another thread prepares: keep stepping the old plan. */
+    private boolean holdTopology;
+    private long installs;
     private boolean effectsDirty;
     private long steps;
     private boolean stencils = true;
@@ -102,7 +107,7 @@ public final class Engine implements AutoCloseable {
         masses.setPending(id, x, y, z, x - pvx, y - pvy, z - pvz);
         masses.setRest(id, x, y, z);
         masses.weight[id] = 1.0;
-        topologyDirty = true;
+        markTopology();
         return id;
     }
 
@@ -133,7 +138,7 @@ public final class Engine implements AutoCloseable {
             checkMass(massB);
         }
         int id = links.add(kind, massA, kind.isSingleMass() ? massA : massB, stiffness, damping, length);
-        topologyDirty = true;
+        markTopology();
         return id;
     }
 
@@ -169,7 +174,7 @@ public final class Engine implements AutoCloseable {
             checkMass(id);
         }
         groups.add(new ContactGroupSpec(massIds.clone(), threshold, stiffness, damping));
-        topologyDirty = true;
+        markTopology();
         return groups.size() - 1;
     }
 
@@ -180,7 +185,7 @@ public final class Engine implements AutoCloseable {
             checkMass(id);
         }
         g.members = massIds.clone();
-        topologyDirty = true;
+        markTopology();
     }
 
     /** Sets the threshold, stiffness and damping of a contact group. */
@@ -189,7 +194,7 @@ public final class Engine implements AutoCloseable {
         g.threshold = threshold;
         g.stiffness = stiffness;
         g.damping = damping;
-        topologyDirty = true;
+        markTopology();
     }
 
     /** @return {threshold, stiffness, damping} of a contact group, per step. */
@@ -201,7 +206,7 @@ public final class Engine implements AutoCloseable {
     /** Removes a contact group. */
     public void removeContactGroup(int group) {
         group(group).alive = false;
-        topologyDirty = true;
+        markTopology();
     }
 
     /** @return the number of times the neighbour lists of all contact groups have been rebuilt (for tests). */
@@ -225,7 +230,7 @@ public final class Engine implements AutoCloseable {
     public void removeLink(int id) {
         checkLink(id);
         links.alive[id] = false;
-        topologyDirty = true;
+        markTopology();
     }
 
     /** Removes a mass and every link attached to it. */
@@ -240,7 +245,7 @@ public final class Engine implements AutoCloseable {
         if (id == divergedMass) {
             forgetDivergence();
         }
-        topologyDirty = true;
+        markTopology();
     }
 
     /**
@@ -263,7 +268,7 @@ public final class Engine implements AutoCloseable {
         if (masses.drivenFrom[id] == null) {
             masses.drivenFrom[id] = own;
             masses.kind[id] = MassKind.DRIVEN3D;
-            topologyDirty = true;
+            markTopology();
         } else {
             refreshMass(id);
         }
@@ -275,7 +280,7 @@ public final class Engine implements AutoCloseable {
         if (masses.drivenFrom[id] != null) {
             masses.kind[id] = masses.drivenFrom[id];
             masses.drivenFrom[id] = null;
-            topologyDirty = true;
+            markTopology();
         }
     }
 
@@ -293,7 +298,7 @@ public final class Engine implements AutoCloseable {
         masses.drivenFrom[id] = null;
         masses.kind[id] = MassKind.GROUND3D;
         setPosition(id, pos[0], pos[1], pos[2]);
-        topologyDirty = true;
+        markTopology();
     }
 
     /** Removes every mass, link and contact group, and forgets a divergence. Ids already issued stay invalid. */
@@ -308,7 +313,7 @@ public final class Engine implements AutoCloseable {
         for (ContactGroupSpec g : groups) {
             g.alive = false;
         }
-        topologyDirty = true;
+        markTopology();
     }
 
     // ------------------------------------------------------------------ compiling and stepping
@@ -323,7 +328,7 @@ public final class Engine implements AutoCloseable {
     public void setStencilRuns(boolean enabled) {
         if (enabled != stencils) {
             stencils = enabled;
-            topologyDirty = true;
+            markTopology();
         }
     }
 
@@ -339,7 +344,7 @@ public final class Engine implements AutoCloseable {
     public void setStencilSweeps(boolean enabled) {
         if (enabled != sweeps) {
             sweeps = enabled;
-            topologyDirty = true; // the size limit of runs depends on it: recompile (state is carried over)
+            markTopology(); // the size limit of runs depends on it: recompile (state is carried over)
         }
     }
 
@@ -375,7 +380,13 @@ public final class Engine implements AutoCloseable {
 
     /** Compiles the scene now if its topology or effects changed since the last compile. */
     public void compile() {
-        if (topologyDirty || plan == null) {
+        if (topologyDirty && plan != null && holdTopology) {
+            if (effectsDirty) {
+                plan.sweepRuns = sweeps;
+                plan.selectKernels();
+                effectsDirty = false;
+            }
+        } else if (topologyDirty || plan == null) {
             plan = PlanCompiler.compile(masses, links, medium, plan, useStencils(), sweeps, groups);
             topologyDirty = false;
             effectsDirty = false;
@@ -383,6 +394,86 @@ public final class Engine implements AutoCloseable {
             plan.sweepRuns = sweeps;
             plan.selectKernels();
             effectsDirty = false;
+        }
+    }
+
+    private void markTopology() {
+        topologyDirty = true;
+        topologyVersion++;
+    }
+
+    /**
+     * Defers topology compiles until {@link #install}: from now on {@link #compile()} (and stepping) keeps the
+     * current plan when only the topology changed. Call it on the stepping thread before a structural change whose
+     * plan another thread will prepare ({@link #prepareCompile()}).
+     */
+    public void holdTopology() {
+        holdTopology = true;
+    }
+
+    /**
+     * Builds, on the calling thread, the plan a compile would make from the tables as they are now, without
+     * touching the tables or the current plan, so that the stepping thread may go on stepping meanwhile. Nothing
+     * else may change the topology until {@link #install}; if something does, the install compiles in full.
+     *
+     * @return the prepared plan, or null when there is nothing to compile (or the tables changed under it)
+     */
+    public PreparedPlan prepareCompile() {
+        if (!topologyDirty || plan == null) {
+            return null;
+        }
+        long version = topologyVersion;
+        StepPlan from = plan;
+        try {
+            return new PreparedPlan(PlanCompiler.prepare(masses, links, medium, useStencils(), sweeps, groups), from,
+                    version);
+        } catch (RuntimeException raced) {
+            return null; // a topology change on the stepping thread raced the preparation: install compiles in full
+        }
+    }
+
+    /**
+     * Ends a {@link #holdTopology() hold} on the stepping thread, between two steps: swaps in the prepared plan,
+     * copying the live state of the masses and links it carries over from the current plan and writing every
+     * coefficient from the current parameters (O(masses + links), no allocation), with the same result, bit for
+     * bit, as a compile here. A missing or outdated prepared plan is replaced by a full compile.
+     *
+     * @param prepared the plan from {@link #prepareCompile()}, or null
+     * @return true when the prepared plan was installed
+     */
+    public boolean install(PreparedPlan prepared) {
+        holdTopology = false;
+        boolean used = false;
+        if (prepared != null && topologyDirty && prepared.from == plan && prepared.version == topologyVersion) {
+            plan = PlanCompiler.install(masses, links, medium, plan, prepared.prepared);
+            plan.sweepRuns = sweeps;
+            plan.selectKernels(); // the medium's effects may have changed since the preparation
+            topologyDirty = false;
+            effectsDirty = false;
+            installs++;
+            used = true;
+        }
+        if (plan != null && (topologyDirty || effectsDirty)) {
+            compile(); // not prepared (or raced): compile here, as before; a model never compiled waits for its step
+        }
+        return used;
+    }
+
+    /** @return how many prepared plans {@link #install} has swapped in so far (for tests and measurements). */
+    public long preparedInstalls() {
+        return installs;
+    }
+
+    /** A step plan built off the stepping thread by {@link #prepareCompile()}, to be swapped in by {@link #install}. */
+    public static final class PreparedPlan {
+        private final PlanCompiler.Prepared prepared;
+        private final StepPlan from;
+        private final long version;
+
+        private PreparedPlan(PlanCompiler.Prepared prepared, StepPlan from, long version) {
+            this.prepared = prepared;
+            this.from = from;
+            this.version = version;
         }
     }
 
@@ -495,7 +586,7 @@ public final class Engine implements AutoCloseable {
             stepper = s;
             stepperCleanup = CLEANER.register(this, s::close);
         }
-        topologyDirty = true;
+        markTopology();
     }
 
     /**
@@ -507,7 +598,7 @@ public final class Engine implements AutoCloseable {
     public void close() {
         if (stepper != null) {
             closeStepper();
-            topologyDirty = true;
+            markTopology();
         }
     }
 

@@ -30,7 +30,7 @@ final class PlanCompiler {
         for (int id = 0; id < mt.count; id++) {
             newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
         }
-        LinkBatch[] batches = buildBatches(lt, newSlot, stencils);
+        LinkBatch[] batches = buildBatches(lt, newSlot, stencils, true);
         StepPlan p = new StepPlan(n, start, batches, medium);
         for (int id = 0; id < mt.count; id++) {
             int s = newSlot[id];
@@ -42,24 +42,7 @@ final class PlanCompiler {
             if (old != null && o >= 0) {
                 copyState(old, o, p, s);
             } else {
-                int q = 6 * id;
-                p.x[s] = mt.pending[q];
-                p.y[s] = mt.pending[q + 1];
-                p.z[s] = mt.pending[q + 2];
-                p.px[s] = mt.pending[q + 3];
-                p.py[s] = mt.pending[q + 4];
-                p.pz[s] = mt.pending[q + 5];
-                int f = 3 * id;
-                p.fx[s] = mt.pendingForce[f];
-                p.fy[s] = mt.pendingForce[f + 1];
-                p.fz[s] = mt.pendingForce[f + 2];
-                mt.pendingForce[f] = 0;
-                mt.pendingForce[f + 1] = 0;
-                mt.pendingForce[f + 2] = 0;
-                boolean target = !Double.isNaN(mt.pendingTarget[f]);
-                p.tx[s] = target ? mt.pendingTarget[f] : p.x[s];
-                p.ty[s] = target ? mt.pendingTarget[f + 1] : p.y[s];
-                p.tz[s] = target ? mt.pendingTarget[f + 2] : p.z[s];
+                startFromPending(mt, id, p, s);
             }
             fillMass(p, s, mt, id, medium);
         }
@@ -69,6 +52,110 @@ final class PlanCompiler {
         p.sweepRuns = sweeps;
         p.selectKernels();
         return p;
+    }
+
+    /**
+     * The first half of a compile, without side effects on the tables or the old plan: lays out the masses and
+     * builds the link batches, stencil runs, contact groups and kernels of the new plan, but leaves its state and
+     * coefficients unset. Safe to run on another thread while the owner steps the old plan, as long as no other
+     * thread changes the topology meanwhile (the caller checks that before {@link #install}).
+     *
+     * @return the new plan, whose {@code massId} is set; its mass slots by id come with it
+     */
+    static Prepared prepare(MassTable mt, LinkTable lt, Medium medium, boolean stencils, boolean sweeps,
+                            java.util.List<ContactGroupSpec> groups) {
+        int kinds = MassKind.values().length;
+        int count = mt.count;
+        int[] counts = new int[kinds];
+        for (int id = 0; id < count; id++) {
+            if (mt.alive[id]) {
+                counts[mt.kind[id].ordinal()]++;
+            }
+        }
+        int[] start = new int[kinds + 1];
+        for (int k = 0; k < kinds; k++) {
+            start[k + 1] = start[k] + counts[k];
+        }
+        int n = start[kinds];
+        int[] cursor = start.clone();
+        int[] newSlot = new int[count];
+        for (int id = 0; id < count; id++) {
+            newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
+        }
+        LinkBatch[] batches = buildBatches(lt, newSlot, stencils, false);
+        StepPlan p = new StepPlan(n, start, batches, medium);
+        for (int id = 0; id < count; id++) {
+            if (newSlot[id] >= 0) {
+                p.massId[newSlot[id]] = id;
+            }
+        }
+        p.groups = buildGroups(groups, mt, newSlot, p);
+        p.sweepRuns = sweeps;
+        p.selectKernels();
+        return new Prepared(p, newSlot, lt.count);
+    }
+
+    /**
+     * The second half of a compile, run by the thread that steps the model between two steps: copies the live
+     * state of carried-over masses and links from the old plan (as it is now), starts new masses from their
+     * pending state (consuming their pending forces), writes every coefficient from the current parameters, and
+     * rewrites the slot mappings of the tables. O(masses + links) copies, no allocation. Gives the same plan, bit
+     * for bit, as {@link #compile} would at this point.
+     */
+    static StepPlan install(MassTable mt, LinkTable lt, Medium medium, StepPlan old, Prepared prep) {
+        StepPlan p = prep.plan;
+        for (int s = 0; s < p.nMass; s++) {
+            int id = p.massId[s];
+            int o = mt.slot[id];
+            if (old != null && o >= 0) {
+                copyState(old, o, p, s);
+            } else {
+                startFromPending(mt, id, p, s);
+            }
+            fillMass(p, s, mt, id, medium);
+        }
+        System.arraycopy(prep.massSlot, 0, mt.slot, 0, prep.massSlot.length);
+        for (int id = 0; id < prep.linkCount; id++) {
+            if (!lt.alive[id]) {
+                lt.slot[id] = -1;
+            }
+        }
+        fillLinks(lt, p, old);
+        return p;
+    }
+
+    /** A plan built by {@link #prepare}, waiting for {@link #install}. */
+    static final class Prepared {
+        final StepPlan plan;
+        final int[] massSlot;
+        final int linkCount;
+
+        Prepared(StepPlan plan, int[] massSlot, int linkCount) {
+            this.plan = plan;
+            this.massSlot = massSlot;
+            this.linkCount = linkCount;
+        }
+    }
+
+    private static void startFromPending(MassTable mt, int id, StepPlan p, int s) {
+        int q = 6 * id;
+        p.x[s] = mt.pending[q];
+        p.y[s] = mt.pending[q + 1];
+        p.z[s] = mt.pending[q + 2];
+        p.px[s] = mt.pending[q + 3];
+        p.py[s] = mt.pending[q + 4];
+        p.pz[s] = mt.pending[q + 5];
+        int f = 3 * id;
+        p.fx[s] = mt.pendingForce[f];
+        p.fy[s] = mt.pendingForce[f + 1];
+        p.fz[s] = mt.pendingForce[f + 2];
+        mt.pendingForce[f] = 0;
+        mt.pendingForce[f + 1] = 0;
+        mt.pendingForce[f + 2] = 0;
+        boolean target = !Double.isNaN(mt.pendingTarget[f]);
+        p.tx[s] = target ? mt.pendingTarget[f] : p.x[s];
+        p.ty[s] = target ? mt.pendingTarget[f + 1] : p.y[s];
+        p.tz[s] = target ? mt.pendingTarget[f + 2] : p.z[s];
     }
 
     private static ContactGroupKernel[] buildGroups(java.util.List<ContactGroupSpec> groups, MassTable mt,
@@ -134,7 +221,7 @@ final class PlanCompiler {
         }
     }
 
-    private static LinkBatch[] buildBatches(LinkTable lt, int[] massSlot, boolean stencils) {
+    private static LinkBatch[] buildBatches(LinkTable lt, int[] massSlot, boolean stencils, boolean writeSlots) {
         LinkKind[] kinds = LinkKind.values();
         int[] counts = new int[kinds.length];
         for (int id = 0; id < lt.count; id++) {
@@ -167,7 +254,9 @@ final class PlanCompiler {
         int[] cursor = new int[kinds.length];
         for (int id = 0; id < lt.count; id++) {
             if (!lt.alive[id]) {
-                lt.slot[id] = -1;
+                if (writeSlots) {
+                    lt.slot[id] = -1;
+                }
                 continue;
             }
             LinkKind k = lt.kind[id];

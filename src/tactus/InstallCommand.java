@@ -1,0 +1,24 @@
+package tactus;
+
+import tactus.engine.Engine;
+
+/**
+ * The second half of a structural change of an audio-owned model: swaps in the step plan that the calling thread
+ * compiled while the owner kept stepping the old one ({@link Engine#install}), then publishes a snapshot of the new
+ * topology. Runs on the stepping thread between two steps; costs O(masses + links) copies, not a compile.
+ */
+final class InstallCommand extends Command {
+    private final Engine.PreparedPlan prepared;
+
+    InstallCommand(Engine.PreparedPlan prepared) {
+        this.prepared = prepared;
+    }
+
+    @Override
+    void apply(ModelCore core) {
+        core.engine.install(prepared);
+        if (prepared != null && core.initialized) {
+            core.snapshots.publish();
+        }
+    }
+}
