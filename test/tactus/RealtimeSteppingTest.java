@@ -173,6 +173,128 @@ class RealtimeSteppingTest {
     }
 
     /**
+     * The random changes of {@link #changes} with structural ones mixed in (about one call in six), each a single
+     * facade call: a new mass near the string, a spring from it to the string, the removal of that spring, the
+     * removal of the mass, in that order, again and again.
+     */
+    static List<Consumer<PhysicalModel>> changesWithStructure(long seed, int count) {
+        Random r = new Random(seed ^ 0x5eed);
+        List<Consumer<PhysicalModel>> params = changes(seed, count);
+        List<Consumer<PhysicalModel>> list = new ArrayList<>();
+        int phase = 0;
+        for (int i = 0; i < count; i++) {
+            if (r.nextInt(6) != 0) {
+                list.add(params.get(i));
+                continue;
+            }
+            int k = phase / 4;
+            int at = 2 + k % (MASSES - 4);
+            double v = r.nextDouble();
+            switch (phase++ % 4) {
+                case 0: list.add(pm -> pm.addMass3D("x" + k, 1, new Vect3D(at + 1, 1 + 0.1 * v, 0), new Vect3D()));
+                    break;
+                case 1: list.add(pm -> pm.addSpringDamper3D("lx" + k, 1, 0.05 + 0.05 * v, 0.001, "x" + k,
+                        "m" + at));
+                    break;
+                case 2: list.add(pm -> pm.removeLink("lx" + k)); break;
+                default: list.add(pm -> pm.removeMatAndConnectedLinks("x" + k)); break;
+            }
+        }
+        return list;
+    }
+
+    /**
+     * Structural changes made while the owner steps (batches of 1 to 256 steps, varied timing): the editor compiles
+     * the new plan on its own thread while the owner keeps stepping the old one, and the owner only swaps it in.
+     * Every change, structural or not, gives bit for bit the trajectory of the same change applied synchronously at
+     * the step where it took effect (for a structural change: where the new plan was installed), and every
+     * structural change was installed from a plan prepared by the editor (the owner compiled nothing).
+     */
+    @ParameterizedTest
+    @CsvSource({"1, 1, 21", "1, 4, 22", "7, 2, 23", "64, 1, 24", "64, 6, 25", "256, 3, 26"})
+    void structuralChangesMatchSynchronousChangesAtTheInstallStep(int batch, int burst, long seed) throws Exception {
+        PhysicalModel live = build();
+        live.beginRealtimeStepping();
+        Ownership own = live.core.own;
+        List<Consumer<PhysicalModel>> ops = changesWithStructure(seed, 160);
+        long[] seqOf = new long[ops.size()];
+        AtomicBoolean editorDone = new AtomicBoolean();
+        List<long[]> calls = new ArrayList<>(); // {step count before the call, applied seq after it}
+        List<Double> trace = new ArrayList<>();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread owner = new Thread(() -> {
+            try {
+                int after = 0;
+                while (after < 20) {
+                    if (editorDone.get()) {
+                        after++;
+                    }
+                    long before = live.getStepCount();
+                    live.computeNSteps(batch);
+                    calls.add(new long[] {before, own.appliedSeq()});
+                    trace.add(live.getMatPosition("m5").y);
+                    if ((calls.size() & 7) == 0) {
+                        LockSupport.parkNanos(20_000L);
+                    }
+                }
+            } catch (Throwable t) {
+                failure.set(t);
+            }
+        }, "test owner");
+        owner.start();
+        long installs0 = live.core.engine.preparedInstalls();
+        int structural = 0;
+        Random timing = new Random(seed * 31);
+        for (int i = 0; i < ops.size(); i++) {
+            long before = own.postedSeq();
+            ops.get(i).accept(live);
+            seqOf[i] = own.postedSeq(); // a structural call posts its run and its install: the install counts
+            structural += seqOf[i] - before > 1 ? 1 : 0;
+            if (timing.nextInt(burst) == 0) {
+                LockSupport.parkNanos(timing.nextInt(300_000));
+            }
+        }
+        editorDone.set(true);
+        owner.join(60_000);
+        assertNull(failure.get(), () -> "owner failed: " + failure.get());
+        assertEquals(own.postedSeq(), own.appliedSeq(), "every command applied");
+        assertTrue(structural >= 10, "structural changes made: " + structural);
+        assertEquals(structural, live.core.engine.preparedInstalls() - installs0,
+                "every structural change installed a plan prepared by the editor");
+
+        long[] stepOf = new long[ops.size()];
+        int c = 0;
+        for (int i = 0; i < ops.size(); i++) {
+            while (calls.get(c)[1] < seqOf[i]) {
+                c++;
+            }
+            stepOf[i] = calls.get(c)[0];
+        }
+        PhysicalModel ref = build();
+        int next = 0;
+        for (int k = 0; k < calls.size(); k++) {
+            long start = calls.get(k)[0];
+            while (next < ops.size() && stepOf[next] == start) {
+                ops.get(next++).accept(ref);
+            }
+            ref.computeNSteps(batch);
+            assertEquals(trace.get(k), ref.getMatPosition("m5").y, "m5 after stepping call " + k + " (step "
+                    + (start + batch) + ")");
+        }
+        assertEquals(ops.size(), next);
+        for (int i = 0; i < MASSES; i++) {
+            Vect3D a = live.getMatPosition("m" + i);
+            Vect3D b = ref.getMatPosition("m" + i);
+            assertEquals(b.x, a.x, "m" + i + ".x");
+            assertEquals(b.y, a.y, "m" + i + ".y");
+            assertEquals(b.z, a.z, "m" + i + ".z");
+        }
+        assertEquals(ref.getNumberOfMats(), live.getNumberOfMats());
+        assertEquals(ref.getNumberOfLinks(), live.getNumberOfLinks());
+        live.endRealtimeStepping();
+    }
+
+    /**
      * Three threads: the owner steps, two editors each raise their own parameter through 1..N (one a link stiffness
      * set by name, one a subset's damping). Every value read back by its editor right after the call is the one it
      * set (getters see queued changes); the owner, reading the engine between its calls, sees each parameter only
