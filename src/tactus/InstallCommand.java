@@ -17,7 +17,7 @@ final class InstallCommand extends Command {
     @Override
     void apply(ModelCore core) {
         core.engine.install(prepared);
-        if (prepared != null && core.initialized) {
+        if (core.initialized) {
             core.snapshots.publish();
         }
     }

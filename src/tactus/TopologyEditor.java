@@ -20,12 +20,15 @@ final class TopologyEditor {
 
     /**
      * Compiles the step plan now if the model is initialised, and publishes a snapshot of the new topology (the
-     * edit is paid for by its caller).
+     * edit is paid for by its caller). While the engine holds topology changes for a plan prepared by an editor
+     * thread (realtime stepping), both wait for the install ({@link InstallCommand}).
      */
     void compileIfRunning() {
         if (c.initialized) {
             engine.compile();
-            c.snapshots.publish();
+            if (!engine.isHoldingTopology()) {
+                c.snapshots.publish(); // else the install publishes the new topology
+            }
         }
     }
 

@@ -411,6 +411,11 @@ public final class Engine implements AutoCloseable {
         holdTopology = true;
     }
 
+    /** @return true between {@link #holdTopology()} and {@link #install}: topology changes wait for the install. */
+    public boolean isHoldingTopology() {
+        return holdTopology;
+    }
+
     /**
      * Builds, on the calling thread, the plan a compile would make from the tables as they are now, without
      * touching the tables or the current plan, so that the stepping thread may go on stepping meanwhile. Nothing
