@@ -121,7 +121,7 @@ final class StabilityGuard {
     }
 
     private tactus.engine.StabilityReport analyze() {
-        return StabilityAnalyzer.analyze(engine.plan(), maxContacts);
+        return StabilityAnalyzer.analyze(engine.planForAnalysis(), maxContacts);
     }
 
     private String message(tactus.engine.StabilityReport r) {

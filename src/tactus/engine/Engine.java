@@ -487,6 +487,20 @@ public final class Engine implements AutoCloseable {
         return plan == null || topologyDirty || effectsDirty;
     }
 
+    /**
+     * @return the plan for a stability analysis: compiled first only if the topology changed (or there is no plan
+     *     yet). A pending kernel re-selection (an effect switched on or off) does not change the system's matrices,
+     *     so it is left to the stepping thread: an analysis running on another thread while a realtime owner steps
+     *     must not touch the plan the owner is stepping. While the topology is held (a plan being prepared
+     *     beside the live one), the live plan is returned untouched.
+     */
+    public StepPlan planForAnalysis() {
+        if (plan == null || (topologyDirty && !holdTopology)) {
+            compile();
+        }
+        return plan;
+    }
+
     /** @return the current compiled plan, compiling first if needed. */
     public StepPlan plan() {
         compile();
