@@ -13,23 +13,9 @@ final class PlanCompiler {
 
     static StepPlan compile(MassTable mt, LinkTable lt, Medium medium, StepPlan old, boolean stencils,
                             boolean sweeps, java.util.List<ContactGroupSpec> groups) {
-        int kinds = MassKind.values().length;
-        int[] counts = new int[kinds];
-        for (int id = 0; id < mt.count; id++) {
-            if (mt.alive[id]) {
-                counts[mt.kind[id].ordinal()]++;
-            }
-        }
-        int[] start = new int[kinds + 1];
-        for (int k = 0; k < kinds; k++) {
-            start[k + 1] = start[k] + counts[k];
-        }
-        int n = start[kinds];
-        int[] cursor = start.clone();
-        int[] newSlot = new int[mt.count];
-        for (int id = 0; id < mt.count; id++) {
-            newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
-        }
+        int[] start = kindStarts(mt, mt.count);
+        int n = start[start.length - 1];
+        int[] newSlot = slotsByKind(mt, mt.count, start);
         LinkBatch[] batches = buildBatches(lt, newSlot, stencils, true);
         StepPlan p = new StepPlan(n, start, batches, medium);
         for (int id = 0; id < mt.count; id++) {
@@ -64,24 +50,10 @@ final class PlanCompiler {
      */
     static Prepared prepare(MassTable mt, LinkTable lt, Medium medium, boolean stencils, boolean sweeps,
                             java.util.List<ContactGroupSpec> groups) {
-        int kinds = MassKind.values().length;
         int count = mt.count;
-        int[] counts = new int[kinds];
-        for (int id = 0; id < count; id++) {
-            if (mt.alive[id]) {
-                counts[mt.kind[id].ordinal()]++;
-            }
-        }
-        int[] start = new int[kinds + 1];
-        for (int k = 0; k < kinds; k++) {
-            start[k + 1] = start[k] + counts[k];
-        }
-        int n = start[kinds];
-        int[] cursor = start.clone();
-        int[] newSlot = new int[count];
-        for (int id = 0; id < count; id++) {
-            newSlot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
-        }
+        int[] start = kindStarts(mt, count);
+        int n = start[start.length - 1];
+        int[] newSlot = slotsByKind(mt, count, start);
         LinkBatch[] batches = buildBatches(lt, newSlot, stencils, false);
         StepPlan p = new StepPlan(n, start, batches, medium);
         for (int id = 0; id < count; id++) {
@@ -338,5 +310,31 @@ final class PlanCompiler {
         }
         double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /** @return where each mass kind starts in the plan's layout (kinds in MassKind order), and the total last. */
+    private static int[] kindStarts(MassTable mt, int count) {
+        int kinds = MassKind.values().length;
+        int[] counts = new int[kinds];
+        for (int id = 0; id < count; id++) {
+            if (mt.alive[id]) {
+                counts[mt.kind[id].ordinal()]++;
+            }
+        }
+        int[] start = new int[kinds + 1];
+        for (int k = 0; k < kinds; k++) {
+            start[k + 1] = start[k] + counts[k];
+        }
+        return start;
+    }
+
+    /** @return each mass id's slot in the plan (grouped by kind, insertion order within a kind), -1 if removed. */
+    private static int[] slotsByKind(MassTable mt, int count, int[] start) {
+        int[] cursor = start.clone();
+        int[] slot = new int[count];
+        for (int id = 0; id < count; id++) {
+            slot[id] = mt.alive[id] ? cursor[mt.kind[id].ordinal()]++ : -1;
+        }
+        return slot;
     }
 }
