@@ -97,75 +97,10 @@ class RealtimeSteppingTest {
     void queuedChangesMatchSynchronousChangesAtTheSameStep(int batch, int burst, long seed) throws Exception {
         PhysicalModel live = build();
         live.beginRealtimeStepping();
-        Ownership own = live.core.own;
         List<Consumer<PhysicalModel>> ops = changes(seed, 240);
-        long[] seqOf = new long[ops.size()];
-        AtomicBoolean editorDone = new AtomicBoolean();
-        List<long[]> calls = new ArrayList<>(); // {step count before the call, applied seq after it}
-        List<Double> trace = new ArrayList<>();
-        AtomicReference<Throwable> failure = new AtomicReference<>();
-        Thread owner = new Thread(() -> {
-            try {
-                int after = 0;
-                while (after < 20) {
-                    if (editorDone.get()) {
-                        after++;
-                    }
-                    long before = live.getStepCount();
-                    live.computeNSteps(batch);
-                    calls.add(new long[] {before, own.appliedSeq()});
-                    trace.add(live.getMatPosition("m5").y);
-                    if ((calls.size() & 7) == 0) {
-                        LockSupport.parkNanos(20_000L); // let the editor in at varied points
-                    }
-                }
-            } catch (Throwable t) {
-                failure.set(t);
-            }
-        }, "test owner");
-        owner.start();
-        Random timing = new Random(seed * 31);
-        for (int i = 0; i < ops.size(); i++) {
-            ops.get(i).accept(live);
-            seqOf[i] = own.postedSeq();
-            if (timing.nextInt(burst) == 0) {
-                LockSupport.parkNanos(timing.nextInt(300_000));
-            }
-        }
-        editorDone.set(true);
-        owner.join(60_000);
-        assertNull(failure.get(), () -> "owner failed: " + failure.get());
-        assertEquals(ops.size(), own.postedSeq(), "every call posted exactly one command");
-        assertEquals(own.postedSeq(), own.appliedSeq(), "every command applied");
-
-        // the step at which each change was applied: the start of the first call whose applied seq covers it
-        long[] stepOf = new long[ops.size()];
-        int c = 0;
-        for (int i = 0; i < ops.size(); i++) {
-            while (calls.get(c)[1] < seqOf[i]) {
-                c++;
-            }
-            stepOf[i] = calls.get(c)[0];
-        }
-        PhysicalModel ref = build();
-        int next = 0;
-        for (int k = 0; k < calls.size(); k++) {
-            long start = calls.get(k)[0];
-            while (next < ops.size() && stepOf[next] == start) {
-                ops.get(next++).accept(ref);
-            }
-            ref.computeNSteps(batch);
-            assertEquals(trace.get(k), ref.getMatPosition("m5").y, "m5 after stepping call " + k + " (step "
-                    + (start + batch) + ")");
-        }
-        assertEquals(ops.size(), next);
-        for (int i = 0; i < MASSES; i++) {
-            Vect3D a = live.getMatPosition("m" + i);
-            Vect3D b = ref.getMatPosition("m" + i);
-            assertEquals(b.x, a.x, "m" + i + ".x");
-            assertEquals(b.y, a.y, "m" + i + ".y");
-            assertEquals(b.z, a.z, "m" + i + ".z");
-        }
+        Race race = Race.run(live, ops, batch, burst, seed);
+        assertEquals(ops.size(), live.core.own.postedSeq(), "every call posted exactly one command");
+        PhysicalModel ref = race.replayMatches(ops, batch);
         assertEquals(ref.getLinkStiffness("s3"), live.getLinkStiffness("s3"));
         assertEquals(ref.getLinkDamping("s3"), live.getLinkDamping("s3"));
         assertEquals(ref.getMatMass("m5"), live.getMatMass("m5"));
@@ -215,83 +150,118 @@ class RealtimeSteppingTest {
     void structuralChangesMatchSynchronousChangesAtTheInstallStep(int batch, int burst, long seed) throws Exception {
         PhysicalModel live = build();
         live.beginRealtimeStepping();
-        Ownership own = live.core.own;
         List<Consumer<PhysicalModel>> ops = changesWithStructure(seed, 160);
-        long[] seqOf = new long[ops.size()];
-        AtomicBoolean editorDone = new AtomicBoolean();
-        List<long[]> calls = new ArrayList<>(); // {step count before the call, applied seq after it}
-        List<Double> trace = new ArrayList<>();
-        AtomicReference<Throwable> failure = new AtomicReference<>();
-        Thread owner = new Thread(() -> {
-            try {
-                int after = 0;
-                while (after < 20) {
-                    if (editorDone.get()) {
-                        after++;
-                    }
-                    long before = live.getStepCount();
-                    live.computeNSteps(batch);
-                    calls.add(new long[] {before, own.appliedSeq()});
-                    trace.add(live.getMatPosition("m5").y);
-                    if ((calls.size() & 7) == 0) {
-                        LockSupport.parkNanos(20_000L);
-                    }
-                }
-            } catch (Throwable t) {
-                failure.set(t);
-            }
-        }, "test owner");
-        owner.start();
         long installs0 = live.core.engine.preparedInstalls();
-        int structural = 0;
-        Random timing = new Random(seed * 31);
-        for (int i = 0; i < ops.size(); i++) {
-            long before = own.postedSeq();
-            ops.get(i).accept(live);
-            seqOf[i] = own.postedSeq(); // a structural call posts its run and its install: the install counts
-            structural += seqOf[i] - before > 1 ? 1 : 0;
-            if (timing.nextInt(burst) == 0) {
-                LockSupport.parkNanos(timing.nextInt(300_000));
-            }
-        }
-        editorDone.set(true);
-        owner.join(60_000);
-        assertNull(failure.get(), () -> "owner failed: " + failure.get());
-        assertEquals(own.postedSeq(), own.appliedSeq(), "every command applied");
-        assertTrue(structural >= 10, "structural changes made: " + structural);
-        assertEquals(structural, live.core.engine.preparedInstalls() - installs0,
+        Race race = Race.run(live, ops, batch, burst, seed);
+        assertTrue(race.structural >= 10, "structural changes made: " + race.structural);
+        assertEquals(race.structural, live.core.engine.preparedInstalls() - installs0,
                 "every structural change installed a plan prepared by the editor");
-
-        long[] stepOf = new long[ops.size()];
-        int c = 0;
-        for (int i = 0; i < ops.size(); i++) {
-            while (calls.get(c)[1] < seqOf[i]) {
-                c++;
-            }
-            stepOf[i] = calls.get(c)[0];
-        }
-        PhysicalModel ref = build();
-        int next = 0;
-        for (int k = 0; k < calls.size(); k++) {
-            long start = calls.get(k)[0];
-            while (next < ops.size() && stepOf[next] == start) {
-                ops.get(next++).accept(ref);
-            }
-            ref.computeNSteps(batch);
-            assertEquals(trace.get(k), ref.getMatPosition("m5").y, "m5 after stepping call " + k + " (step "
-                    + (start + batch) + ")");
-        }
-        assertEquals(ops.size(), next);
-        for (int i = 0; i < MASSES; i++) {
-            Vect3D a = live.getMatPosition("m" + i);
-            Vect3D b = ref.getMatPosition("m" + i);
-            assertEquals(b.x, a.x, "m" + i + ".x");
-            assertEquals(b.y, a.y, "m" + i + ".y");
-            assertEquals(b.z, a.z, "m" + i + ".z");
-        }
+        PhysicalModel ref = race.replayMatches(ops, batch);
         assertEquals(ref.getNumberOfMats(), live.getNumberOfMats());
         assertEquals(ref.getNumberOfLinks(), live.getNumberOfLinks());
         live.endRealtimeStepping();
+    }
+
+    /**
+     * One race of the two tests above: an owner thread steps {@code live} in calls of {@code batch} steps while the
+     * test thread makes the changes at random moments (bursts of up to {@code burst} calls back to back), then
+     * {@link #replayMatches} replays them synchronously on a second model at the steps where they took effect.
+     */
+    static final class Race {
+        final PhysicalModel live;
+        final long[] seqOf;
+        /** {step count before the call, applied seq after it}, one per stepping call of the owner. */
+        final List<long[]> calls = new ArrayList<>();
+        /** m5's y after each stepping call. */
+        final List<Double> trace = new ArrayList<>();
+        /** Calls that posted more than one command (a structural call posts its run and its install). */
+        int structural;
+
+        private Race(PhysicalModel live, int changes) {
+            this.live = live;
+            this.seqOf = new long[changes];
+        }
+
+        static Race run(PhysicalModel live, List<Consumer<PhysicalModel>> ops, int batch, int burst, long seed)
+                throws InterruptedException {
+            Ownership own = live.core.own;
+            Race r = new Race(live, ops.size());
+            AtomicBoolean editorDone = new AtomicBoolean();
+            AtomicReference<Throwable> failure = new AtomicReference<>();
+            Thread owner = new Thread(() -> {
+                try {
+                    int after = 0;
+                    while (after < 20) {
+                        if (editorDone.get()) {
+                            after++;
+                        }
+                        long before = live.getStepCount();
+                        live.computeNSteps(batch);
+                        r.calls.add(new long[] {before, own.appliedSeq()});
+                        r.trace.add(live.getMatPosition("m5").y);
+                        if ((r.calls.size() & 7) == 0) {
+                            LockSupport.parkNanos(20_000L); // let the editor in at varied points
+                        }
+                    }
+                } catch (Throwable t) {
+                    failure.set(t);
+                }
+            }, "test owner");
+            owner.start();
+            Random timing = new Random(seed * 31);
+            for (int i = 0; i < ops.size(); i++) {
+                long before = own.postedSeq();
+                ops.get(i).accept(live);
+                r.seqOf[i] = own.postedSeq(); // for a structural call, its install: where it took effect
+                r.structural += r.seqOf[i] - before > 1 ? 1 : 0;
+                if (timing.nextInt(burst) == 0) {
+                    LockSupport.parkNanos(timing.nextInt(300_000));
+                }
+            }
+            editorDone.set(true);
+            owner.join(60_000);
+            assertNull(failure.get(), () -> "owner failed: " + failure.get());
+            assertEquals(own.postedSeq(), own.appliedSeq(), "every command applied");
+            return r;
+        }
+
+        /**
+         * Gives each change the step where it took effect (the start of the first stepping call whose applied seq
+         * covers it), applies it synchronously at that step to a new model stepped in the same calls, and asserts
+         * that both trajectories agree bit for bit, after every call and for every string mass at the end.
+         *
+         * @return the reference model, for the caller's own comparisons
+         */
+        PhysicalModel replayMatches(List<Consumer<PhysicalModel>> ops, int batch) {
+            long[] stepOf = new long[ops.size()];
+            int c = 0;
+            for (int i = 0; i < ops.size(); i++) {
+                while (calls.get(c)[1] < seqOf[i]) {
+                    c++;
+                }
+                stepOf[i] = calls.get(c)[0];
+            }
+            PhysicalModel ref = build();
+            int next = 0;
+            for (int k = 0; k < calls.size(); k++) {
+                long start = calls.get(k)[0];
+                while (next < ops.size() && stepOf[next] == start) {
+                    ops.get(next++).accept(ref);
+                }
+                ref.computeNSteps(batch);
+                assertEquals(trace.get(k), ref.getMatPosition("m5").y, "m5 after stepping call " + k + " (step "
+                        + (start + batch) + ")");
+            }
+            assertEquals(ops.size(), next);
+            for (int i = 0; i < MASSES; i++) {
+                Vect3D a = live.getMatPosition("m" + i);
+                Vect3D b = ref.getMatPosition("m" + i);
+                assertEquals(b.x, a.x, "m" + i + ".x");
+                assertEquals(b.y, a.y, "m" + i + ".y");
+                assertEquals(b.z, a.z, "m" + i + ".z");
+            }
+            return ref;
+        }
     }
 
     /**
