@@ -107,28 +107,7 @@ class DecoupledAvatarTest {
     @Test
     void theStepCountsArriveWithTheirForcesAndAnUncountedLinkSaysSo() {
         // each exchange reports 7 steps and a force of 7 (1 per step): the haptic side must see them together
-        AvatarLink counted = new AvatarLink() {
-            @Override
-            public void setTarget(double x, double y, double z) {
-            }
-
-            @Override
-            public void takeForce(double[] out) {
-                takeForceCounted(out);
-            }
-
-            @Override
-            public long takeForceCounted(double[] out) {
-                out[0] = 7;
-                out[1] = 0;
-                out[2] = 0;
-                return 7;
-            }
-
-            @Override
-            public void step(int n) {
-            }
-        };
+        AvatarLink counted = countedLink(7, 7);
         double[] f = new double[3];
         try (DecoupledAvatar a = new DecoupledAvatar(counted)) {
             long steps = 0;
@@ -159,28 +138,7 @@ class DecoupledAvatarTest {
     void theHapticSideNeverWaitsForAHelperCaughtMidPublication() throws Exception {
         // a helper preempted between the two halves of a publication leaves the sequence odd; the haptic
         // thread (perhaps real-time) must not spin until it runs again
-        AvatarLink counted = new AvatarLink() {
-            @Override
-            public void setTarget(double x, double y, double z) {
-            }
-
-            @Override
-            public void takeForce(double[] out) {
-                takeForceCounted(out);
-            }
-
-            @Override
-            public long takeForceCounted(double[] out) {
-                out[0] = 2;
-                out[1] = 0;
-                out[2] = 0;
-                return 1;
-            }
-
-            @Override
-            public void step(int n) {
-            }
-        };
+        AvatarLink counted = countedLink(2, 1);
         double[] f = new double[3];
         try (DecoupledAvatar a = new DecoupledAvatar(counted)) {
             a.setTarget(0, 0, 0);
@@ -202,5 +160,31 @@ class DecoupledAvatarTest {
             assertEquals(exchanges, a.takeForceCounted(f));
             assertEquals(2.0 * exchanges, f[0], 1e-12);
         }
+    }
+
+    /** A link whose every take reports {@code steps} steps and a force of {@code fx} along x. */
+    private static AvatarLink countedLink(double fx, long steps) {
+        return new AvatarLink() {
+            @Override
+            public void setTarget(double x, double y, double z) {
+            }
+
+            @Override
+            public void takeForce(double[] out) {
+                takeForceCounted(out);
+            }
+
+            @Override
+            public long takeForceCounted(double[] out) {
+                out[0] = fx;
+                out[1] = 0;
+                out[2] = 0;
+                return steps;
+            }
+
+            @Override
+            public void step(int n) {
+            }
+        };
     }
 }

@@ -291,17 +291,7 @@ class HapticLoopTest {
             FaultyAvatar a = new FaultyAvatar(30, 0, true);
             HapticLoop loop = rig.loop(a);
             loop.start();
-            long deadline = System.nanoTime() + 5_000_000_000L;
-            while (loop.isRunning() && System.nanoTime() < deadline) {
-                LockSupport.parkNanos(1_000_000);
-            }
-            assertFalse(loop.isRunning());
-            assertTrue(loop.failure().contains("diverged on purpose"), loop.failure());
-            float[] last = torquesOf(rig.link.last());
-            assertEquals(0f, last[0]);
-            assertEquals(0f, last[1]);
-            assertEquals(0, rig.emulator.duty(1));
-            assertEquals(0, rig.emulator.duty(2));
+            assertStoppedOnDivergenceWithZeroTorque(rig, loop, 5);
         }
     }
 
@@ -377,11 +367,7 @@ class HapticLoopTest {
             loop.start();
             runUntil(loop, a, 50);
             rig.emulator.unplug();
-            long deadline = System.nanoTime() + 5_000_000_000L;
-            while (loop.isRunning() && System.nanoTime() < deadline) {
-                LockSupport.parkNanos(1_000_000);
-            }
-            assertFalse(loop.isRunning());
+            awaitStop(loop, 5);
             assertNotNull(loop.failure());
             assertTrue(loop.failure().contains("unplugged") && loop.failure().contains("USB"), loop.failure());
             loop.close();   // no throw
@@ -397,11 +383,7 @@ class HapticLoopTest {
             loop.start();
             runUntil(loop, a, 20);
             rig.emulator.dropReplies(Integer.MAX_VALUE);
-            long deadline = System.nanoTime() + 5_000_000_000L;
-            while (loop.isRunning() && System.nanoTime() < deadline) {
-                LockSupport.parkNanos(1_000_000);
-            }
-            assertFalse(loop.isRunning());
+            awaitStop(loop, 5);
             assertTrue(loop.failure().contains("no reply"), loop.failure());
             assertEquals(0, rig.emulator.duty(1), "zero torque was sent before closing");
             assertTrue(rig.board.isClosed());
@@ -587,17 +569,7 @@ class HapticLoopTest {
             HapticLoop loop = rig.loop(failing);
             loop.setMode(HapticLoop.Mode.AUDIO);
             loop.start();
-            long deadline = System.nanoTime() + 10_000_000_000L;
-            while (loop.isRunning() && System.nanoTime() < deadline) {
-                LockSupport.parkNanos(1_000_000);
-            }
-            assertFalse(loop.isRunning());
-            assertTrue(loop.failure().contains("diverged on purpose"), loop.failure());
-            float[] last = torquesOf(rig.link.last());
-            assertEquals(0f, last[0]);
-            assertEquals(0f, last[1]);
-            assertEquals(0, rig.emulator.duty(1));
-            assertEquals(0, rig.emulator.duty(2));
+            assertStoppedOnDivergenceWithZeroTorque(rig, loop, 10);
         }
     }
 
@@ -768,5 +740,25 @@ class HapticLoopTest {
                 }
             }
         }
+    }
+
+    /** Waits up to {@code seconds} for the loop to stop by itself, and asserts that it did. */
+    private static void awaitStop(HapticLoop loop, int seconds) {
+        long deadline = System.nanoTime() + seconds * 1_000_000_000L;
+        while (loop.isRunning() && System.nanoTime() < deadline) {
+            LockSupport.parkNanos(1_000_000);
+        }
+        assertFalse(loop.isRunning());
+    }
+
+    /** The loop stops on the avatar's divergence, and the last torques it sent, and the motors' duties, are zero. */
+    private static void assertStoppedOnDivergenceWithZeroTorque(Rig rig, HapticLoop loop, int seconds) {
+        awaitStop(loop, seconds);
+        assertTrue(loop.failure().contains("diverged on purpose"), loop.failure());
+        float[] last = torquesOf(rig.link.last());
+        assertEquals(0f, last[0]);
+        assertEquals(0f, last[1]);
+        assertEquals(0, rig.emulator.duty(1));
+        assertEquals(0, rig.emulator.duty(2));
     }
 }
