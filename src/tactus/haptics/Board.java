@@ -34,6 +34,7 @@ public class Board implements AutoCloseable {
     private final List<Device> devices = new ArrayList<>();
     private final Thread shutdownHook;
     private final boolean hookInRuntime;
+    private final MotorGuardLink guard;
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
     private volatile int lostAfterTimeouts = DEFAULT_LOST_AFTER_TIMEOUTS;
     private int consecutiveTimeouts;
@@ -100,6 +101,16 @@ public class Board implements AutoCloseable {
             Runtime.getRuntime().addShutdownHook(shutdownHook);
             hookInRuntime = true;
         }
+        this.guard = MotorGuardLink.watch(transport);
+    }
+
+    /**
+     * Turns the motor guard on or off for boards opened from now on (default on; the system property
+     * {@code -Dtactus.motorGuard=false} turns it off). The guard is a small process, started when a board opens
+     * a serial port, that zeroes the motors if this JVM ends without closing the board (see {@link MotorGuard}).
+     */
+    public static void setMotorGuard(boolean on) {
+        MotorGuardLink.setEnabled(on);
     }
 
     /** Opens the first serial port that looks like a Haply board (see {@link SerialPorts#findHaply()}). */
@@ -345,6 +356,7 @@ public class Board implements AutoCloseable {
             }
             closed = true;
             transport.close();
+            guard.release(lostReason == null);
         }
         try {
             if (hookInRuntime) {
@@ -391,6 +403,7 @@ public class Board implements AutoCloseable {
     synchronized void register(Device device) {
         if (!devices.contains(device)) {
             devices.add(device);
+            guard.deviceConfigured(device);
         }
     }
 
