@@ -116,7 +116,7 @@ class MotorGuardTest {
         assertEquals(2, run.emulator.resets(), how + ": the guard zeroed the motors and reset the board once");
     }
 
-    private static void assertZeroedByTheSketch(SketchEndingRun run, String how, long end) throws Exception {
+    static void assertZeroedByTheSketch(SketchEndingRun run, String how, long end) throws Exception {
         assertTrue(run.guard().isPresent(), "the board started a motor guard");
         double ms = run.millisToZero(end, LIMIT_MS);
         System.out.printf("MotorGuardTest: %s: duty 0 after %.0f ms%n", how, ms);

@@ -73,7 +73,9 @@ final class SketchEndingRun implements AutoCloseable {
             while (!run.motorsDriven() && System.nanoTime() < deadline) {
                 Thread.sleep(2);
             }
-            run.guard = child.toHandle().children().findFirst().orElse(null);
+            run.guard = child.toHandle().descendants()
+                    .filter(h -> h.info().commandLine().orElse("").contains(MotorGuard.class.getName()))
+                    .findFirst().orElse(null);
             assertTrue(run.motorsDriven(), "the child drives both motors (duty " + emulator.duty(1) + "/"
                     + emulator.duty(2) + "); its output:\n" + run.log);
         } catch (Throwable t) {
