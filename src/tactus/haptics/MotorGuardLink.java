@@ -121,7 +121,8 @@ final class MotorGuardLink {
         }
     }
 
-    private static List<String> command() {
+    /** The command line that starts a guard: this JVM's java, small-footprint options, Tactus and jSerialComm. */
+    static List<String> command() {
         String java = ProcessHandle.current().info().command()
                 .orElse(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
         List<String> cmd = new ArrayList<>();
