@@ -42,6 +42,7 @@ public final class MotorGuard {
 
     /** Runs the guard: reads the parent's lines from standard input until it ends, then acts or exits. */
     public static void main(String[] args) {
+        ignoreTerminalSignals();
         MotorGuard guard = new MotorGuard();
         Optional<ProcessHandle> parent = ProcessHandle.current().parent();
         Thread watcher = new Thread(() -> guard.watchParent(parent.orElse(null)), "tactus-motor-guard-parent");
@@ -60,6 +61,21 @@ public final class MotorGuard {
             // the pipe broke: same as the parent gone
         }
         guard.act("the sketch's JVM ended (or released the board) without zeroing the motors");
+    }
+
+    /**
+     * Ignores SIGINT, SIGTERM and SIGHUP: Ctrl-C in a terminal, a closed terminal or a service stop signal the
+     * whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
+     * sketch is gone; SIGKILL still ends it).
+     */
+    private static void ignoreTerminalSignals() {
+        for (String name : new String[] {"INT", "TERM", "HUP"}) {
+            try {
+                sun.misc.Signal.handle(new sun.misc.Signal(name), sun.misc.SignalHandler.SIG_IGN);
+            } catch (Throwable e) {
+                // not on this platform (Windows has no SIGHUP): the guard then dies with the group
+            }
+        }
     }
 
     /** Polls the parent (in case the pipe outlives it); acts as soon as it is gone. */

@@ -1,6 +1,7 @@
 package tactus.haptics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -81,6 +82,26 @@ class MotorGuardProcessTest {
             } finally {
                 guard.destroyForcibly();
             }
+        }
+    }
+
+    /** Ctrl-C, a closed terminal or a service stop signal the whole process group: the guard must outlive it. */
+    @Test
+    void terminalSignalsDoNotEndTheGuard() throws Exception {
+        Process guard = startGuard();
+        try {
+            tell(guard, "port 0 /dev/tactus-no-such-port\ndevice 5 10 9");
+            Thread.sleep(500);   // the guard has set up its signal handling
+            for (String signal : new String[] {"INT", "TERM", "HUP"}) {
+                Process kill = new ProcessBuilder("kill", "-" + signal, Long.toString(guard.pid())).start();
+                assertTrue(kill.waitFor(5, TimeUnit.SECONDS) && kill.exitValue() == 0, "kill -" + signal);
+            }
+            assertFalse(guard.waitFor(300, TimeUnit.MILLISECONDS), "the guard ignores SIGINT, SIGTERM and SIGHUP");
+            guard.getOutputStream().close();
+            assertTrue(guard.waitFor(MotorGuard.ACT_LIMIT_MS + 2_000, TimeUnit.MILLISECONDS), "the guard ends");
+            assertTrue(output(guard).contains("nothing sent"), "it still did its job once its input ended");
+        } finally {
+            guard.destroyForcibly();
         }
     }
 
