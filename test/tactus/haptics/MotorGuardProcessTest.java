@@ -96,7 +96,7 @@ class MotorGuardProcessTest {
                 Process kill = new ProcessBuilder("kill", "-" + signal, Long.toString(guard.pid())).start();
                 assertTrue(kill.waitFor(5, TimeUnit.SECONDS) && kill.exitValue() == 0, "kill -" + signal);
             }
-            assertFalse(guard.waitFor(300, TimeUnit.MILLISECONDS), "the guard ignores SIGINT, SIGTERM and SIGHUP");
+            assertFalse(guard.waitFor(1_000, TimeUnit.MILLISECONDS), "the guard ignores SIGINT, SIGTERM and SIGHUP");
             guard.getOutputStream().close();
             assertTrue(guard.waitFor(MotorGuard.ACT_LIMIT_MS + 2_000, TimeUnit.MILLISECONDS), "the guard ends");
             assertTrue(output(guard).contains("nothing sent"), "it still did its job once its input ended");
