@@ -15,7 +15,8 @@ import java.util.concurrent.locks.LockSupport;
  * flushing on a mismatch, on more bytes than the replies still owed, or on an absurd value (all counted,
  * never printed); each command goes out in one write; {@link #close()}
  * sends zero torques to every configured device before closing, also from a JVM shutdown hook and from
- * Processing's {@code dispose}.
+ * Processing's {@code dispose}; where the JVM ends with neither (the Processing editor's Stop button, SIGKILL),
+ * a {@link MotorGuard} process started with the board sends them.
  *
  * <p>Methods are synchronized on the board (uncontended in normal use: one haptic thread).
  */

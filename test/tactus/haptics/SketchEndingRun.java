@@ -73,9 +73,7 @@ final class SketchEndingRun implements AutoCloseable {
             while (!run.motorsDriven() && System.nanoTime() < deadline) {
                 Thread.sleep(2);
             }
-            run.guard = child.toHandle().descendants()
-                    .filter(h -> h.info().commandLine().orElse("").contains(MotorGuard.class.getName()))
-                    .findFirst().orElse(null);
+            run.guard = child.toHandle().descendants().filter(SketchEndingRun::isGuard).findFirst().orElse(null);
             assertTrue(run.motorsDriven(), "the child drives both motors (duty " + emulator.duty(1) + "/"
                     + emulator.duty(2) + "); its output:\n" + run.log);
         } catch (Throwable t) {
@@ -83,6 +81,11 @@ final class SketchEndingRun implements AutoCloseable {
             throw t;
         }
         return run;
+    }
+
+    private static boolean isGuard(ProcessHandle h) {
+        String[] args = h.info().arguments().orElse(new String[0]);
+        return args.length > 0 && args[args.length - 1].equals(MotorGuard.class.getName());
     }
 
     /** True while both motors have a non-zero duty. */
