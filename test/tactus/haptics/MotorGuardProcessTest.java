@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -103,6 +105,86 @@ class MotorGuardProcessTest {
         } finally {
             guard.destroyForcibly();
         }
+    }
+
+    /**
+     * The guard's parent dies while its input pipe stays open (here held by the test through a FIFO): the guard
+     * notices from its parent poll and acts.
+     */
+    @Test
+    void actsWhenItsParentIsGoneEvenIfItsInputStaysOpen() throws Exception {
+        Path dir = Files.createTempDirectory("motor-guard");
+        Path fifo = dir.resolve("in");
+        try {
+            Process mk = new ProcessBuilder("mkfifo", fifo.toString()).start();
+            assertTrue(mk.waitFor(5, TimeUnit.SECONDS) && mk.exitValue() == 0, "mkfifo");
+            StringBuilder cmd = new StringBuilder();
+            for (String a : MotorGuardLink.command()) {
+                cmd.append('\'').append(a.replace("'", "'\\''")).append("' ");
+            }
+            // the shell starts the guard on the FIFO, then ends: the guard's parent is gone, its input is not
+            Path log = dir.resolve("log");
+            Process shell = new ProcessBuilder("sh", "-c", cmd + "< '" + fifo + "' & sleep 1")
+                    .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+            try (OutputStream in = Files.newOutputStream(fifo)) {
+                in.write("port 0 /dev/tactus-no-such-port\ndevice 5 10 9\n".getBytes(StandardCharsets.UTF_8));
+                in.flush();
+                assertTrue(shell.waitFor(10, TimeUnit.SECONDS), "the shell ends");
+                long gone = System.nanoTime();
+                long deadline = gone + 10_000_000_000L;
+                String out = "";
+                while (!out.contains("nothing sent") && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                    out = new String(Files.readAllBytes(log), StandardCharsets.UTF_8);
+                }
+                System.out.printf("MotorGuardProcessTest: parent gone, input open: guard done after %.0f ms%n",
+                        (System.nanoTime() - gone) / 1e6);
+                assertTrue(out.contains("the sketch's JVM is gone") && out.contains("nothing sent"),
+                        "the guard acts once its parent is gone; its output: " + out);
+            } finally {
+                Files.deleteIfExists(log);
+            }
+        } finally {
+            Files.deleteIfExists(fifo);
+            Files.deleteIfExists(dir);
+        }
+    }
+
+    @Test
+    void aBoardStartsAGuardOnlyWhenTheGuardIsOnAndItsCloseEndsIt() throws Exception {
+        try (PtyPair pty = PtyPair.open()) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            emulator.serve(SerialTransport.open(pty.boardEnd(), 0));
+            try {
+                Board.setMotorGuard(false);
+                long before = guards();
+                Board off = new Board(pty.hostEnd(), 0);
+                assertEquals(before, guards(), "Board.setMotorGuard(false): no guard");
+                off.close();
+                Board.setMotorGuard(true);
+                Board on = new Board(pty.hostEnd(), 0);
+                assertEquals(before + 1, guards(), "a board on a serial port starts a guard");
+                Board inProcess = new Board(emulator.connect());
+                assertEquals(before + 1, guards(), "no guard for an in-process transport");
+                inProcess.close();
+                on.close();
+                long deadline = System.nanoTime() + 3_000_000_000L;
+                while (guards() > before && System.nanoTime() < deadline) {
+                    Thread.sleep(5);
+                }
+                assertEquals(before, guards(), "closing the board ends its guard");
+            } finally {
+                Board.setMotorGuard(!"false".equals(System.getProperty(MotorGuardLink.PROPERTY)));
+                emulator.close();
+            }
+        }
+    }
+
+    private static long guards() {
+        return ProcessHandle.current().children().filter(h -> {
+            String[] a = h.info().arguments().orElse(new String[0]);
+            return a.length > 0 && a[a.length - 1].equals(MotorGuard.class.getName());
+        }).count();
     }
 
     @Test
