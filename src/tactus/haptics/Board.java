@@ -15,7 +15,8 @@ import java.util.concurrent.locks.LockSupport;
  * flushing on a mismatch, on more bytes than the replies still owed, or on an absurd value (all counted,
  * never printed); each command goes out in one write; {@link #close()}
  * sends zero torques to every configured device before closing, also from a JVM shutdown hook and from
- * Processing's {@code dispose}.
+ * Processing's {@code dispose}; where the JVM ends with neither (the Processing editor's Stop button, SIGKILL),
+ * a {@link MotorGuard} process started with the board sends them.
  *
  * <p>Methods are synchronized on the board (uncontended in normal use: one haptic thread).
  */
@@ -34,6 +35,7 @@ public class Board implements AutoCloseable {
     private final List<Device> devices = new ArrayList<>();
     private final Thread shutdownHook;
     private final boolean hookInRuntime;
+    private final MotorGuardLink guard;
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
     private volatile int lostAfterTimeouts = DEFAULT_LOST_AFTER_TIMEOUTS;
     private int consecutiveTimeouts;
@@ -100,6 +102,16 @@ public class Board implements AutoCloseable {
             Runtime.getRuntime().addShutdownHook(shutdownHook);
             hookInRuntime = true;
         }
+        this.guard = MotorGuardLink.watch(transport);
+    }
+
+    /**
+     * Turns the motor guard on or off for boards opened from now on (default on; the system property
+     * {@code -Dtactus.motorGuard=false} turns it off). The guard is a small process, started when a board opens
+     * a serial port, that zeroes the motors if this JVM ends without closing the board (see {@link MotorGuard}).
+     */
+    public static void setMotorGuard(boolean on) {
+        MotorGuardLink.setEnabled(on);
     }
 
     /** Opens the first serial port that looks like a Haply board (see {@link SerialPorts#findHaply()}). */
@@ -345,6 +357,7 @@ public class Board implements AutoCloseable {
             }
             closed = true;
             transport.close();
+            guard.release(lostReason == null);
         }
         try {
             if (hookInRuntime) {
@@ -391,6 +404,7 @@ public class Board implements AutoCloseable {
     synchronized void register(Device device) {
         if (!devices.contains(device)) {
             devices.add(device);
+            guard.deviceConfigured(device);
         }
     }
 

@@ -143,6 +143,11 @@ public final class SerialTransport implements Transport {
         }
     }
 
+    /** The baud rate the port was opened with. */
+    int baudRate() {
+        return port.getBaudRate();
+    }
+
     @Override
     public String describe() {
         return name;

@@ -5,7 +5,8 @@
  * the Haply V2 wire protocol over a {@link tactus.haptics.Transport}, pantograph kinematics with
  * hardware presets, and port discovery; the fixed-rate {@link tactus.haptics.HapticLoop} with its telemetry
  * and safety; and {@link tactus.haptics.HapticSession}, which gives a sketch a Haply (or the emulator, with
- * the mouse as the hand) and a loop in a few lines.
+ * the mouse as the hand) and a loop in a few lines. A board on a serial port starts a
+ * {@link tactus.haptics.MotorGuard} process that zeroes the motors if the JVM ends without closing the board.
  *
  * <p>A sketch written for hAPI 2.x ports by deleting the hAPI {@code .java} files from its folder and
  * adding {@code import tactus.haptics.*;}. The board emulator lives in {@code tactus.haptics.emulator}.
