@@ -14,25 +14,37 @@ import tactus.engine.StepPlan;
 final class StateAccess {
     private final ModelCore c;
     private final Engine engine;
-    private final double[] tmp = new double[3];
+    /** Scratch of the threads that hold the model's lock (they take turns). */
+    private final double[] lockedTmp = new double[3];
+    /** Scratch of a realtime owner, which takes no lock and so may run beside a lock holder. */
+    private final double[] ownerTmp = new double[3];
 
     StateAccess(ModelCore core) {
         this.c = core;
         this.engine = core.engine;
     }
 
+    /** @return the calling thread's scratch vector: the owner's own while the model is stepped in realtime. */
+    private double[] scratch() {
+        Ownership o = c.own;
+        return o != null && o.isOwnerThread() ? ownerTmp : lockedTmp;
+    }
+
     Vect3D position(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.position(id, tmp);
         return out.set(tmp[0], tmp[1], tmp[2]);
     }
 
     Vect3D velocity(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.displacement(id, tmp);
         UnitScale u = c.units();
         return out.set(u.velocityOut(tmp[0]), u.velocityOut(tmp[1]), u.velocityOut(tmp[2]));
     }
 
     Vect3D force(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.force(id, tmp);
         UnitScale u = c.units();
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
@@ -102,6 +114,7 @@ final class StateAccess {
      * model units of force are converted to the user's units in {@code out}).
      */
     long takeAvatarForceCounted(int id, Vect3D out) {
+        double[] tmp = scratch();
         Ownership o = c.own;
         long n;
         double x;
@@ -140,16 +153,22 @@ final class StateAccess {
     }
 
 
+    /*
+     * The energies only read: the plan as it is (Engine.planForReading never re-selects kernels and compiles only a
+     * model that has no current plan), and a contact group's pairs found by a search of their own, never by
+     * rebuilding the broad phase the stepping thread uses.
+     */
+
     double kineticEnergy() {
-        return c.units().forceOut(EnergyMeter.kinetic(engine.plan()));
+        return c.units().forceOut(EnergyMeter.kinetic(engine.planForReading()));
     }
 
     double potentialEnergy() {
-        return c.units().forceOut(EnergyMeter.potential(engine.plan()));
+        return c.units().forceOut(EnergyMeter.potential(engine.planForReading()));
     }
 
     double totalEnergy() {
-        StepPlan p = engine.plan();
+        StepPlan p = engine.planForReading();
         return c.units().forceOut(EnergyMeter.kinetic(p) + EnergyMeter.potential(p));
     }
 }

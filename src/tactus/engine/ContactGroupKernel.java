@@ -85,16 +85,23 @@ final class ContactGroupKernel implements Kernel {
     /**
      * @return the potential energy ½K(d - threshold)² of the pairs closer than the threshold, per-step units,
      *     summed in the same order and with the same operations as {@link EnergyMeter} sums the equivalent
-     *     explicit Contact3D links, so both agree exactly. The neighbour list is rebuilt first when a member
-     *     was moved (by a step or by hand) beyond the reach of the current list.
+     *     explicit Contact3D links, so both agree exactly. Read-only: the pairs are found by a neighbour search
+     *     of its own (a fresh list with a skin of a millionth of the threshold, allocated here), never by
+     *     rebuilding this kernel's list, so a reader on another thread never touches the state the stepping
+     *     thread uses.
      */
     double energy() {
-        if (!built || movedTooFar()) {
-            rebuild();
-        }
+        ContactGroupKernel search = new ContactGroupKernel(p, slot, threshold, k, z, 1e-6 * threshold);
+        search.rebuild();
+        return search.engagedEnergy();
+    }
+
+    /** @return the energy of the engaged pairs in this kernel's own neighbour list, as it is. */
+    private double engagedEnergy() {
         double e = 0;
-        for (int q = 0; q < pairs; q++) {
-            int a = pairI[q], c = pairJ[q];
+        final int[] pi = pairI, pj = pairJ;
+        for (int q = 0, m = Math.min(pairs, pi.length); q < m; q++) {
+            int a = pi[q], c = pj[q];
             double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
             double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (d < threshold) {
@@ -103,6 +110,28 @@ final class ContactGroupKernel implements Kernel {
             }
         }
         return e;
+    }
+
+    /**
+     * @return a copy of this kernel's broad-phase state (pair count, the pairs, whether it is built, the rebuild
+     *     count and the member positions at the last build), for tests that check a reader left it alone
+     */
+    double[] broadPhaseState() {
+        double[] s = new double[3 + 2 * pairs + 3 * n];
+        s[0] = pairs;
+        s[1] = built ? 1 : 0;
+        s[2] = rebuilds;
+        for (int q = 0; q < pairs; q++) {
+            s[3 + 2 * q] = pairI[q];
+            s[4 + 2 * q] = pairJ[q];
+        }
+        int o = 3 + 2 * pairs;
+        for (int m = 0; m < n; m++) {
+            s[o + 3 * m] = builtX[m];
+            s[o + 3 * m + 1] = builtY[m];
+            s[o + 3 * m + 2] = builtZ[m];
+        }
+        return s;
     }
 
     /** @return how many times the neighbour list has been rebuilt (for tests of the rebuild rate). */
