@@ -22,7 +22,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  * the one of a run without readers, with no exception on any thread, whatever the owner's batch size.
  */
 class EnergyReaderRaceTest {
-    private static final int STEPS = 6000;
+    private static final int STEPS = 10000;
 
     @ParameterizedTest(name = "{0} reader(s), batches of {1} steps")
     @CsvSource({"1, 1", "2, 64", "3, 7", "1, 512"})

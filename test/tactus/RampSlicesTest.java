@@ -15,8 +15,9 @@ import org.junit.jupiter.params.provider.CsvSource;
  * Defect 9 of issue 15: in locked mode a running ParamController ramp made a stepping batch keep the model's lock
  * for the whole batch (a setter waited 3.1-3.6 s instead of 7 ms), where an unramped batch lets a waiting thread in
  * between two slices. Here a long ramped batch (computeNSteps, or one long draw_physics frame) runs on one thread
- * and another thread makes several changes once the batch is under way: each change must return while the batch is
- * still running, and must be in effect at the end. Ordering and progress are asserted, never a duration.
+ * and another thread makes several changes once the batch is under way: each change (and a step count read after
+ * it) must return while the batch is still running, and the last change must be in effect at the end. Ordering and
+ * progress are asserted, never a duration.
  */
 class RampSlicesTest {
     private static final int MASSES = 500;
@@ -52,15 +53,18 @@ class RampSlicesTest {
             Thread.sleep(1);
         }
         assertFalse(batchDone.get(), "the batch ended before any change could be made (make it longer)");
-        boolean[] returnedDuringBatch = new boolean[changes];
+        long[] stepsWhenReturned = new long[changes];
         for (int c = 0; c < changes; c++) {
             m.setLinkStiffness("extra", 0.05 + 0.01 * c);
-            returnedDuringBatch[c] = !batchDone.get();
+            stepsWhenReturned[c] = m.getStepCount(); // lets this thread in between two slices as well
         }
         stepper.join();
         assertNull(error.get());
+        long total = m.getStepCount();
+        assertTrue(total >= 20_000, "the batch ran " + total + " steps");
         for (int c = 0; c < changes; c++) {
-            assertTrue(returnedDuringBatch[c], "change " + c + " waited for the whole ramped batch");
+            assertTrue(stepsWhenReturned[c] < total, "change " + c + " waited for the whole ramped batch ("
+                    + stepsWhenReturned[c] + " of " + total + " steps run when it returned)");
         }
         assertTrue(m.getParamController("k").isRamping(), "the ramp must have run through the whole batch");
         assertEquals(0.05 + 0.01 * (changes - 1), m.getLinkStiffness("extra"), 1e-15);
