@@ -4,6 +4,7 @@ import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.StabilityAnalyzer;
 import tactus.engine.StabilityReport;
+import tactus.engine.StepPlan;
 
 /** Formats stability reports as one readable line, with module names and model units. */
 final class StabilityMessages {
@@ -13,8 +14,11 @@ final class StabilityMessages {
     private StabilityMessages() {
     }
 
-    /** @return a one-line description of an unstable report, or null if it is stable without negative damping. */
-    static String describe(StabilityReport r, Engine e, Directory dir, UnitScale u, int contacts,
+    /**
+     * @param p the plan the report was made from (read only)
+     * @return a one-line description of an unstable report, or null if it is stable without negative damping
+     */
+    static String describe(StabilityReport r, StepPlan p, Engine e, Directory dir, UnitScale u, int contacts,
                            String[] groupNames) {
         Registry mats = dir.mats;
         Registry links = dir.links;
@@ -43,7 +47,7 @@ final class StabilityMessages {
             } else {
                 param = "K";
                 double kk = e.linkStiffness(id);
-                limit = u.stiffnessOut(linearLimit(r, e, contacts, kk,
+                limit = u.stiffnessOut(linearLimit(r, p, contacts, kk,
                         StabilityAnalyzer.Assumption.linkStiffness(id, kk * PROBE)));
                 value = u.stiffnessOut(kk);
             }
@@ -60,7 +64,7 @@ final class StabilityMessages {
             if (e.massKind(id).isOscillator()) {
                 double kk = e.oscStiffness(id);
                 double k = u.stiffnessOut(kk);
-                double limit = u.stiffnessOut(linearLimit(r, e, contacts, kk,
+                double limit = u.stiffnessOut(linearLimit(r, p, contacts, kk,
                         StabilityAnalyzer.Assumption.oscillatorStiffness(id, kk * PROBE)));
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": K = " + fmt(k)
                         + (limit > 0 ? " is above its limit of about " + fmt(limit)
@@ -85,10 +89,10 @@ final class StabilityMessages {
      *
      * @param probe the stiffness {@code value * PROBE} to assume, on the culprit module
      */
-    private static double linearLimit(StabilityReport r, Engine e, int contacts, double value,
+    private static double linearLimit(StabilityReport r, StepPlan p, int contacts, double value,
                                       StabilityAnalyzer.Assumption probe) {
         double probed = value * PROBE;
-        double l2 = StabilityAnalyzer.analyze(e.planForAnalysis(), contacts, probe).lambda();
+        double l2 = StabilityAnalyzer.analyze(p, contacts, probe).lambda();
         double slope = (l2 - r.lambda()) / (probed - value);
         return slope > 0 ? value + (StabilityReport.LIMIT - r.lambda()) / slope : value * StabilityReport.LIMIT / r.lambda();
     }

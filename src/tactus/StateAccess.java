@@ -154,21 +154,40 @@ final class StateAccess {
 
 
     /*
-     * The energies only read: the plan as it is (Engine.planForReading never re-selects kernels and compiles only a
-     * model that has no current plan), and a contact group's pairs found by a search of their own, never by
-     * rebuilding the broad phase the stepping thread uses.
+     * The energies only read: the plan as it is, and a contact group's pairs found by a search of their own, never
+     * by rebuilding the broad phase the stepping thread uses.
      */
 
+    /**
+     * @return the plan a query reads: on another thread than a realtime owner, the live plan as it is (never
+     *     compiled here); otherwise {@link Engine#planForReading()}, which compiles only a model with no current plan
+     */
+    StepPlan planToRead() {
+        return planToRead(c, engine);
+    }
+
+    /** @return the plan a query on the model of {@code core} reads (see {@link #planToRead()}). */
+    static StepPlan planToRead(ModelCore core, Engine engine) {
+        Ownership o = core.own;
+        if (o != null && !o.isOwnerThread()) {
+            StepPlan live = engine.livePlan();
+            if (live != null) {
+                return live;
+            }
+        }
+        return engine.planForReading();
+    }
+
     double kineticEnergy() {
-        return c.units().forceOut(EnergyMeter.kinetic(engine.planForReading()));
+        return c.units().forceOut(EnergyMeter.kinetic(planToRead()));
     }
 
     double potentialEnergy() {
-        return c.units().forceOut(EnergyMeter.potential(engine.planForReading()));
+        return c.units().forceOut(EnergyMeter.potential(planToRead()));
     }
 
     double totalEnergy() {
-        StepPlan p = engine.planForReading();
+        StepPlan p = planToRead();
         return c.units().forceOut(EnergyMeter.kinetic(p) + EnergyMeter.potential(p));
     }
 }

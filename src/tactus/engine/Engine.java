@@ -511,6 +511,14 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
+     * @return the plan being stepped, as it is, or null before the first compile: never compiles, for a reader on
+     *     another thread than the realtime owner (which alone may compile while it steps)
+     */
+    public StepPlan livePlan() {
+        return plan;
+    }
+
+    /**
      * @return the simple class names of the kernels one step runs, in order, as {@link StepPlan#kernelNames()};
      *     read-only: when a compile or a kernel re-selection is pending, the names come from a plan prepared for
      *     the occasion (as {@link #prepareCompile()} does), never from re-selecting the live plan's kernels
@@ -523,7 +531,11 @@ public final class Engine implements AutoCloseable {
             compile(); // never compiled: nobody steps it yet, so this is what the first step would do
             return plan.kernelNames();
         }
-        return PlanCompiler.prepare(masses, links, medium, useStencils(), sweeps, groups).plan.kernelNames();
+        try {
+            return PlanCompiler.prepare(masses, links, medium, useStencils(), sweeps, groups).plan.kernelNames();
+        } catch (RuntimeException raced) {
+            return plan.kernelNames(); // the stepping thread changed the topology meanwhile: the plan it steps
+        }
     }
 
     /** @return the current compiled plan, compiling first if needed. */
