@@ -54,7 +54,7 @@ class StabilityProbeTest {
         // one mass: lambda = (K + 2Z) / M, so lambda reaches 4 at K = 4M - 2Z exactly
         String expected = String.format(Locale.ROOT, "%.4g", 4 * mass - 2 * z);
         long changes = watchWhile(() -> m.core.engine.oscStiffness(id), k, () -> {
-            for (int i = 0; i < DESCRIPTIONS; i++) {
+            for (int i = 0; i < 10 * DESCRIPTIONS; i++) { // one mass: each analysis is quick
                 String d = m.describeStability();
                 assertTrue(d.contains("is above its limit of about " + expected), d);
             }
@@ -175,6 +175,9 @@ class StabilityProbeTest {
             }
         }, "watcher");
         watcher.start();
+        while (reads.get() == 0) {
+            Thread.onSpinWait(); // the watcher reads from before the first call on
+        }
         try {
             body.run();
         } finally {
