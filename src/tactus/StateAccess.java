@@ -9,7 +9,8 @@ import tactus.engine.StepPlan;
  * Reads and writes the simulated state in the model's units: positions, velocities (always in units per
  * second), forces, hand-set positions and velocities, force impulses, the haptic avatar's target and
  * accumulated force, and the energies. Nothing here allocates except the facade getters that return a new
- * {@link Vect3D}. The caller holds the model's lock.
+ * {@link Vect3D}. The caller holds the model's lock, or is the realtime owner (which has a scratch vector of its
+ * own). The reads never write the engine.
  */
 final class StateAccess {
     private final ModelCore c;
@@ -152,23 +153,13 @@ final class StateAccess {
         return n;
     }
 
-
-    /*
-     * The energies only read: the plan as it is, and a contact group's pairs found by a search of their own, never
-     * by rebuilding the broad phase the stepping thread uses.
-     */
-
     /**
-     * @return the plan a query reads: on another thread than a realtime owner, the live plan as it is (never
-     *     compiled here); otherwise {@link Engine#planForReading()}, which compiles only a model with no current plan
+     * @return the plan the energies read (they only read it, and a contact group's share never rebuilds the group's
+     *     neighbour list): on another thread than a realtime owner, the live plan as it is (never compiled there);
+     *     otherwise {@link Engine#planForReading()}, which compiles only a model with no current plan
      */
-    StepPlan planToRead() {
-        return planToRead(c, engine);
-    }
-
-    /** @return the plan a query on the model of {@code core} reads (see {@link #planToRead()}). */
-    static StepPlan planToRead(ModelCore core, Engine engine) {
-        Ownership o = core.own;
+    private StepPlan planToRead() {
+        Ownership o = c.own;
         if (o != null && !o.isOwnerThread()) {
             StepPlan live = engine.livePlan();
             if (live != null) {
