@@ -435,8 +435,7 @@ public class PhysicalModel {
             runRampedSteps(n);
             return;
         }
-        int elements = Math.max(1, core.dir.mats.size() + core.dir.links.size());
-        int slice = Math.max(core.engine.threads() > 1 ? 8 : 1, SLICE_ELEMENTS / elements);
+        int slice = sliceSteps();
         int done = 0;
         while (done < n) {
             int chunk = Math.min(slice, n - done);
@@ -446,17 +445,22 @@ public class PhysicalModel {
             if (ran < chunk) {
                 break;
             }
-            if (done < n && lock.hasQueuedThreads()) {
-                lock.unlock();
-                lock.lock();
+            if (done < n) {
+                letWaitingThreadIn();
             }
         }
         core.watch.check();
     }
 
-    /** Runs n steps one at a time while parameter controllers ramp, then checks stability once. */
+    /**
+     * Runs n steps one at a time while parameter controllers ramp, then checks stability once. Like
+     * {@link #runSteps}, it lets a thread waiting for the lock in after every slice of steps, so that a change made
+     * during a long ramped batch never waits for the whole batch.
+     */
     private void runRampedSteps(int n) {
+        int slice = sliceSteps();
         int done = 0;
+        int inSlice = 0;
         while (done < n) {
             boolean ramping = core.ramping();
             if (ramping) {
@@ -473,9 +477,27 @@ public class PhysicalModel {
                 runSteps(n - done);
                 return;
             }
+            if (++inSlice == slice && done < n) {
+                inSlice = 0;
+                letWaitingThreadIn();
+            }
         }
         core.guard.afterChange(null);
         core.watch.check();
+    }
+
+    /** @return the steps of one slice of a locked-mode batch: about {@link #SLICE_ELEMENTS} element updates. */
+    private int sliceSteps() {
+        int elements = Math.max(1, core.dir.mats.size() + core.dir.links.size());
+        return Math.max(core.engine.threads() > 1 ? 8 : 1, SLICE_ELEMENTS / elements);
+    }
+
+    /** Between two slices of a locked-mode batch: a thread waiting for the (fair) lock goes first. */
+    private void letWaitingThreadIn() {
+        if (lock.hasQueuedThreads()) {
+            lock.unlock();
+            lock.lock();
+        }
     }
 
     /**
@@ -525,7 +547,7 @@ public class PhysicalModel {
     public String[] getSimulatedEffects() {
         enter();
         try {
-            return PlanLabels.of(core.engine.plan().kernelNames());
+            return PlanLabels.of(core.engine.kernelNames());
         } finally {
             exit();
         }

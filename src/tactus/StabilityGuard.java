@@ -2,13 +2,15 @@ package tactus;
 
 import tactus.engine.Engine;
 import tactus.engine.StabilityAnalyzer;
+import tactus.engine.StepPlan;
 
 /**
  * The automatic stability check of a model: after {@link PhysicalModel#init()}, every parameter or topology
  * change is followed by an analysis of the whole network; under {@link StabilityPolicy#WARN} an unstable
  * result prints one line (once per distinct message), under {@link StabilityPolicy#THROW} the change is undone
  * and an {@link UnstableModelException} is thrown. Changes made in a batch (a subset, a rate change) are
- * analysed once, at the end. The caller holds the model's lock.
+ * analysed once, at the end. The caller holds the model's lock. The analysis and its messages only read the engine:
+ * a stiffness limit is found with an assumed coefficient ({@link StabilityAnalyzer.Assumption}), never by writing it.
  */
 final class StabilityGuard {
     private final Engine engine;
@@ -89,8 +91,9 @@ final class StabilityGuard {
         if (!armed || policy == StabilityPolicy.OFF) {
             return;
         }
-        tactus.engine.StabilityReport r = analyze();
-        String msg = message(r);
+        StepPlan p = planToAnalyse();
+        tactus.engine.StabilityReport r = analyze(p);
+        String msg = message(r, p);
         if (msg == null) {
             lastWarning = null;
             return;
@@ -109,23 +112,39 @@ final class StabilityGuard {
 
     /** @return the report of the model as it is now, in facade terms. */
     StabilityReport report() {
-        return facadeReport(analyze());
+        return facadeReport(analyze(planToAnalyse()));
     }
 
     /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
     String describe() {
-        tactus.engine.StabilityReport r = analyze();
-        String msg = message(r);
+        StepPlan p = planToAnalyse();
+        tactus.engine.StabilityReport r = analyze(p);
+        String msg = message(r, p);
         return msg != null ? msg : String.format(java.util.Locale.ROOT,
                 "Tactus: stable (lambda max = %.4g < 4, every stiffness could grow %.3gx)", r.lambda(), r.headroom());
     }
 
-    private tactus.engine.StabilityReport analyze() {
-        return StabilityAnalyzer.analyze(engine.planForAnalysis(), maxContacts);
+    /**
+     * @return the plan to analyse. The analysis only reads it: on another thread than a realtime owner (the drawing
+     *     thread, the WARN helper thread) it is the live plan as it is, never compiled or re-selected there.
+     */
+    private StepPlan planToAnalyse() {
+        Ownership o = own;
+        if (o != null && !o.isOwnerThread()) {
+            StepPlan live = engine.livePlan();
+            if (live != null) {
+                return live;
+            }
+        }
+        return engine.planForAnalysis();
     }
 
-    private String message(tactus.engine.StabilityReport r) {
-        return StabilityMessages.describe(r, engine, dir, time.units, maxContacts, subsets.groupNames());
+    private tactus.engine.StabilityReport analyze(StepPlan p) {
+        return StabilityAnalyzer.analyze(p, maxContacts);
+    }
+
+    private String message(tactus.engine.StabilityReport r, StepPlan p) {
+        return StabilityMessages.describe(r, p, engine, dir, time.units, maxContacts, subsets.groupNames());
     }
 
     private StabilityReport facadeReport(tactus.engine.StabilityReport r) {

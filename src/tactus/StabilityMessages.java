@@ -2,15 +2,23 @@ package tactus;
 
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
+import tactus.engine.StabilityAnalyzer;
 import tactus.engine.StabilityReport;
+import tactus.engine.StepPlan;
 
 /** Formats stability reports as one readable line, with module names and model units. */
 final class StabilityMessages {
+    /** The factor by which the second analysis of a stiffness limit raises the culprit's stiffness. */
+    private static final double PROBE = 1.01;
+
     private StabilityMessages() {
     }
 
-    /** @return a one-line description of an unstable report, or null if it is stable without negative damping. */
-    static String describe(StabilityReport r, Engine e, Directory dir, UnitScale u, int contacts,
+    /**
+     * @param p the plan the report was made from (read only)
+     * @return a one-line description of an unstable report, or null if it is stable without negative damping
+     */
+    static String describe(StabilityReport r, StepPlan p, Engine e, Directory dir, UnitScale u, int contacts,
                            String[] groupNames) {
         Registry mats = dir.mats;
         Registry links = dir.links;
@@ -38,9 +46,9 @@ final class StabilityMessages {
                 limit = value * scale;
             } else {
                 param = "K";
-                double kk = e.linkStiffness(id), zz = e.linkDamping(id), ll = e.linkLength(id);
-                limit = u.stiffnessOut(linearLimit(r, e, contacts, kk,
-                    v -> e.setLinkParams(id, v, zz, ll)));
+                double kk = e.linkStiffness(id);
+                limit = u.stiffnessOut(linearLimit(r, p, contacts, kk,
+                        StabilityAnalyzer.Assumption.linkStiffness(id, kk * PROBE)));
                 value = u.stiffnessOut(kk);
             }
             where = k.label() + " \"" + links.name(id) + "\": " + param + " = " + fmt(value)
@@ -54,9 +62,10 @@ final class StabilityMessages {
         } else if (r.culpritMass() >= 0 && e.isMass(r.culpritMass())) {
             int id = r.culpritMass();
             if (e.massKind(id).isOscillator()) {
-                double kk = e.oscStiffness(id), zz = e.oscDamping(id);
+                double kk = e.oscStiffness(id);
                 double k = u.stiffnessOut(kk);
-                double limit = u.stiffnessOut(linearLimit(r, e, contacts, kk, v -> e.setOscillator(id, v, zz)));
+                double limit = u.stiffnessOut(linearLimit(r, p, contacts, kk,
+                        StabilityAnalyzer.Assumption.oscillatorStiffness(id, kk * PROBE)));
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": K = " + fmt(k)
                         + (limit > 0 ? " is above its limit of about " + fmt(limit)
                         : " is too high, and lowering it alone cannot make the model stable (lower its damping Z)");
@@ -74,19 +83,17 @@ final class StabilityMessages {
 
     /**
      * The value of one stiffness at which lambda reaches the limit, by linear extrapolation from a second
-     * analysis with that stiffness 1% higher (exact for a single mass; the parameter is restored).
+     * analysis that assumes that stiffness {@link #PROBE} times higher (exact for a single mass). The second
+     * analysis only reads the plan: the engine is never written, so a realtime owner stepping the model (and a
+     * ramp it runs) is never disturbed by a reader asking for this message.
+     *
+     * @param probe the stiffness {@code value * PROBE} to assume, on the culprit module
      */
-    private static double linearLimit(StabilityReport r, Engine e, int contacts, double value,
-                                      java.util.function.DoubleConsumer set) {
-        double probe = value * 1.01;
-        set.accept(probe);
-        double l2;
-        try {
-            l2 = tactus.engine.StabilityAnalyzer.analyze(e.plan(), contacts).lambda();
-        } finally {
-            set.accept(value);
-        }
-        double slope = (l2 - r.lambda()) / (probe - value);
+    private static double linearLimit(StabilityReport r, StepPlan p, int contacts, double value,
+                                      StabilityAnalyzer.Assumption probe) {
+        double probed = value * PROBE;
+        double l2 = StabilityAnalyzer.analyze(p, contacts, probe).lambda();
+        double slope = (l2 - r.lambda()) / (probed - value);
         return slope > 0 ? value + (StabilityReport.LIMIT - r.lambda()) / slope : value * StabilityReport.LIMIT / r.lambda();
     }
 

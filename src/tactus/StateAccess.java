@@ -9,30 +9,43 @@ import tactus.engine.StepPlan;
  * Reads and writes the simulated state in the model's units: positions, velocities (always in units per
  * second), forces, hand-set positions and velocities, force impulses, the haptic avatar's target and
  * accumulated force, and the energies. Nothing here allocates except the facade getters that return a new
- * {@link Vect3D}. The caller holds the model's lock.
+ * {@link Vect3D}. The caller holds the model's lock, or is the realtime owner (which has a scratch vector of its
+ * own). The reads never write the engine.
  */
 final class StateAccess {
     private final ModelCore c;
     private final Engine engine;
-    private final double[] tmp = new double[3];
+    /** Scratch of the threads that hold the model's lock (they take turns). */
+    private final double[] lockedTmp = new double[3];
+    /** Scratch of a realtime owner, which takes no lock and so may run beside a lock holder. */
+    private final double[] ownerTmp = new double[3];
 
     StateAccess(ModelCore core) {
         this.c = core;
         this.engine = core.engine;
     }
 
+    /** @return the calling thread's scratch vector: the owner's own while the model is stepped in realtime. */
+    private double[] scratch() {
+        Ownership o = c.own;
+        return o != null && o.isOwnerThread() ? ownerTmp : lockedTmp;
+    }
+
     Vect3D position(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.position(id, tmp);
         return out.set(tmp[0], tmp[1], tmp[2]);
     }
 
     Vect3D velocity(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.displacement(id, tmp);
         UnitScale u = c.units();
         return out.set(u.velocityOut(tmp[0]), u.velocityOut(tmp[1]), u.velocityOut(tmp[2]));
     }
 
     Vect3D force(int id, Vect3D out) {
+        double[] tmp = scratch();
         engine.force(id, tmp);
         UnitScale u = c.units();
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
@@ -102,6 +115,7 @@ final class StateAccess {
      * model units of force are converted to the user's units in {@code out}).
      */
     long takeAvatarForceCounted(int id, Vect3D out) {
+        double[] tmp = scratch();
         Ownership o = c.own;
         long n;
         double x;
@@ -139,17 +153,32 @@ final class StateAccess {
         return n;
     }
 
+    /**
+     * @return the plan the energies read (they only read it, and a contact group's share never rebuilds the group's
+     *     neighbour list): on another thread than a realtime owner, the live plan as it is (never compiled there);
+     *     otherwise {@link Engine#planForReading()}, which compiles only a model with no current plan
+     */
+    private StepPlan planToRead() {
+        Ownership o = c.own;
+        if (o != null && !o.isOwnerThread()) {
+            StepPlan live = engine.livePlan();
+            if (live != null) {
+                return live;
+            }
+        }
+        return engine.planForReading();
+    }
 
     double kineticEnergy() {
-        return c.units().forceOut(EnergyMeter.kinetic(engine.plan()));
+        return c.units().forceOut(EnergyMeter.kinetic(planToRead()));
     }
 
     double potentialEnergy() {
-        return c.units().forceOut(EnergyMeter.potential(engine.plan()));
+        return c.units().forceOut(EnergyMeter.potential(planToRead()));
     }
 
     double totalEnergy() {
-        StepPlan p = engine.plan();
+        StepPlan p = planToRead();
         return c.units().forceOut(EnergyMeter.kinetic(p) + EnergyMeter.potential(p));
     }
 }

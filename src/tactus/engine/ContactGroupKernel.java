@@ -51,6 +51,11 @@ final class ContactGroupKernel implements Kernel {
     int pairs;
     private boolean built;
     private long rebuilds;
+    /**
+     * Sequence number of the neighbour list, for readers on other threads: odd while {@link #rebuild()} writes the
+     * list, even otherwise, and changed by every rebuild. Written by the stepping thread only, twice per rebuild.
+     */
+    private volatile long version;
 
     ContactGroupKernel(StepPlan p, int[] slots, double threshold, double k, double z, double skin) {
         this.p = p;
@@ -85,16 +90,43 @@ final class ContactGroupKernel implements Kernel {
     /**
      * @return the potential energy ½K(d - threshold)² of the pairs closer than the threshold, per-step units,
      *     summed in the same order and with the same operations as {@link EnergyMeter} sums the equivalent
-     *     explicit Contact3D links, so both agree exactly. The neighbour list is rebuilt first when a member
-     *     was moved (by a step or by hand) beyond the reach of the current list.
+     *     explicit Contact3D links, so both agree exactly. Read-only, so that a reader on another thread never
+     *     touches the state the stepping thread uses: the pairs come from this kernel's neighbour list when it is
+     *     complete for the current positions and was not being rebuilt meanwhile (checked with {@link #version}),
+     *     else from a neighbour search of its own (a fresh list with a skin of a millionth of the threshold,
+     *     allocated here, O(members)); the list itself is never rebuilt here.
      */
     double energy() {
-        if (!built || movedTooFar()) {
-            rebuild();
+        double e = energyFromList();
+        if (!Double.isNaN(e)) {
+            return e;
         }
+        ContactGroupKernel search = new ContactGroupKernel(p, slot, threshold, k, z, 1e-6 * threshold);
+        search.rebuild();
+        return search.engagedEnergy();
+    }
+
+    /**
+     * @return the energy summed over this kernel's neighbour list, or NaN when the list cannot be used: never built,
+     *     being rebuilt by the stepping thread (a sequence lock: {@link #version} is odd during a rebuild and changes
+     *     with each one), or stale (a member moved beyond half the skin since it was built)
+     */
+    private double energyFromList() {
+        long v = version;
+        if ((v & 1) != 0 || !built) {
+            return Double.NaN;
+        }
+        double e = movedTooFar() ? Double.NaN : engagedEnergy();
+        java.lang.invoke.VarHandle.acquireFence(); // the reads above happen before the second read of the version
+        return version == v ? e : Double.NaN;
+    }
+
+    /** @return the energy of the engaged pairs in this kernel's own neighbour list, as it is. */
+    private double engagedEnergy() {
         double e = 0;
-        for (int q = 0; q < pairs; q++) {
-            int a = pairI[q], c = pairJ[q];
+        final int[] pi = pairI, pj = pairJ;
+        for (int q = 0, m = Math.min(pairs, Math.min(pi.length, pj.length)); q < m; q++) {
+            int a = pi[q], c = pj[q];
             double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];
             double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (d < threshold) {
@@ -158,8 +190,21 @@ final class ContactGroupKernel implements Kernel {
         return c > 1e15 ? (long) 1e15 : c < -1e15 ? (long) -1e15 : (long) c;
     }
 
-    /** Builds the neighbour list: every pair closer than threshold + skin, in lexicographic member order. */
+    /**
+     * Builds the neighbour list: every pair closer than threshold + skin, in lexicographic member order. Only the
+     * stepping thread calls it (and a reader on a kernel of its own).
+     */
     void rebuild() {
+        version++; // odd: readers leave the list alone until the next even value
+        java.lang.invoke.VarHandle.storeStoreFence();
+        try {
+            rebuildList();
+        } finally {
+            version++;
+        }
+    }
+
+    private void rebuildList() {
         rebuilds++;
         built = true;
         final double[] x = p.x, y = p.y, zz = p.z;

@@ -41,8 +41,8 @@ public final class Engine implements AutoCloseable {
     private int countdown = guard.interval();
     private int divergedMass = -1;
     private long divergedAt = -1;
+    /** Scratch of {@link #makeFixed}, a structural change (made by the thread that applies changes). */
     private final double[] scratchA = new double[3];
-    private final double[] scratchB = new double[3];
 
     /** Creates an empty engine with no gravity and no friction. */
     public Engine() {
@@ -488,17 +488,54 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
-     * @return the plan for a stability analysis: compiled first only if the topology changed (or there is no plan
-     *     yet). A pending kernel re-selection (an effect switched on or off) does not change the system's matrices,
-     *     so it is left to the stepping thread: an analysis running on another thread while a realtime owner steps
-     *     must not touch the plan the owner is stepping. While the topology is held (a plan being prepared
-     *     beside the live one), the live plan is returned untouched.
+     * @return the plan for a stability analysis: the same as {@link #planForReading()}
      */
     public StepPlan planForAnalysis() {
+        return planForReading();
+    }
+
+    /**
+     * @return the plan for a query that only reads it (energies, stability analysis, effect labels): the current
+     *     plan, as it is. A pending kernel re-selection (an effect switched on or off) does not change the state or
+     *     the coefficients, so it is left to the stepping thread, as is a topology change that is held (a plan being
+     *     prepared beside the live one): a query running on another thread while a realtime owner steps never
+     *     touches the plan the owner is stepping. Compiles only when there is no plan yet or the topology changed
+     *     without a hold, which happens only before the first step or in locked mode, where the caller is the only
+     *     thread using the engine.
+     */
+    public StepPlan planForReading() {
         if (plan == null || (topologyDirty && !holdTopology)) {
             compile();
         }
         return plan;
+    }
+
+    /**
+     * @return the plan being stepped, as it is, or null before the first compile: never compiles, for a reader on
+     *     another thread than the realtime owner (which alone may compile while it steps)
+     */
+    public StepPlan livePlan() {
+        return plan;
+    }
+
+    /**
+     * @return the simple class names of the kernels one step runs, in order, as {@link StepPlan#kernelNames()};
+     *     read-only: when a compile or a kernel re-selection is pending, the names come from a plan prepared for
+     *     the occasion (as {@link #prepareCompile()} does), never from re-selecting the live plan's kernels
+     */
+    public String[] kernelNames() {
+        if (plan != null && !needsCompile()) {
+            return plan.kernelNames();
+        }
+        if (plan == null) {
+            compile(); // never compiled: nobody steps it yet, so this is what the first step would do
+            return plan.kernelNames();
+        }
+        try {
+            return PlanCompiler.prepare(masses, links, medium, useStencils(), sweeps, groups).plan.kernelNames();
+        } catch (RuntimeException raced) {
+            return plan.kernelNames(); // the stepping thread changed the topology meanwhile: the plan it steps
+        }
     }
 
     /** @return the current compiled plan, compiling first if needed. */
@@ -1007,18 +1044,27 @@ public final class Engine implements AutoCloseable {
     /** @return the current distance between the two masses of a link (the axis gap for a plane contact). */
     public double linkDistance(int id) {
         checkLink(id);
-        double[] a = scratchA;
-        double[] b = scratchB;
-        position(links.a[id], a);
+        int a = links.a[id];
         if (links.kind[id] == LinkKind.PLANE_CONTACT3D) {
-            return a[links.axis[id]] - links.planePosition[id];
+            return coordinate(a, links.axis[id]) - links.planePosition[id];
         }
-        position(links.b[id], b);
+        int b = links.b[id];
         if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
-            return a[2] - b[2];
+            return coordinate(a, 2) - coordinate(b, 2);
         }
-        double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+        double dx = coordinate(a, 0) - coordinate(b, 0);
+        double dy = coordinate(a, 1) - coordinate(b, 1);
+        double dz = coordinate(a, 2) - coordinate(b, 2);
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /** @return one coordinate (axis 0, 1 or 2) of a live mass's position, written nowhere (a reader's query). */
+    private double coordinate(int id, int axis) {
+        int s = liveSlot(id);
+        if (s >= 0) {
+            return axis == 0 ? plan.x[s] : axis == 1 ? plan.y[s] : plan.z[s];
+        }
+        return masses.pending[6 * id + axis];
     }
 
     /**

@@ -63,9 +63,22 @@ public final class StabilityAnalyzer {
      * @return the report
      */
     public static StabilityReport analyze(StepPlan p, int maxContacts) {
-        Network net = new Network(p);
+        return analyze(p, maxContacts, null);
+    }
+
+    /**
+     * Analyses a plan as if one coefficient had another value, without writing it anywhere: the plan is only read,
+     * so the analysis may run on any thread (it is how a stiffness limit is found by extrapolation).
+     *
+     * @param p the compiled scene
+     * @param maxContacts how many contacts may be engaged at once on one mass
+     * @param assumed the coefficient to take with another value, or null for the plan as it is
+     * @return the report
+     */
+    public static StabilityReport analyze(StepPlan p, int maxContacts, Assumption assumed) {
+        Network net = new Network(p, assumed);
         double gersh = net.gershgorin();
-        double[] contacts = contactBound(p, maxContacts);
+        double[] contacts = contactBound(p, maxContacts, assumed);
         double lambda;
         double residual = 0;
         StabilityReport.Method method;
@@ -96,12 +109,49 @@ public final class StabilityAnalyzer {
     }
 
     /**
+     * One coefficient an analysis takes with another value than the plan's: the stiffness K of one link, or the
+     * internal stiffness of one oscillator (per step). Immutable.
+     */
+    public static final class Assumption {
+        private final int link;
+        private final int mass;
+        private final double stiffness;
+
+        private Assumption(int link, int mass, double stiffness) {
+            this.link = link;
+            this.mass = mass;
+            this.stiffness = stiffness;
+        }
+
+        /** @return the assumption that link {@code linkId} has stiffness {@code k} (per step). */
+        public static Assumption linkStiffness(int linkId, double k) {
+            return new Assumption(linkId, -1, k);
+        }
+
+        /** @return the assumption that oscillator {@code massId} has internal stiffness {@code k} (per step). */
+        public static Assumption oscillatorStiffness(int massId, double k) {
+            return new Assumption(-1, massId, k);
+        }
+
+        /** @return the stiffness of link slot j of a batch, the assumed one for the assumed link. */
+        static double linkK(Assumption a, LinkBatch b, int j) {
+            return a != null && a.link >= 0 && b.id[j] == a.link ? a.stiffness : b.k[j];
+        }
+
+        /** @return the oscillator stiffness per unit mass of a slot, as fillMass writes it, assumed or not. */
+        static double oscPerMass(Assumption a, StepPlan p, int slot) {
+            return a != null && a.mass >= 0 && p.massId[slot] == a.mass ? a.stiffness * p.invM[slot]
+                    : p.oscStiffnessPerMass[slot];
+        }
+    }
+
+    /**
      * Gershgorin bound of M⁻¹C for contacts, with at most {@code cap} engaged per mass.
      *
      * @return {bound, id of the stiffest contact at the worst mass, id of that mass, first negative-damping
      *     contact id, index of the contact group responsible} (ids are -1 when absent)
      */
-    private static double[] contactBound(StepPlan p, int cap) {
+    private static double[] contactBound(StepPlan p, int cap, Assumption assumed) {
         LinkBatch b = p.batch(LinkKind.CONTACT3D);
         if ((b == null || b.n == 0) && p.groups.length == 0) {
             return new double[] {0, -1, -1, -1, -1};
@@ -127,7 +177,7 @@ public final class StabilityAnalyzer {
             }
         }
         for (int j = 0, nb = b == null ? 0 : b.n; j < nb; j++) {
-            double c = coefficient(b.k[j], b.z[j]);
+            double c = coefficient(Assumption.linkK(assumed, b, j), b.z[j]);
             if (b.z[j] < 0 && negative < 0) {
                 negative = b.id[j];
             }
@@ -176,6 +226,7 @@ public final class StabilityAnalyzer {
     /** The permanent network as an edge list plus a diagonal, in force units (per step). */
     private static final class Network {
         final StepPlan p;
+        final Assumption assumed;
         final int n;
         final double[] diag;
         final double[] sqrtInvM;
@@ -189,8 +240,9 @@ public final class StabilityAnalyzer {
         int negativeLink = -1;
         int negativeMass = -1;
 
-        Network(StepPlan p) {
+        Network(StepPlan p, Assumption assumed) {
             this.p = p;
+            this.assumed = assumed;
             n = p.nMass;
             diag = new double[n];
             sqrtInvM = new double[n];
@@ -199,7 +251,7 @@ public final class StabilityAnalyzer {
                 sqrtInvM[i] = Math.sqrt(im);
                 if (im > 0) {
                     double zf = (1 - p.retention[i]) / im;
-                    diag[i] += p.oscStiffnessPerMass[i] / im + 2 * Math.max(zf, 0);
+                    diag[i] += Assumption.oscPerMass(assumed, p, i) / im + 2 * Math.max(zf, 0);
                     if (zf < 0 && negativeMass < 0) {
                         negativeMass = p.massId[i];
                     }
@@ -221,7 +273,7 @@ public final class StabilityAnalyzer {
                 double l = b.len[j] > 0 ? b.len[j] : PlanCompiler.distanceOf(b, j, p);
                 c = l > 0 ? 2 * Math.abs(b.attraction[j]) / (l * l * l) : 0;
             } else {
-                double k = b.kind.hasStiffness() ? b.k[j] : 0;
+                double k = b.kind.hasStiffness() ? Assumption.linkK(assumed, b, j) : 0;
                 double z = b.kind.hasDamping() ? b.z[j] : 0;
                 if (z < 0 && negativeLink < 0) {
                     negativeLink = b.id[j];
