@@ -363,9 +363,9 @@ final class Ownership {
         if (refusalReported.compareAndSet(false, true)) {
             Thread o = owner;
             System.err.println(call + ": this model is stepped in realtime by thread \"" + (o == null ? "?" : o.getName())
-                    + "\" (a PhyUGen plays it), so this call does nothing. Remove " + call
-                    + " from draw() (and from any other thread): the audio thread steps the model; draw() should "
-                    + "only read it, with getSnapshot(). (Printed once.)");
+                    + "\" (the audio thread when a PhyUGen plays it), so this call does nothing. Remove " + call
+                    + " from draw(): only that thread steps the model; draw() should read it with getSnapshot(). "
+                    + "(Printed once.)");
         }
     }
 
@@ -427,19 +427,11 @@ final class Ownership {
     void awaitApplied(long seq) {
         long start = 0;
         while (applied < seq) {
-            if (ownerGone() && gate.compareAndSet(FREE, DRAINING)) {
-                try {
-                    if (ownerGone()) {
-                        if (owner != null) {
-                            owner = null; // an explicit hand-over: the role is free, the next stepping call takes it
-                            handOvers++;
-                        }
-                        drain();
-                    }
-                } finally {
-                    gate.set(FREE);
+            if (ownerGone()) {
+                applyNow(seq); // an explicit hand-over: the role is set free, the next stepping call takes it
+                if (applied >= seq) {
+                    return;
                 }
-                continue;
             }
             if (start == 0) {
                 start = System.nanoTime();
@@ -508,7 +500,27 @@ final class Ownership {
             analyzer.request();
         }
         if (ownerGone()) {
-            awaitApplied(seq);
+            applyNow(seq);
+        }
+    }
+
+    /**
+     * Applies the queue at once when there is no active owner and no stepping call holds the gate (a stepping call
+     * that holds it applies the change at its next call): never waits.
+     */
+    private void applyNow(long seq) {
+        if (applied < seq && gate.compareAndSet(FREE, DRAINING)) {
+            try {
+                if (ownerGone()) {
+                    if (owner != null) {
+                        owner = null;
+                        handOvers++;
+                    }
+                    drain();
+                }
+            } finally {
+                gate.set(FREE);
+            }
         }
     }
 
