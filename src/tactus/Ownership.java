@@ -176,8 +176,9 @@ final class Ownership {
 
     /**
      * Starts a stepping call of {@code n} steps on the current thread. Takes the role when nobody holds it, or when
-     * its holder has died or has been idle for {@link #idleNanos}; then holds the gate and applies every queued
-     * command. The caller must call {@link #endStep()} in a {@code finally} when this returns {@link #STEP}.
+     * its holder has died or has been idle for {@link #idleNanos}; then holds the gate. When this returns {@link
+     * #STEP} the caller applies the queue ({@link #applyQueued()}) and steps inside a {@code try} whose {@code
+     * finally} calls {@link #endStep()}.
      *
      * @return {@link #STEP}; {@link #REFUSED} when another thread owns the model (the call must do nothing);
      *     {@link #ENDED} when the mode is ending (the call must step in locked mode)
@@ -186,7 +187,6 @@ final class Ownership {
         Thread me = Thread.currentThread();
         if (owner == me && ownerDepth > 0) {
             ownerDepth++; // a stepping call from inside one (a listener): the gate is already held
-            drain();
             return STEP;
         }
         int r = acquireAsOwner(true);
@@ -196,8 +196,12 @@ final class Ownership {
         if (n >= 64 || (++callsSinceClock & 63) == 0) {
             lastStep = System.nanoTime();
         }
-        drain();
         return STEP;
+    }
+
+    /** Applies every queued command; the owner calls it at the start of a stepping call, holding the gate. */
+    void applyQueued() {
+        drain();
     }
 
     /** Ends a stepping call begun by {@link #beginStep}: publishes avatar forces, releases the gate. */
@@ -225,7 +229,12 @@ final class Ownership {
         if (acquireAsOwner(false) != STEP) {
             return false;
         }
-        drain();
+        try {
+            drain();
+        } catch (RuntimeException | Error e) {
+            exitAsOwner(); // never leave the gate held
+            throw e;
+        }
         return true;
     }
 
@@ -275,10 +284,13 @@ final class Ownership {
     }
 
     private void releaseAsOwner() {
-        if (endRequested) {
-            finishRole();
+        try {
+            if (endRequested) {
+                finishRole();
+            }
+        } finally {
+            gate.set(FREE);
         }
-        gate.set(FREE);
         if (endRequested) {
             core.model.finishEndIfFree(this);
         }

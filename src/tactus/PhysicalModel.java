@@ -375,6 +375,7 @@ public class PhysicalModel {
             return REFUSED;
         }
         try {
+            o.applyQueued();
             int done = 0;
             while (done < n) {
                 boolean ramping = core.ramping();
