@@ -23,7 +23,8 @@ import tactus.engine.MassKind;
  *
  * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once, except while the
  * model is stepped in realtime ({@link #beginRealtimeStepping()}, which a {@code tactus.audio.PhyUGen} does): then
- * the stepping thread takes no lock and other threads' changes are queued for it (docs/audio.md). Long stepping
+ * exactly one thread, the owner ({@link #getRealtimeOwner()}), steps the model and takes no lock, and every other
+ * thread's changes are queued for it, whatever lock that thread holds (docs/architecture.md, Threads). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
  * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
