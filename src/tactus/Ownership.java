@@ -75,7 +75,7 @@ final class Ownership {
     private boolean prepAnalyse;
     /** True while the owner advances parameter ramps (those are not analysed step by step). */
     boolean inRamp;
-    private final Analyzer analyzer;
+    private final AnalysisThread analyzer;
     /** The owner asked to end the mode from inside a stepping call; done when its outermost call returns. */
     private volatile boolean endRequested;
     /** No thread may take the role any more: the mode is ending or has ended. */
@@ -96,7 +96,7 @@ final class Ownership {
         Command stub = new WriteBatch();
         this.head = stub;
         this.tail = new AtomicReference<>(stub);
-        this.analyzer = new Analyzer();
+        this.analyzer = new AnalysisThread(this, core);
     }
 
     // ---------------------------------------------------------------- roles
@@ -618,10 +618,7 @@ final class Ownership {
             gate.set(FREE);
         }
         closed = true;
-        Thread t = analyzer.thread;
-        if (t != null) {
-            LockSupport.unpark(t);
-        }
+        analyzer.wake();
     }
 
     /**
@@ -642,87 +639,13 @@ final class Ownership {
         }
     }
 
+    /** @return true once the mode has ended ({@link #close()}). */
+    boolean isClosed() {
+        return closed;
+    }
+
     /** @return true when the owner asked to end the mode and has given the role up: close at the next entry. */
     boolean endPending() {
         return ending && !closed;
-    }
-
-    /**
-     * Runs the stability analysis of changes posted under WARN on its own daemon thread (once for a burst of
-     * changes), so that the calls return as soon as they are queued. It takes the model's lock like any editor, and
-     * rests seven times as long as each analysis took (however many requests arrive meanwhile), so that it never
-     * uses more than an eighth of a core (the audio thread needs the rest): a warning may come some tens of
-     * milliseconds after the change on a big model.
-     */
-    private final class Analyzer implements Runnable {
-        /** How long the helper thread waits for work before it ends (a later change starts a new one). */
-        private static final long IDLE_EXIT_NANOS = 5_000_000_000L;
-        private volatile boolean requested;
-        private volatile Thread thread;
-
-        /**
-         * Asks for an analysis. Never blocks and never allocates when the helper thread runs; an editor's request
-         * starts it if it is not running. A request from the stepping thread itself never starts it: its changes are
-         * then analysed with the next editor's.
-         */
-        void request() {
-            requested = true;
-            Thread t = thread;
-            if (t != null) {
-                LockSupport.unpark(t);
-            } else if (!isOwnerThread()) {
-                start();
-            }
-        }
-
-        private synchronized void start() {
-            if (thread == null && !closed) {
-                Thread t = new Thread(this, "Tactus stability analysis");
-                t.setDaemon(true);
-                thread = t;
-                t.start();
-            }
-        }
-
-        @Override
-        public void run() {
-            long idleSince = System.nanoTime();
-            while (!closed) {
-                if (!requested) {
-                    if (System.nanoTime() - idleSince > IDLE_EXIT_NANOS) {
-                        synchronized (this) {
-                            if (!requested) {
-                                thread = null;
-                                return;
-                            }
-                        }
-                    }
-                    LockSupport.parkNanos(this, IDLE_EXIT_NANOS / 4);
-                    continue;
-                }
-                requested = false;
-                long t0 = System.nanoTime();
-                java.util.concurrent.locks.Lock lock = core.model.getLock();
-                lock.lock();
-                try {
-                    awaitAll();
-                    if (core.guard.policy() == StabilityPolicy.WARN) {
-                        core.guard.check(null);
-                    }
-                } catch (RuntimeException e) {
-                    // a model changed under the analysis (removed modules): the next request analyses again
-                } finally {
-                    lock.unlock();
-                }
-                // at most an eighth of a core: changes arriving meanwhile are analysed together afterwards (a loop,
-                // since each request unparks this thread)
-                long until = System.nanoTime() + 7 * (System.nanoTime() - t0);
-                for (long now = System.nanoTime(); now < until && !closed; now = System.nanoTime()) {
-                    LockSupport.parkNanos(this, until - now);
-                }
-                idleSince = System.nanoTime();
-            }
-            thread = null;
-        }
     }
 }
