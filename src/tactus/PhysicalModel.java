@@ -114,6 +114,8 @@ public class PhysicalModel {
 
     // =================================================================== locking, for the facade and its handles
 
+    /** Commands dropped in realtime modes that have ended (see {@link #getDroppedCommands()}); volatile for readers. */
+    private volatile long droppedInEndedModes;
     /** Nesting of the facade calls of the thread that holds the lock (guarded by the lock). */
     private int editDepth;
     /** The realtime mode the outermost facade call of the lock holder began an edit in, or null (guarded by it). */
@@ -150,8 +152,7 @@ public class PhysicalModel {
         try {
             o = core.own;
             if (o != null && o.endPending()) {
-                o.close(); // the owner ended the mode from inside a stepping call: finish it here
-                core.setOwnership(null);
+                endMode(o); // the owner ended the mode from inside a stepping call: finish it here
                 o = null;
             }
             editOwn = o;
@@ -272,8 +273,7 @@ public class PhysicalModel {
         try {
             o = core.own;
             if (o != null) {
-                o.close();
-                core.setOwnership(null);
+                endMode(o);
             }
         } finally {
             exit();
@@ -290,12 +290,18 @@ public class PhysicalModel {
         }
         try {
             if (core.own == o && o.endPending() && editDepth == 0) {
-                o.close();
-                core.setOwnership(null);
+                endMode(o);
             }
         } finally {
             lock.unlock();
         }
+    }
+
+    /** Ends a realtime mode (the caller holds the lock): drains and closes it, keeps its count of dropped commands. */
+    private void endMode(Ownership o) {
+        o.close();
+        droppedInEndedModes += o.droppedCount();
+        core.setOwnership(null);
     }
 
     /**
@@ -309,14 +315,14 @@ public class PhysicalModel {
     }
 
     /**
-     * @return the number of queued changes (since {@link #beginRealtimeStepping()}) that found one of their targets
-     *     removed when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
+     * @return the number of queued changes (over the life of the model) that found one of their targets removed
+     *     when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
      *     {@link DivergenceListener} on the audio thread removed that link: the writes to the removed modules were
-     *     skipped (the others applied) and nothing was thrown; 0 when the model is not stepped in realtime
+     *     skipped (the others applied) and nothing was thrown
      */
     public long getDroppedCommands() {
         Ownership o = core.own;
-        return o == null ? 0 : o.droppedCount();
+        return droppedInEndedModes + (o == null ? 0 : o.droppedCount());
     }
 
     /**

@@ -77,6 +77,7 @@ class OwnershipTest {
             assertTrue(own.gateFree(), "the gate is released");
             assertEquals(own.postedSeq(), own.completedCount() + own.droppedCount(), "applied + dropped == posted");
             pm.endRealtimeStepping();
+            assertEquals(1, pm.getDroppedCommands(), "still readable after the mode ended");
         });
     }
 
