@@ -118,7 +118,7 @@ class OwnershipTest {
         });
     }
 
-    /** A chain of 20 masses whose 21 springs form the subset "springs", ramped by controller "k" over one second. */
+    /** A chain of 20 masses whose 21 springs form the subset "springs", ramped by controller "k" over two seconds. */
     static PhysicalModel rampedChain() {
         PhysicalModel pm = new PhysicalModel(44100, 60);
         pm.addGround3D("g0", new Vect3D(0, 0, 0));
@@ -133,7 +133,7 @@ class OwnershipTest {
         pm.addGround3D("g1", new Vect3D(21, 0, 0));
         pm.addSpringDamper3D("s21", 1, 0.01, 0.001, prev, "g1");
         pm.addLinkToSubset("s21", "springs");
-        pm.addParamController("k", "springs", "stiffness", 1.0f);
+        pm.addParamController("k", "springs", "stiffness", 2.0f);
         pm.init();
         return pm;
     }
