@@ -10,6 +10,13 @@ abstract class Command {
     /** Position in the model's command sequence, assigned when posted. */
     long seq;
 
-    /** Applies the change; runs on the stepping thread (or an editor that took over an idle model). */
-    abstract void apply(ModelCore core);
+    /**
+     * Applies the change; runs on the thread that holds the gate (the owner, or an editor applying the queue of a
+     * model nobody steps). Must not throw for a target that was removed after the command was posted: such a write
+     * is skipped.
+     *
+     * @return true when the change was applied in full, false when some of its targets were gone (those writes were
+     *     skipped, the others applied): the command is then counted as dropped
+     */
+    abstract boolean apply(ModelCore core);
 }

@@ -15,10 +15,11 @@ final class InstallCommand extends Command {
     }
 
     @Override
-    void apply(ModelCore core) {
+    boolean apply(ModelCore core) {
         core.engine.install(prepared);
         if (core.initialized) {
             core.snapshots.publish();
         }
+        return true;
     }
 }

@@ -23,7 +23,8 @@ import tactus.engine.MassKind;
  *
  * <p>All methods are thread-safe: each takes the model's fair lock ({@link #getLock()}) once, except while the
  * model is stepped in realtime ({@link #beginRealtimeStepping()}, which a {@code tactus.audio.PhyUGen} does): then
- * the stepping thread takes no lock and other threads' changes are queued for it (docs/audio.md). Long stepping
+ * exactly one thread, the owner ({@link #getRealtimeOwner()}), steps the model and takes no lock, and every other
+ * thread's changes are queued for it, whatever lock that thread holds (docs/architecture.md, Threads). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
  * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
@@ -81,7 +82,8 @@ public class PhysicalModel {
     /**
      * @return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
      *     atomic with respect to other threads (while the model is stepped in realtime, with respect to other
-     *     editors only: the stepping thread never takes it, and the changes made meanwhile are queued in order)
+     *     editors only: the stepping thread never takes it, and every call made while holding it is queued like any
+     *     other, in call order)
      */
     public Lock getLock() {
         return lock;
@@ -112,19 +114,27 @@ public class PhysicalModel {
 
     // =================================================================== locking, for the facade and its handles
 
+    /** Commands dropped in realtime modes that have ended (see {@link #getDroppedCommands()}); volatile for readers. */
+    private volatile long droppedInEndedModes;
+    /** Nesting of the facade calls of the thread that holds the lock (guarded by the lock). */
+    private int editDepth;
+    /** The realtime mode the outermost facade call of the lock holder began an edit in, or null (guarded by it). */
+    private Ownership editOwn;
+
     /**
-     * Takes the lock. While the model is stepped in realtime ({@link #beginRealtimeStepping()}), the stepping thread
-     * takes nothing, and another thread's outermost entry first waits until the changes it queued earlier are
-     * applied, then prepares its own change (see {@link Ownership}).
+     * Enters a facade call. While the model is stepped in realtime ({@link #beginRealtimeStepping()}), the owner
+     * takes no lock (it holds the mode's gate for the call); any other thread takes the lock, and its outermost
+     * facade call, whatever locks it already holds ({@link #getLock()} included), first waits until the changes it
+     * queued earlier are applied, then prepares its own change as a command (see {@link Ownership}).
      */
     void enter() {
         enter(false);
     }
 
     /**
-     * Takes the lock for a parameter or state change. While the model is stepped in realtime, the change is prepared
-     * without waiting for earlier queued changes to be applied (under THROW it does wait, so that its undo is
-     * exact): a run of setters returns at once, in order.
+     * Enters a facade call that makes a parameter or state change. While the model is stepped in realtime, the change
+     * is prepared without waiting for earlier queued changes to be applied (under THROW it does wait, so that its
+     * undo is exact): a run of setters returns at once, in order.
      */
     void enterChange() {
         enter(true);
@@ -132,21 +142,32 @@ public class PhysicalModel {
 
     private void enter(boolean change) {
         Ownership o = core.own;
-        if (o != null && o.isOwnerThread()) {
+        if (o != null && o.isOwnerThread() && o.enterAsOwner()) {
             return;
         }
         lock.lock();
-        if (o != null && lock.getHoldCount() == 1) {
-            try {
+        if (editDepth++ > 0) {
+            return;
+        }
+        try {
+            o = core.own;
+            if (o != null && o.endPending()) {
+                endMode(o); // the owner ended the mode from inside a stepping call: finish it here
+                o = null;
+            }
+            editOwn = o;
+            if (o != null) {
                 if (change) {
                     o.beginChange();
                 } else {
                     o.beginEdit();
                 }
-            } catch (RuntimeException | Error e) {
-                lock.unlock();
-                throw e;
             }
+        } catch (RuntimeException | Error e) {
+            editDepth--;
+            editOwn = null;
+            lock.unlock();
+            throw e;
         }
     }
 
@@ -159,15 +180,23 @@ public class PhysicalModel {
         }
     }
 
-    /** Leaves the lock; an editor of a realtime-stepped model posts the change it prepared (see {@link #enter()}). */
+    /** Leaves a facade call; the outermost call of an editor of a realtime-stepped model posts what it prepared. */
     void exit() {
+        Ownership o = core.own;
+        if (o != null && o.ownerInCall()) {
+            o.exitAsOwner();
+            return;
+        }
         if (!lock.isHeldByCurrentThread()) {
-            return; // the realtime stepping thread, which took nothing
+            return;
         }
         try {
-            Ownership o = core.own;
-            if (o != null && lock.getHoldCount() == 1) {
-                o.endEdit();
+            if (--editDepth == 0) {
+                Ownership e = editOwn;
+                editOwn = null;
+                if (e != null) {
+                    e.endEdit();
+                }
             }
         } finally {
             lock.unlock();
@@ -183,7 +212,7 @@ public class PhysicalModel {
         enter();
         try {
             Ownership o = core.own;
-            if (o == null || o.isOwnerThread() || o.isApplying()) {
+            if (o == null || o.ownerInCall() || o.isApplying()) {
                 return body.get(); // not realtime, or already on the thread that applies changes
             }
             return o.run(body);
@@ -202,12 +231,16 @@ public class PhysicalModel {
     // =================================================================== realtime stepping
 
     /**
-     * Hands the model to one realtime stepping thread (an audio thread): from now on the thread that steps the model
-     * ({@link #computeStep()}, {@link #computeNSteps(int)}, {@link #draw_physics()}) is its owner. The owner never
-     * takes the model's lock, so it never waits for another thread. Every other thread's change is validated,
-     * converted and (for parameters) prepared on that thread, queued, and applied by the owner between two steps.
-     * {@link tactus.audio.PhyUGen} calls this; see docs/audio.md for which calls are queued and when they apply.
-     * Calling it again does nothing.
+     * Hands the model to one realtime stepping thread (an audio thread). From now on exactly one thread steps the
+     * model: the first thread that calls {@link #computeStep()}, {@link #computeNSteps(int)} or
+     * {@link #draw_physics()} takes the owner role ({@link #getRealtimeOwner()}). The owner never takes the model's
+     * lock, so it never waits for another thread. Every other thread's change is validated, converted and (for
+     * parameters) prepared on that thread, queued, and applied by the owner between two steps, in call order, also
+     * when that thread holds {@link #getLock()}. A stepping call from another thread while the owner is active does
+     * nothing (it prints one message saying so). The role passes on only when the owner ends the mode
+     * ({@link #endRealtimeStepping()}), or when it has died or has not stepped for 250 ms and another thread needs
+     * it. {@link tactus.audio.PhyUGen} calls this; see docs/architecture.md (Threads) for the rule and docs/audio.md
+     * for which calls are queued and when they apply. Calling it again does nothing.
      */
     public void beginRealtimeStepping() {
         enter();
@@ -221,20 +254,75 @@ public class PhysicalModel {
     }
 
     /**
-     * Ends realtime stepping: waits for the owner's current step, applies what is still queued, and returns to the
-     * locked mode. Call it once the owner no longer steps the model.
+     * Ends realtime stepping: waits for the owner's current stepping call, applies what is still queued, and returns
+     * to the locked mode. Called by the owner itself from inside a stepping call (a {@link DivergenceListener}), it
+     * never waits for itself: it returns at once, and the mode ends when that stepping call returns (the owner then
+     * applies what is queued and gives the role up; {@link #isRealtimeStepping()} turns false as soon as no other
+     * thread holds the model's lock).
      */
     public void endRealtimeStepping() {
+        Ownership o = core.own;
+        if (o != null && o.isOwnerThread()) {
+            if (o.ownerInCall()) {
+                o.requestEnd();
+                return;
+            }
+            o.releaseRole(); // the owner between two calls: give the role up, then end the mode as any thread
+        }
         enter();
         try {
-            Ownership o = core.own;
+            o = core.own;
             if (o != null) {
-                o.close();
-                core.setOwnership(null);
+                endMode(o);
             }
         } finally {
             exit();
         }
+    }
+
+    /**
+     * Called by the owner once it gave the role up after {@link #endRealtimeStepping()} from inside a stepping call:
+     * ends the mode now if no other thread holds the lock (else the next thread that enters does).
+     */
+    void finishEndIfFree(Ownership o) {
+        if (!lock.tryLock()) {
+            return;
+        }
+        try {
+            if (core.own == o && o.endPending() && editDepth == 0) {
+                endMode(o);
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Ends a realtime mode (the caller holds the lock): drains and closes it, keeps its count of dropped commands. */
+    private void endMode(Ownership o) {
+        o.close();
+        droppedInEndedModes += o.droppedCount();
+        core.setOwnership(null);
+    }
+
+    /**
+     * @return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
+     *     when the model is not stepped in realtime or no thread has taken the role yet (or since the last owner
+     *     gave it up)
+     */
+    public Thread getRealtimeOwner() {
+        Ownership o = core.own;
+        return o == null ? null : o.owner();
+    }
+
+    /**
+     * @return the number of queued changes (over the life of the model) that found one of their targets removed
+     *     when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
+     *     {@link DivergenceListener} on the audio thread removed that link: the writes to the removed modules were
+     *     skipped (the others applied) and nothing was thrown
+     */
+    public long getDroppedCommands() {
+        Ownership o = core.own;
+        return droppedInEndedModes + (o == null ? 0 : o.droppedCount());
     }
 
     /**
@@ -251,10 +339,15 @@ public class PhysicalModel {
         try {
             RampTargets t = RampTargets.resolve(core, pc.getSubsetName(), pc.getParamName(), pc.lastTarget(), target,
                     center);
-            core.own.post(new Command() {
+            Ownership now = core.own;
+            if (now == null) {
+                return false; // the mode ended while this thread waited for the lock
+            }
+            now.post(new Command() {
                 @Override
-                void apply(ModelCore c) {
+                boolean apply(ModelCore c) {
                     pc.startRamp(target, steps, t);
+                    return true;
                 }
             });
         } finally {
@@ -269,16 +362,27 @@ public class PhysicalModel {
     }
 
     /**
-     * One stepping call of a realtime-stepped model, on the calling thread (which becomes the owner): applies the
-     * queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
+     * One stepping call of a realtime-stepped model on the calling thread (which takes the owner role if it is free):
+     * applies the queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
      *
-     * @return the number of steps run (0 when the call had to be skipped, see {@link Ownership#beginStep()})
+     * @param call the facade call, for the message when another thread owns the model
+     * @return the number of steps run; {@link #ENDED} when the mode is ending (the caller steps in locked mode);
+     *     {@link #REFUSED} when another thread owns the model (nothing was done, the message was printed once)
      */
-    private int stepOwned(Ownership o, int n) {
-        if (!o.beginStep()) {
-            return 0;
+    /** Results of {@link #stepOwned} other than a step count. */
+    private static final int ENDED = -1, REFUSED = -2;
+
+    private int stepOwned(Ownership o, int n, String call) {
+        int r = o.beginStep(n);
+        if (r == Ownership.ENDED) {
+            return ENDED;
+        }
+        if (r == Ownership.REFUSED) {
+            o.refused(call);
+            return REFUSED;
         }
         try {
+            o.applyQueued();
             int done = 0;
             while (done < n) {
                 boolean ramping = core.ramping();
@@ -372,14 +476,26 @@ public class PhysicalModel {
      */
     public int draw_physics() {
         Ownership o = core.own;
-        if (o != null) {
-            int n = structural(() -> core.time.stepsForFrame());
-            stepOwned(o, n);
-            return n;
+        if (o != null && !o.isEnding()) {
+            if (o.refusesStepping()) {
+                o.refused("draw_physics()");
+                return 0;
+            }
+            int frame = structural(() -> core.time.stepsForFrame());
+            int done = stepOwned(o, frame, "draw_physics()");
+            if (done == REFUSED) {
+                return 0;
+            }
+            return done == ENDED ? lockedFrame(frame) : frame; // ended meanwhile: this frame's steps, locked
         }
+        return lockedFrame(-1);
+    }
+
+    /** Runs one display frame in locked mode: {@code n} steps, or the frame's own count when n &lt; 0. */
+    private int lockedFrame(int frame) {
         enter();
         try {
-            int n = core.time.stepsForFrame();
+            int n = frame >= 0 ? frame : core.time.stepsForFrame();
             runSteps(n);
             core.snapshots.publish();
             return n;
@@ -391,8 +507,7 @@ public class PhysicalModel {
     /** Runs one simulation step. */
     public void computeStep() {
         Ownership o = core.own;
-        if (o != null) {
-            stepOwned(o, 1);
+        if (o != null && !o.isEnding() && stepOwned(o, 1, "computeStep()") != ENDED) {
             return;
         }
         enter();
@@ -414,8 +529,7 @@ public class PhysicalModel {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
         Ownership o = core.own;
-        if (o != null) {
-            stepOwned(o, n);
+        if (o != null && !o.isEnding() && stepOwned(o, n, "computeNSteps()") != ENDED) {
             return;
         }
         enter();

@@ -3,18 +3,22 @@ package tactus;
 /**
  * The members of a subset that a {@link ParamController} ramps, resolved once (on the thread that triggers the ramp,
  * under the model's lock) so that the thread stepping a realtime model applies each ramp step with plain engine
- * writes: no look-up, no check, no allocation. Members added to or removed from the subset during a ramp are taken
- * into account at the next trigger.
+ * writes: no look-up, no allocation, one liveness check per member. Members added to the subset during a ramp join
+ * at the next trigger; a member removed during a ramp is dropped from it at the next ramp step (and counted, {@link
+ * Ownership#droppedRampMembers}), and the ramp goes on with the others and ends as planned.
  */
 final class RampTargets {
     private static final int MASS = 0, STIFFNESS = 1, DAMPING = 2, DIST = 3, DIST_X = 4;
+    /** The live members in {@code ids[0..n)}; a removed one is taken out in place. Touched by the stepping thread. */
     private final int[] ids;
+    private int n;
     private final boolean mats;
     private final int param;
     private final double cx, cy, cz;
 
     private RampTargets(int[] ids, boolean mats, int param, Vect3D center) {
         this.ids = ids;
+        this.n = ids.length;
         this.mats = mats;
         this.param = param;
         this.cx = center == null ? 0 : center.x;
@@ -46,11 +50,15 @@ final class RampTargets {
         return new RampTargets(ids, mats, p, center);
     }
 
-    /** Applies one ramp value (in the model's units) to every member. Runs on the stepping thread. */
+    /**
+     * Applies one ramp value (in the model's units) to every live member; a member removed since the last step is
+     * dropped and counted. Runs on the stepping thread.
+     */
     void apply(ModelCore c, double v) {
+        dropRemoved(c);
         EngineWrites w = c.direct;
         UnitScale u = c.units();
-        int n = ids.length;
+        int n = this.n;
         for (int k = 0; k < n; k++) {
             int id = ids[k];
             switch (param) {
@@ -79,5 +87,30 @@ final class RampTargets {
                     break;
             }
         }
+    }
+
+    /** Takes the members that are no longer in the model out of the ramp, in place, counting each once. */
+    private void dropRemoved(ModelCore c) {
+        tactus.engine.Engine e = c.engine;
+        boolean links = !mats; // the ids are those of the subset: masses or links
+        int kept = 0;
+        for (int k = 0; k < n; k++) {
+            int id = ids[k];
+            if (links ? e.isLink(id) : e.isMass(id)) {
+                ids[kept++] = id;
+            }
+        }
+        if (kept < n) {
+            Ownership o = c.own;
+            if (o != null) {
+                o.droppedRampMembers += n - kept;
+            }
+            n = kept;
+        }
+    }
+
+    /** @return the number of members still ramped. */
+    int size() {
+        return n;
     }
 }

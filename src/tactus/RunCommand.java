@@ -30,12 +30,14 @@ final class RunCommand extends Command {
         }
     }
 
+    /** Runs the call's code; its result or exception goes back to the waiting caller, so it is never dropped. */
     @Override
-    void apply(ModelCore core) {
+    boolean apply(ModelCore core) {
         try {
             result = body.get();
         } catch (Throwable t) {
             error = t;
         }
+        return true;
     }
 }

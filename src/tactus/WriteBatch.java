@@ -110,13 +110,25 @@ final class WriteBatch extends Command implements EngineWrites {
         v[at + 2] = c;
     }
 
+    /**
+     * Replays the writes in order. A write to a module removed since the call was made is skipped (the module's id is
+     * never reused, so nothing else is written in its place).
+     *
+     * @return true when every write was applied, false when some were skipped
+     */
     @Override
-    void apply(ModelCore core) {
+    boolean apply(ModelCore core) {
         Engine e = core.engine;
+        boolean full = true;
         for (int i = 0; i < n; i++) {
             int id = ids[i];
             int at = 6 * i;
-            switch (ops[i]) {
+            int op = ops[i];
+            if (op != MEDIUM && !(op == LINK || op == PLANE || op == ATTR ? e.isLink(id) : e.isMass(id))) {
+                full = false;
+                continue;
+            }
+            switch (op) {
                 case MASS:
                     e.setMass(id, v[at]);
                     break;
@@ -155,5 +167,6 @@ final class WriteBatch extends Command implements EngineWrites {
                     break;
             }
         }
+        return full;
     }
 }
