@@ -17,6 +17,8 @@ package tactus.soak;
  *   <li>5: readers mutate engine state: {@code ContactGroupKernel} out of bounds on either thread, or a reader
  *       ({@code StateAccess}, e.g. {@code getTotalEnergy}) compiling the plan ({@code PlanCompiler}) while another
  *       thread compiles or steps.</li>
+ *   <li>An out-of-bounds in {@code PlanCompiler} on an editing thread: two threads rebuilt or read the plan at once
+ *       (section 2 of the issue: more than one thread acts as the stepper).</li>
  *   <li>6: {@code StabilityMessages} writes the live engine from a helper thread.</li>
  *   <li>7: {@code endRealtimeStepping()} from a divergence listener deadlocks the audio thread.</li>
  *   <li>8: a structural undo compiled on the audio thread ({@code PlanCompiler} under {@code uGenerate}).</li>
@@ -68,7 +70,8 @@ final class DefectTags {
             return "defect 3 (exception out of PhyUGen.uGenerate kills Minim's output)";
         }
         if (all.contains("PlanCompiler")) {
-            return "defects 4/5 (two threads compile the plan at once: a lost getLock() hold or a reader compiling)";
+            return "issue section 2 / defects 1, 4, 5 (two threads compile or step at once: an editor draining the queue "
+                    + "while the owner looks idle, a reader compiling, a lost getLock() hold)";
         }
         return "new";
     }

@@ -7,9 +7,9 @@ import tactus.PhysicalModel;
 
 /**
  * The sketch's {@code draw()} at 60 frames per second: reads the snapshot's positions and the model's energies,
- * divergence flag and step count, each call timed by the {@link CallWatch}. None of these calls is documented to
- * throw, so any exception here is an escape into {@code draw()}. It publishes the step count and divergence flag
- * it read, for the monitor's stall check.
+ * divergence flag, step count and realtime flag, each call timed by the {@link CallWatch}. None of these calls is documented to
+ * throw, so any exception here is an escape into {@code draw()}. It publishes the step count and the two flags it
+ * read, for the monitor's stall check.
  */
 final class Drawer implements Runnable {
     static final long FRAME_NANOS = 1_000_000_000L / 60;
@@ -21,6 +21,8 @@ final class Drawer implements Runnable {
     /** The step count and divergence flag read at the last frame, and when (System.nanoTime). */
     volatile long steps = -1;
     volatile boolean diverged;
+    /** Whether the model was in realtime stepping (a PhyUGen owns it) at the last frame. */
+    volatile boolean realtime;
     volatile long readAt;
     /** A checksum of the positions read, so that the reads are not optimised away. */
     volatile double checksum;
@@ -63,8 +65,10 @@ final class Drawer implements Runnable {
             sum += watch.call("draw: getPotentialEnergy", m::getPotentialEnergy);
             boolean d = watch.call("draw: isDiverged", m::isDiverged);
             long st = watch.call("draw: getStepCount", m::getStepCount);
+            boolean rt = watch.call("draw: isRealtimeStepping", m::isRealtimeStepping);
             checksum = sum;
             diverged = d;
+            realtime = rt;
             steps = st;
             readAt = System.nanoTime();
             report.draws.incrementAndGet();

@@ -21,7 +21,8 @@ import tactus.haptics.emulator.Hand;
 
 /**
  * The soak tool: {@code gradle soak -Pseconds=600 [-Pseed=1]}, or {@code java tactus.soak.Soak SECONDS [SEED]
- * [--buffer=FRAMES]}. For the given time it runs, on one {@link SoakScene} model:
+ * [--buffer=FRAMES] [--skip=CALL_REGEX]} ({@code --skip} leaves out the chaos calls whose name matches, to look
+ * past a failure that spoils the rest of a run). For the given time it runs, on one {@link SoakScene} model:
  *
  * <ul>
  *   <li><b>audio</b>: a {@code PhyUGen} patched into Minim's line out, which plays into Tactus's virtual output
@@ -37,8 +38,8 @@ import tactus.haptics.emulator.Hand;
  * {@code SOAK RESULT escapes=.. hangs=.. nan=.. lateBlocks=.. missedTicks=.. ...}. <b>Failures</b> (exit status 1):
  * exceptions that escaped a thread (uncaught on any thread, including Minim's output thread; out of a reader in
  * draw; of an undocumented type from a call; a haptic loop that stopped itself), hangs (any API call over 1 s, an
- * audio output with no block for 1 s, a model whose step count stands still for 2 s while the audio runs and it
- * has not diverged), and NaN reaching an output (audio samples, motor torques). <b>Figures</b>: late audio blocks
+ * audio output with no block for 1 s, a model whose step count stands still for 2 s while the audio runs, the model
+ * is in realtime stepping and it has not diverged), and NaN reaching an output (audio samples, motor torques). <b>Figures</b>: late audio blocks
  * (the line ran dry), missed haptic ticks, calls made and refused, divergences. Each failure is printed once per
  * kind, with its stack and the defect of issue 15 it most likely is ({@link DefectTags}).
  */
@@ -66,7 +67,7 @@ public final class Soak {
             status = run(args, System.out);
         } catch (IllegalArgumentException e) {
             System.err.println("soak: " + e.getMessage());
-            System.err.println("usage: java tactus.soak.Soak SECONDS [SEED] [--buffer=FRAMES]");
+            System.err.println("usage: java tactus.soak.Soak SECONDS [SEED] [--buffer=FRAMES] [--skip=CALL_REGEX]");
             status = 2;
         }
         System.out.flush();
@@ -79,10 +80,13 @@ public final class Soak {
         double seconds = -1;
         long seed = 1;
         int buffer = DEFAULT_BUFFER;
+        java.util.regex.Pattern skip = null;
         int positional = 0;
         for (String a : args) {
             if (a.startsWith("--buffer=")) {
                 buffer = Integer.parseInt(a.substring("--buffer=".length()));
+            } else if (a.startsWith("--skip=")) {
+                skip = java.util.regex.Pattern.compile(a.substring("--skip=".length()));
             } else if (positional == 0) {
                 seconds = Double.parseDouble(a);
                 positional++;
@@ -96,7 +100,7 @@ public final class Soak {
         if (!(seconds > 0) || buffer < 16) {
             throw new IllegalArgumentException("need a duration in seconds > 0 (and --buffer >= 16 frames)");
         }
-        return new Run(seconds, seed, buffer, out).go();
+        return new Run(seconds, seed, buffer, skip, out).go();
     }
 
     /** One soak run: its parts, the monitor loop and the shutdown. */
@@ -104,21 +108,26 @@ public final class Soak {
         final double seconds;
         final long seed;
         final int buffer;
+        final java.util.regex.Pattern skip;
         final PrintStream out;
         final SoakReport report;
         final CallWatch watch;
         volatile boolean audioThreadThrew;
 
-        Run(double seconds, long seed, int buffer, PrintStream out) {
+        Run(double seconds, long seed, int buffer, java.util.regex.Pattern skip, PrintStream out) {
             this.seconds = seconds;
             this.seed = seed;
             this.buffer = buffer;
+            this.skip = skip;
             this.out = out;
             this.report = new SoakReport(out);
             this.watch = new CallWatch(HANG_NANOS, report);
         }
 
         int go() {
+            if (skip != null) {
+                out.println("soak: leaving out the calls matching '" + skip + "'");
+            }
             out.printf(Locale.ROOT, "soak: %.0f s, seed %d; PhyUGen on Minim's line out (virtual output, %d-frame "
                     + "blocks, %d Hz), haptic loop 1 kHz on the board emulator, draw at 60 fps, chaos calls%n",
                     seconds, seed, buffer, SoakScene.RATE);
@@ -157,7 +166,7 @@ public final class Soak {
             Minim minim = new Minim(new SketchFiles());
             AudioOutput audio = LineOut.open(minim, Minim.STEREO, buffer, SoakScene.RATE, out);
             Drawer drawer = new Drawer(m, report, watch);
-            Chaos chaos = new Chaos(m, ugen, exchange, report, watch, seed);
+            Chaos chaos = new Chaos(m, ugen, exchange, report, watch, seed, skip);
             Thread drawThread = new Thread(drawer, "soak-draw");
             Thread chaosThread = new Thread(chaos, "soak-chaos");
             drawThread.setDaemon(true);
@@ -235,10 +244,10 @@ public final class Soak {
                     audioStallReported = false;
                 }
 
-                // ---- the model: still stepping while the audio runs (unless it diverged and is frozen)?
+                // ---- the model: still stepping while the audio runs and owns it (unless it diverged and is frozen)?
                 long steps = drawer.steps;
                 boolean fresh = now - drawer.readAt < AUDIO_STALL_NANOS / 5;
-                if (steps != lastSteps || drawer.diverged || !audioFlows || !fresh) {
+                if (steps != lastSteps || drawer.diverged || !drawer.realtime || !audioFlows || !fresh) {
                     if (steps != lastSteps) {
                         stepStallReported = false;
                     }
