@@ -48,6 +48,8 @@ public final class Soak {
     static final long HANG_NANOS = 1_000_000_000L;
     /** No audio block for this long is a stalled (or dead) output, ns. */
     static final long AUDIO_STALL_NANOS = 1_000_000_000L;
+    /** No first audio block after this long is an output that never started, ns. */
+    static final long AUDIO_START_NANOS = 3_000_000_000L;
     /** A step count that stands still this long while the audio runs is a stalled model, ns. */
     static final long STEP_STALL_NANOS = 2_000_000_000L;
     /** Progress line period, ns. */
@@ -135,10 +137,11 @@ public final class Soak {
             System.setProperty("javax.sound.sampled.SourceDataLine", "tactus.audio.VirtualMixerProvider");
             AudioWatch audioWatch = new AudioWatch(report, buffer, SoakScene.RATE);
             Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
-                if (t == audioWatch.audioThread()) {
+                boolean minim = t == audioWatch.audioThread() || isMinimOutput(e);
+                if (minim) {
                     audioThreadThrew = true;
                 }
-                report.escape("uncaught on thread '" + t.getName() + "'", e);
+                report.escape("uncaught on " + (minim ? "Minim's output thread '" : "thread '") + t.getName() + "'", e);
             });
 
             PhysicalModel m = SoakScene.create();
@@ -224,6 +227,16 @@ public final class Soak {
                 long last = aw.lastBlockNanos();
                 Thread at = aw.audioThread();
                 boolean audioFlows = last != 0 && now - last < AUDIO_STALL_NANOS / 5;
+                if (last == 0 && now - start > AUDIO_START_NANOS && !audioStallReported) {
+                    audioStallReported = true;
+                    if (audioThreadThrew) {
+                        out.println("soak: the audio output never delivered a block: Minim's output thread died of "
+                                + "the escape above");
+                    } else {
+                        report.hang("Minim's output thread", String.format(Locale.ROOT,
+                                "audio output stalled: no block in the first %.0f s", AUDIO_START_NANOS * 1e-9), null);
+                    }
+                }
                 if (last != 0 && now - last > AUDIO_STALL_NANOS) {
                     if (!audioStallReported) {
                         audioStallReported = true;
@@ -283,6 +296,16 @@ public final class Soak {
                     out.flush();
                 }
             }
+        }
+
+        /** @return true when the exception went through Minim's output loop (its thread died of it). */
+        private static boolean isMinimOutput(Throwable e) {
+            for (StackTraceElement f : e.getStackTrace()) {
+                if (f.getClassName().startsWith("ddf.minim.javasound.JSAudioOutput")) {
+                    return true;
+                }
+            }
+            return false;
         }
 
         private static void join(Thread t) {

@@ -78,10 +78,13 @@ final class SoakReport {
 
     private synchronized void record(String family, String where, String what, String stack) {
         String defect = DefectTags.tag(family, where + "\n" + what, stack);
-        String kind = family + " " + where + ": " + firstLine(what) + " [" + defect + "]";
+        // numbers (indices, ids, steps, positions) are left out of the kind, so that one defect is one line
+        String kind = family + " " + where + ": " + firstLine(what).replaceAll("[-0-9.E]*[0-9][-0-9.E]*", "#")
+                + " [" + defect + "]";
         Long seen = failureKinds.merge(kind, 1L, Long::sum);
         if (seen == 1 && records.size() < MAX_RECORDS) {
-            String full = kind + (stack.isEmpty() ? "" : "\n" + stack);
+            String full = family + " " + where + ": " + firstLine(what) + " [" + defect + "]"
+                    + (stack.isEmpty() ? "" : "\n" + stack);
             records.add(full);
             out.println("soak: " + full);
             out.flush();
