@@ -3,7 +3,9 @@ package tactus.soak;
 /**
  * Names the defect of issue 15 ("Real-time threads that survive every mistake", section 1) that a failure most
  * likely is, from its family, its message and the frames of its stack. The match is a heuristic on class and
- * method names of today's code; a failure that matches nothing is tagged "new" and deserves a look.
+ * method names of today's code; a failure that matches nothing is tagged "new" and deserves a look. What the soak
+ * found on the code before the fixes (defects 2, 3, 4, 5, 7 and the section 2 races), with the runs that showed
+ * each, is listed in docs/audio.md ("Soak").
  *
  * <ul>
  *   <li>1: a queued change whose target is gone throws inside {@code Ownership.drain()} (escape on the stepping
