@@ -16,7 +16,8 @@ import tactus.audio.SteppedModel;
 
 /**
  * The fourth thread: what a sketch's sliders, keys and mistakes do to a playing model, at random (seeded). Each
- * call goes through the {@link CallWatch}; a refusal with a documented exception
+ * API call goes through the {@link CallWatch}, one by one also inside a compound step (a rebuild is about 75 calls,
+ * each of which may wait for the audio thread to apply it); a refusal with a documented exception
  * ({@code IllegalArgumentException}, {@code IllegalStateException} and their subclasses) is counted as such, any
  * other exception is an escape. Valid calls: parameter edits, subset changes, ramps, removals and re-adds of
  * springs and beads (also of a member of the subset being ramped), divergence listeners (quiet, throwing, or
@@ -34,11 +35,14 @@ final class Chaos implements Runnable {
         final String name;
         final int weight;
         final Op op;
+        /** True when the entry is one API call, timed as a whole; a compound entry times each of its calls. */
+        final boolean single;
 
-        Entry(String name, int weight, Op op) {
+        Entry(String name, int weight, Op op, boolean single) {
             this.name = name;
             this.weight = weight;
             this.op = op;
+            this.single = single;
         }
     }
 
@@ -99,30 +103,30 @@ final class Chaos implements Runnable {
         add("changeStiffnessParamOfSubset", 3, () -> m.changeStiffnessParamOfSubset(0.1 + 0.2 * rnd.nextDouble(),
                 SoakScene.STRINGS));
         add("setFriction", 1, () -> m.setFriction(0.00001 * rnd.nextDouble()));
-        add("triggerRamp", 5, () -> ramp().triggerRamp((float) (0.1 + 0.2 * rnd.nextDouble())));
+        compound("triggerRamp", 5, () -> triggerRamp((float) (0.1 + 0.2 * rnd.nextDouble())));
         // ---- structure
-        add("removeLink + re-add", 4, () -> {
+        compound("removeLink + re-add", 4, () -> {
             int i = rnd.nextInt(SoakScene.MASSES + 1);
-            m.removeLink(SoakScene.spring(i));
+            api("removeLink", () -> m.removeLink(SoakScene.spring(i)));
             readdSpring(i);
         });
-        add("removeMatAndConnectedLinks + re-add", 3, () -> {
+        compound("removeMatAndConnectedLinks + re-add", 3, () -> {
             int i = 1 + rnd.nextInt(SoakScene.MASSES);
-            m.removeMatAndConnectedLinks(SoakScene.mass(i));
+            api("removeMatAndConnectedLinks", () -> m.removeMatAndConnectedLinks(SoakScene.mass(i)));
             readdBead(i);
         });
-        add("remove a member of the subset being ramped", 3, () -> {
-            ramp().triggerRamp((float) (0.1 + 0.2 * rnd.nextDouble()));
+        compound("remove a member of the subset being ramped", 3, () -> {
+            triggerRamp((float) (0.1 + 0.2 * rnd.nextDouble()));
             int i = rnd.nextInt(SoakScene.MASSES + 1);
-            m.removeLink(SoakScene.spring(i));
+            api("removeLink", () -> m.removeLink(SoakScene.spring(i)));
             Thread.sleep(rnd.nextInt(3));
             readdSpring(i);
         });
-        add("removeContactGroup + addContactGroup", 1, () -> {
-            m.removeContactGroup(SoakScene.BEADS);
-            m.addContactGroup(SoakScene.BEADS, SoakScene.SPACING / 4, 0.05, 0.001);
+        compound("removeContactGroup + addContactGroup", 1, () -> {
+            api("removeContactGroup", () -> m.removeContactGroup(SoakScene.BEADS));
+            api("addContactGroup", () -> m.addContactGroup(SoakScene.BEADS, SoakScene.SPACING / 4, 0.05, 0.001));
         });
-        add("clearModel + rebuild", 1, this::rebuild);
+        compound("clearModel + rebuild", 1, this::rebuild);
         add("init", 1, m::init);
         // ---- listeners
         add("listener: quiet", 2, () -> m.setDivergenceListener(e -> report.divergences.incrementAndGet()));
@@ -140,22 +144,22 @@ final class Chaos implements Runnable {
         add("setStabilityPolicy", 2, () -> m.setStabilityPolicy(StabilityPolicy.values()[rnd.nextInt(
                 StabilityPolicy.values().length)]));
         // ---- rates and stepping from the wrong thread
-        add("setSimRate 48000 then 44100", 1, () -> {
+        compound("setSimRate 48000 then 44100", 1, () -> {
             try {
-                m.setSimRate(48000);
+                api("setSimRate(48000)", () -> m.setSimRate(48000));
             } finally {
-                m.setSimRate(SoakScene.RATE);
+                api("setSimRate(44100)", () -> m.setSimRate(SoakScene.RATE));
             }
         });
         add("draw_physics", 2, m::draw_physics);
         add("computeStep", 2, m::computeStep);
-        add("two writes under getLock()", 3, () -> {
+        compound("two writes under getLock()", 3, () -> {
             Lock lock = m.getLock();
-            lock.lock();
+            api("getLock().lock()", lock::lock);
             try {
                 String s = spring();
-                m.setLinkStiffness(s, 0.1);
-                m.setLinkStiffness(s, 0.2);
+                api("setLinkStiffness under getLock()", () -> m.setLinkStiffness(s, 0.1));
+                api("setLinkStiffness under getLock()", () -> m.setLinkStiffness(s, 0.2));
             } finally {
                 lock.unlock();
             }
@@ -176,20 +180,23 @@ final class Chaos implements Runnable {
                 ugen.removeListeningPoint(extraPoints.remove(rnd.nextInt(extraPoints.size())));
             }
         });
-        add("detachAvatar + attachAvatar", 1, () -> {
-            ugen.detachAvatar();
-            ugen.attachAvatar(SoakScene.PLECTRUM, exchange);
+        compound("detachAvatar + attachAvatar", 1, () -> {
+            api("detachAvatar", ugen::detachAvatar);
+            api("attachAvatar", () -> ugen.attachAvatar(SoakScene.PLECTRUM, exchange));
         });
-        add("remove the avatar + re-add", 1, () -> {
-            m.removeMatAndConnectedLinks(SoakScene.PLECTRUM);
-            m.addHapticInput3D(SoakScene.PLECTRUM, new Vect3D(SoakScene.length() / 2, 0.4, 0), SoakScene.SMOOTHING);
+        compound("remove the avatar + re-add", 1, () -> {
+            api("removeMatAndConnectedLinks(plectrum)", () -> m.removeMatAndConnectedLinks(SoakScene.PLECTRUM));
+            api("addHapticInput3D", () -> m.addHapticInput3D(SoakScene.PLECTRUM,
+                    new Vect3D(SoakScene.length() / 2, 0.4, 0), SoakScene.SMOOTHING));
             for (int i = 1; i <= SoakScene.MASSES; i++) {
-                if (m.matExists(SoakScene.mass(i))) {
-                    m.addContact3D(SoakScene.pick(i), SoakScene.SPHERE, SoakScene.CONTACT_K, SoakScene.CONTACT_Z,
-                            SoakScene.PLECTRUM, SoakScene.mass(i));
+                String bead = SoakScene.mass(i);
+                String pick = SoakScene.pick(i);
+                if (ask("matExists", () -> m.matExists(bead))) {
+                    api("addContact3D", () -> m.addContact3D(pick, SoakScene.SPHERE, SoakScene.CONTACT_K,
+                            SoakScene.CONTACT_Z, SoakScene.PLECTRUM, bead));
                 }
             }
-            ugen.attachAvatar(SoakScene.PLECTRUM, exchange);
+            api("attachAvatar", () -> ugen.attachAvatar(SoakScene.PLECTRUM, exchange));
         });
         // ---- invalid calls: each must be refused on this thread, with the model unchanged
         add("invalid: setLinkStiffness unknown", 3, () -> m.setLinkStiffness("no-such-spring", 0.1));
@@ -203,13 +210,38 @@ final class Chaos implements Runnable {
         add("invalid: setSimRate 0", 1, () -> m.setSimRate(0));
         add("invalid: subset unknown", 2, () -> m.changeParamOfSubset(0.1, "no-such-subset", "stiffness"));
         add("invalid: param unknown", 1, () -> m.changeParamOfSubset(0.1, SoakScene.STRINGS, "colour"));
-        add("invalid: triggerRamp NaN", 1, () -> ramp().triggerRamp(Float.NaN));
+        compound("invalid: triggerRamp NaN", 1, () -> triggerRamp(Float.NaN));
         add("invalid: getMatPosition unknown", 2, () -> m.getMatPosition("no-such-mass"));
         add("invalid: setDivergenceCheckInterval 0", 1, () -> m.setDivergenceCheckInterval(0));
     }
 
+    /** An entry that is one API call, timed as a whole. */
     private void add(String name, int weight, Op op) {
-        ops.add(new Entry(name, weight, op));
+        ops.add(new Entry(name, weight, op, true));
+    }
+
+    /** An entry of several API calls, each made through {@link #api} or {@link #ask} and timed on its own. */
+    private void compound(String name, int weight, Op op) {
+        ops.add(new Entry(name, weight, op, false));
+    }
+
+    /** Makes one API call of a compound entry, timed on its own; its exceptions pass through. */
+    private void api(String what, Runnable call) {
+        ask(what, () -> {
+            call.run();
+            return null;
+        });
+    }
+
+    /** Makes one API call that returns a value, timed on its own; its exceptions pass through. */
+    private <T> T ask(String what, java.util.function.Supplier<T> call) {
+        try {
+            return watch.call(what, call::get);
+        } catch (RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new AssertionError("a Supplier threw a checked exception", e);
+        }
     }
 
     private String spring() {
@@ -227,66 +259,71 @@ final class Chaos implements Runnable {
         return SoakScene.mass(lastBead);
     }
 
-    private ParamController ramp() {
-        ParamController pc = m.getParamController(SoakScene.RAMP);
+    /** The ramp controller's {@code triggerRamp}: two API calls. */
+    private void triggerRamp(float target) {
+        ParamController pc = ask("getParamController", () -> m.getParamController(SoakScene.RAMP));
         if (pc == null) {
             throw new IllegalStateException("soak: the ramp controller is gone (the model was cleared)");
         }
-        return pc;
+        api("triggerRamp", () -> pc.triggerRamp(target));
     }
 
     private void readdSpring(int i) {
         String a = SoakScene.mass(i);
         String b = SoakScene.mass(i + 1);
-        if (m.matExists(a) && m.matExists(b) && !m.linkExists(SoakScene.spring(i))) {
-            m.addSpringDamper3D(SoakScene.spring(i), SoakScene.REST, SoakScene.STIFFNESS, SoakScene.DAMPING, a, b);
-            m.addLinkToSubset(SoakScene.spring(i), SoakScene.STRINGS);
+        String s = SoakScene.spring(i);
+        if (ask("matExists", () -> m.matExists(a)) && ask("matExists", () -> m.matExists(b))
+                && !ask("linkExists", () -> m.linkExists(s))) {
+            api("addSpringDamper3D", () -> m.addSpringDamper3D(s, SoakScene.REST, SoakScene.STIFFNESS,
+                    SoakScene.DAMPING, a, b));
+            api("addLinkToSubset", () -> m.addLinkToSubset(s, SoakScene.STRINGS));
         }
     }
 
     private void readdBead(int i) {
-        m.addMass2DPlane(SoakScene.mass(i), 1.0, new Vect3D(i * SoakScene.SPACING, 0, 0), new Vect3D());
-        m.addMatToSubset(SoakScene.mass(i), SoakScene.BEADS);
+        String bead = SoakScene.mass(i);
+        api("addMass2DPlane", () -> m.addMass2DPlane(bead, 1.0, new Vect3D(i * SoakScene.SPACING, 0, 0),
+                new Vect3D()));
+        api("addMatToSubset", () -> m.addMatToSubset(bead, SoakScene.BEADS));
         readdSpring(i - 1);
         readdSpring(i);
-        if (m.matExists(SoakScene.PLECTRUM)) {
-            m.addContact3D(SoakScene.pick(i), SoakScene.SPHERE, SoakScene.CONTACT_K, SoakScene.CONTACT_Z,
-                    SoakScene.PLECTRUM, SoakScene.mass(i));
+        if (ask("matExists", () -> m.matExists(SoakScene.PLECTRUM))) {
+            api("addContact3D", () -> m.addContact3D(SoakScene.pick(i), SoakScene.SPHERE, SoakScene.CONTACT_K,
+                    SoakScene.CONTACT_Z, SoakScene.PLECTRUM, bead));
         }
     }
 
-    /** Clears the model and builds the scene again, as a sketch's "reset" key does. */
+    /** Clears the model and builds the scene again, as a sketch's "reset" key does; each call timed on its own. */
     private void rebuild() {
-        m.clearModel();
-        SoakScene.populate(m, new Vect3D(SoakScene.length() / 2, 0.4, 0));
-        m.init();
-        ugen.attachAvatar(SoakScene.PLECTRUM, exchange);
+        api("clearModel", m::clearModel);
+        SoakScene.populate(m, new Vect3D(SoakScene.length() / 2, 0.4, 0), this::api);
+        api("init", m::init);
+        api("attachAvatar", () -> ugen.attachAvatar(SoakScene.PLECTRUM, exchange));
         report.rebuilds.incrementAndGet();
     }
 
     /** Repairs a diverged or damaged model (wrong element counts, no ramp controller): rebuild, clear, WARN. */
-    private void heal() throws Exception {
-        watch.call("heal: rebuild + clearDivergence", () -> {
-            int links = 2 * SoakScene.MASSES + 1;
-            boolean damaged = m.isDiverged() || m.getNumberOfMats() != SoakScene.MASSES + 3
-                    || m.getNumberOfLinks() != links || m.getParamController(SoakScene.RAMP) == null;
-            if (damaged) {
-                m.setStabilityPolicy(StabilityPolicy.WARN);
-                rebuild();
-                m.clearDivergence();
-            }
-            return null;
-        });
+    private void heal() {
+        int links = 2 * SoakScene.MASSES + 1;
+        boolean damaged = ask("isDiverged", m::isDiverged)
+                || ask("getNumberOfMats", m::getNumberOfMats) != SoakScene.MASSES + 3
+                || ask("getNumberOfLinks", m::getNumberOfLinks) != links
+                || ask("getParamController", () -> m.getParamController(SoakScene.RAMP)) == null;
+        if (damaged) {
+            api("setStabilityPolicy(WARN)", () -> m.setStabilityPolicy(StabilityPolicy.WARN));
+            rebuild();
+            api("clearDivergence", m::clearDivergence);
+        }
     }
 
     @Override
     public void run() {
         while (running) {
             Entry e = pick();
-            attempt(e.name, e.op);
+            attempt(e.name, e.op, e.single);
             if (System.nanoTime() - lastHeal > HEAL_EVERY_NANOS) {
                 lastHeal = System.nanoTime();
-                attempt("heal", this::heal);
+                attempt("heal", this::heal, false);
             }
             try {
                 Thread.sleep(rnd.nextInt(4));
@@ -307,13 +344,17 @@ final class Chaos implements Runnable {
         return ops.get(ops.size() - 1);
     }
 
-    private void attempt(String name, Op op) {
+    private void attempt(String name, Op op, boolean single) {
         report.calls.incrementAndGet();
         try {
-            watch.call(name, () -> {
+            if (single) {
+                watch.call(name, () -> {
+                    op.run();
+                    return null;
+                });
+            } else {
                 op.run();
-                return null;
-            });
+            }
         } catch (IllegalArgumentException | IllegalStateException documented) {
             report.refused(documented);
         } catch (InterruptedException ie) {

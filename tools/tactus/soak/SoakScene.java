@@ -56,32 +56,52 @@ final class SoakScene {
         return m;
     }
 
+    /** How the scene's calls are made: directly, or each timed as one API call (the chaos thread's rebuild). */
+    interface Api {
+        /** Makes one API call. */
+        void call(String what, Runnable call);
+    }
+
+    /** Calls made directly. */
+    static final Api DIRECT = (what, call) -> call.run();
+
     /** Adds the scene to an empty model (after {@code clearModel()}); the caller calls {@code init()}. */
     static void populate(PhysicalModel m, Vect3D plectrum) {
-        m.setGravity(0);
-        m.setFriction(0.00001);
-        m.addGround3D(mass(0), new Vect3D(0, 0, 0));
+        populate(m, plectrum, DIRECT);
+    }
+
+    /** As {@link #populate(PhysicalModel, Vect3D)}, each call made through {@code api}. */
+    static void populate(PhysicalModel m, Vect3D plectrum, Api api) {
+        api.call("setGravity", () -> m.setGravity(0));
+        api.call("setFriction", () -> m.setFriction(0.00001));
+        api.call("addGround3D", () -> m.addGround3D(mass(0), new Vect3D(0, 0, 0)));
         for (int i = 1; i <= MASSES; i++) {
-            m.addMass2DPlane(mass(i), 1.0, new Vect3D(i * SPACING, 0, 0), new Vect3D());
+            int n = i;
+            api.call("addMass2DPlane", () -> m.addMass2DPlane(mass(n), 1.0, new Vect3D(n * SPACING, 0, 0), new Vect3D()));
         }
-        m.addGround3D(mass(MASSES + 1), new Vect3D(length(), 0, 0));
+        api.call("addGround3D", () -> m.addGround3D(mass(MASSES + 1), new Vect3D(length(), 0, 0)));
         for (int i = 0; i <= MASSES; i++) {
-            m.addSpringDamper3D(spring(i), REST, STIFFNESS, DAMPING, mass(i), mass(i + 1));
+            int n = i;
+            api.call("addSpringDamper3D", () -> m.addSpringDamper3D(spring(n), REST, STIFFNESS, DAMPING, mass(n),
+                    mass(n + 1)));
         }
-        m.addHapticInput3D(PLECTRUM, plectrum, SMOOTHING);
+        api.call("addHapticInput3D", () -> m.addHapticInput3D(PLECTRUM, plectrum, SMOOTHING));
         for (int i = 1; i <= MASSES; i++) {
-            m.addContact3D(pick(i), SPHERE, CONTACT_K, CONTACT_Z, PLECTRUM, mass(i));
+            int n = i;
+            api.call("addContact3D", () -> m.addContact3D(pick(n), SPHERE, CONTACT_K, CONTACT_Z, PLECTRUM, mass(n)));
         }
-        m.createLinkSubset(STRINGS);
+        api.call("createLinkSubset", () -> m.createLinkSubset(STRINGS));
         for (int i = 0; i <= MASSES; i++) {
-            m.addLinkToSubset(spring(i), STRINGS);
+            int n = i;
+            api.call("addLinkToSubset", () -> m.addLinkToSubset(spring(n), STRINGS));
         }
-        m.createMatSubset(BEADS);
+        api.call("createMatSubset", () -> m.createMatSubset(BEADS));
         for (int i = 1; i <= MASSES; i++) {
-            m.addMatToSubset(mass(i), BEADS);
+            int n = i;
+            api.call("addMatToSubset", () -> m.addMatToSubset(mass(n), BEADS));
         }
-        m.addContactGroup(BEADS, SPACING / 4, 0.05, 0.001);
-        m.addParamController(RAMP, STRINGS, "stiffness", RAMP_SECONDS);
+        api.call("addContactGroup", () -> m.addContactGroup(BEADS, SPACING / 4, 0.05, 0.001));
+        api.call("addParamController", () -> m.addParamController(RAMP, STRINGS, "stiffness", RAMP_SECONDS));
     }
 
     /** Device-to-model mapping for the haptic loop: position gain (model units per metre). */
