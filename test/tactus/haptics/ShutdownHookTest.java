@@ -16,6 +16,8 @@ import tactus.haptics.emulator.PtyPair;
 
 /** A JVM that ends without closing its board still zeroes the motors (the shutdown hook), over a real pty. */
 class ShutdownHookTest {
+    /** The longest the child JVM may live, s (it normally ends within a few seconds). */
+    static final long CHILD_LIMIT_SECONDS = 60;
 
     @Test
     void exitingWithoutDisposeZeroesTheMotors() throws Exception {
@@ -26,6 +28,18 @@ class ShutdownHookTest {
             String java = System.getProperty("java.home") + File.separator + "bin" + File.separator + "java";
             Process child = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
                     ShutdownHookChild.class.getName(), pty.hostEnd()).redirectErrorStream(true).start();
+            // readLine below cannot be interrupted: if the child never answers, this reaper ends it (which ends the
+            // read), also when JUnit's timeout has already failed the test and left this thread behind
+            Thread reaper = new Thread(() -> {
+                try {
+                    child.waitFor(CHILD_LIMIT_SECONDS, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    // the test is over: end the child now
+                }
+                child.destroyForcibly();
+            }, "shutdown-hook-child-reaper");
+            reaper.setDaemon(true);
+            reaper.start();
             try {
                 BufferedReader out = new BufferedReader(new InputStreamReader(child.getInputStream(), StandardCharsets.UTF_8));
                 String line;
@@ -47,6 +61,7 @@ class ShutdownHookTest {
                 assertEquals(0, emulator.duty(2));
             } finally {
                 child.destroyForcibly();
+                reaper.interrupt();
                 emulator.close();
             }
         }

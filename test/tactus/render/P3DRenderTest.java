@@ -64,9 +64,15 @@ class P3DRenderTest {
                 "-cp", System.getProperty("java.class.path"), sketch.getName(), png.toString()));
         Path log = tmp.resolve(sketch.getSimpleName() + ".log");
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
-        boolean done = p.waitFor(120, TimeUnit.SECONDS);
-        if (!done) {
-            p.destroyForcibly();
+        boolean done = false;
+        try {
+            done = p.waitFor(120, TimeUnit.SECONDS);
+        } finally {
+            if (!done) {
+                // also when JUnit's timeout interrupted the wait: xvfb-run, Xvfb and the sketch JVM all go
+                p.descendants().forEach(ProcessHandle::destroyForcibly);
+                p.destroyForcibly();
+            }
         }
         String output = Files.exists(log) ? Files.readString(log, StandardCharsets.UTF_8) : "";
         assertTrue(done, "the P3D sketch did not finish in 120 s:\n" + output);
