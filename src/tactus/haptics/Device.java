@@ -194,9 +194,7 @@ public class Device {
             throw new IllegalStateException(op + ": the setup was already sent; sending it again mid-session "
                     + "would re-home the encoders at the current pose");
         }
-        if (board.hasDevice(id)) {
-            throw new IllegalStateException(op + ": another Device with id " + (id & 0xFF) + " is already set up on this board");
-        }
+        board.checkNoOtherSetup(this, op);
         checkFirmwareDirectionSlots(op);
         int[] motorDirs = new int[ports];
         int[] encDirs = new int[ports];
@@ -385,7 +383,51 @@ public class Device {
     void writeZeros() {
         byte[] zeros = zeroMessage();
         if (zeros != null) {
-            board.send(zeros, zeros.length);
+            board.sendTorques(zeros, zeros.length, false);
+        }
+    }
+
+    /** The ports and pins this device uses, for messages: "motor ports 1, 2; encoder ports 1, 2". */
+    String describePorts() {
+        StringBuilder b = new StringBuilder();
+        appendList(b, "motor ports", actuatorAtPort);
+        appendList(b, "encoder ports", encoderAtPort);
+        if (!analogs.isEmpty()) {
+            b.append(b.length() > 0 ? "; " : "").append("analog pins");
+            for (int i = 0; i < analogs.size(); i++) {
+                b.append(i == 0 ? " A" : ", A").append(analogs.get(i).get_port() - WireFormat.ANALOG_PIN_BASE);
+            }
+        }
+        if (!pwms.isEmpty()) {
+            b.append(b.length() > 0 ? "; " : "").append("PWM pins");
+            for (int i = 0; i < pwms.size(); i++) {
+                b.append(i == 0 ? " " : ", ").append(pwms.get(i).get_pin());
+            }
+        }
+        return b.length() == 0 ? "no ports" : b.toString();
+    }
+
+    /** The motor and encoder ports both devices use, for messages ("motor ports 1, 2; encoder port 1"), or "". */
+    static String sharedPorts(Device a, Device b) {
+        int n = Math.min(a.ports, b.ports);
+        int[] motors = new int[n];
+        int[] encoders = new int[n];
+        for (int p = 0; p < n; p++) {
+            motors[p] = a.actuatorAtPort[p] != 0 && b.actuatorAtPort[p] != 0 ? 1 : 0;
+            encoders[p] = a.encoderAtPort[p] != 0 && b.encoderAtPort[p] != 0 ? 1 : 0;
+        }
+        StringBuilder s = new StringBuilder();
+        appendList(s, "motor ports", motors);
+        appendList(s, "encoder ports", encoders);
+        return s.toString();
+    }
+
+    private static void appendList(StringBuilder b, String what, int[] atPort) {
+        int first = b.length();
+        for (int p = 0; p < atPort.length; p++) {
+            if (atPort[p] != 0) {
+                b.append(b.length() == first ? (first > 0 ? "; " : "") + what + " " : ", ").append(p + 1);
+            }
         }
     }
 
@@ -404,7 +446,11 @@ public class Device {
             pwmValues[i] = pwms.get(i).get_value();
         }
         WireFormat.encodeWrite(id, pwmValues, nPwm, torquesByPort, nMotors, writeBuffer);
-        board.send(writeBuffer, writeBuffer.length);
+        boolean nonZero = false;
+        for (int i = 0; i < nMotors; i++) {
+            nonZero |= torquesByPort[i] != 0f;
+        }
+        board.sendTorques(writeBuffer, writeBuffer.length, nonZero);
     }
 
     private Pwm pwmAt(String op, int pin) {

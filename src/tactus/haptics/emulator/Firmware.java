@@ -301,7 +301,8 @@ final class Firmware {
                 duty[p] = 0;
             } else {
                 float mag = Math.min(Math.abs(tau), (float) BoardModel.MAX_TORQUE);
-                duty[p] = (int) ((float) (model.pwmResolution() * mag) / (float) BoardModel.MAX_TORQUE);
+                // the product is a float, the division by the firmware's double constant MAX_TORQUE is in double
+                duty[p] = (int) ((float) (model.pwmResolution() * mag) / BoardModel.MAX_TORQUE);
             }
             boolean low = (tau > 0) ^ (rot == 1);
             dirHigh[p] = !low;
