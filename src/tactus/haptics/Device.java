@@ -12,7 +12,10 @@ import java.util.List;
  * marker), ports the board does not have, indices out of 1..4, rotations other than 0/1, zero or non-finite
  * resolutions, unknown analog pins and duplicate ports are refused with an exception naming the value.
  * The setup is sent once: a second {@link #device_set_parameters()} would re-home the encoders at the current
- * pose, so it is refused, as is changing the configuration after it. Non-finite torques are sent as 0.
+ * pose, so it is refused, as is changing the configuration after it, and so is the setup of a second device on
+ * the same board (the firmware's setup clears every assignment). Non-finite torques are sent as 0, and torques
+ * above the firmware's 0.123 N m clip are scaled down together so that the force keeps its direction (the
+ * firmware would clip each motor alone).
  */
 public class Device {
     /** Highest actuator or encoder index (hAPI numbers them 1..4). */
@@ -42,6 +45,7 @@ public class Device {
     private int[] pwmValues;
     private float[] frame;
     private long nonFiniteTorques;
+    private long scaledWrites;
     private byte[] zeroMessage;
 
     /** Creates a device with an id (1..255 as an unsigned byte; 0 is refused) on a board. */
@@ -300,7 +304,33 @@ public class Device {
                 torquesByPort[k++] = t;
             }
         }
+        keepDirectionWithinTheClip();
         sendWrite();
+    }
+
+    /**
+     * The firmware clips each motor's |torque| to 0.123 N m on its own, which turns the force (by up to 34
+     * degrees on a pantograph); instead, when any torque is above the clip, scale all of them by the same
+     * factor so that the largest is exactly at the clip and the direction holds.
+     */
+    private void keepDirectionWithinTheClip() {
+        float max = 0f;
+        for (int i = 0; i < nMotors; i++) {
+            max = Math.max(max, Math.abs(torquesByPort[i]));
+        }
+        float clip = (float) BoardModel.MAX_TORQUE;
+        if (max > clip) {
+            float k = clip / max;
+            for (int i = 0; i < nMotors; i++) {
+                torquesByPort[i] *= k;
+            }
+            scaledWrites++;
+        }
+    }
+
+    /** Number of torque writes scaled down together because a torque was above the firmware's 0.123 N m clip. */
+    public long scaledWrites() {
+        return scaledWrites;
     }
 
     /** Number of non-finite torques replaced by 0 before sending. */
