@@ -98,6 +98,7 @@ class FrozenBoardTest {
                 System.out.println("FrozenBoardTest: the haptic loop stopped " + ms + " ms after the board froze: " + loop.failure());
                 assertNotNull(board.lostReason(), "the board says why");
             } finally {
+                pty.close();   // first: a write stuck in the port (the defect) then fails instead of hanging close()
                 loop.close();
             }
         }
