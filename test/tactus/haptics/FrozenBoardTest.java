@@ -104,6 +104,89 @@ class FrozenBoardTest {
         }
     }
 
+    @Test
+    void closeNeverWaitsForAWriteStuckInTheTransport() throws Exception {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        StuckTransport link = new StuckTransport(emulator.connect());
+        Board board = new Board(link);
+        Device device = new Device((byte) 3, board);
+        HaplyPreset.HAPLY_2018.configure(device);
+        device.device_set_parameters();
+        device.set_actuator_torque(1, 0.05f);
+        link.freeze();
+        RuntimeException[] failure = new RuntimeException[1];
+        Thread writer = new Thread(() -> {
+            try {
+                device.device_write_torques();   // blocks in the transport, holding the board
+            } catch (RuntimeException e) {
+                failure[0] = e;
+            }
+        }, "stuck-writer");
+        writer.setDaemon(true);
+        writer.start();
+        assertTrue(link.stuck.await(5, java.util.concurrent.TimeUnit.SECONDS), "the write is stuck");
+        long t0 = System.nanoTime();
+        assertTimeoutPreemptively(Duration.ofSeconds(5), board::close, "close() must not wait for the stuck write");
+        long ms = (System.nanoTime() - t0) / 1_000_000;
+        writer.join(2000);
+        assertTrue(!writer.isAlive(), "closing the transport ends the stuck write");
+        assertTrue(failure[0] instanceof HaplyLinkException, "the writer learns the link is gone: " + failure[0]);
+        assertTrue(board.isClosed());
+        assertTrue(ms < 2000, "close() took " + ms + " ms");
+        System.out.println("FrozenBoardTest: close() beside a stuck write returned after " + ms + " ms");
+    }
+
+    /** A transport whose writes, once frozen, block until the transport is closed (as a blocked serial write). */
+    private static final class StuckTransport implements Transport {
+        private final Transport inner;
+        final java.util.concurrent.CountDownLatch stuck = new java.util.concurrent.CountDownLatch(1);
+        private final java.util.concurrent.CountDownLatch closed = new java.util.concurrent.CountDownLatch(1);
+        private volatile boolean frozen;
+
+        StuckTransport(Transport inner) {
+            this.inner = inner;
+        }
+
+        void freeze() {
+            frozen = true;
+        }
+
+        @Override
+        public void write(byte[] data, int offset, int length) throws IOException {
+            if (frozen) {
+                stuck.countDown();
+                try {
+                    closed.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                throw new IOException("closed while the write was blocked");
+            }
+            inner.write(data, offset, length);
+        }
+
+        @Override
+        public int available() throws IOException {
+            return inner.available();
+        }
+
+        @Override
+        public int read(byte[] buffer, int offset, int length) throws IOException {
+            return inner.read(buffer, offset, length);
+        }
+
+        @Override
+        public void close() {
+            closed.countDown();
+            inner.close();
+        }
+
+        @Override
+        public String describe() {
+            return "stuck transport";
+        }
+    }
+
     /** A model stand-in whose avatar pushes with a constant force (model units). */
     private static final class ConstantForce implements AvatarLink {
         private final double fx;
