@@ -191,11 +191,14 @@ public final class SerialTransport implements Transport {
         t.start();
     }
 
-    /** Closes the port of every write that has lasted longer than the write timeout (20 wake-ups a second at most). */
+    /**
+     * Closes the port of every write that has lasted longer than the write timeout: looks every 20 ms while a
+     * port is open, every half second otherwise.
+     */
     private static void guardLoop() {
         long limit = WRITE_TIMEOUT_MS * 1_000_000L;
         while (true) {
-            LockSupport.parkNanos(GUARD_PERIOD_NANOS);
+            LockSupport.parkNanos(OPEN.isEmpty() ? 25 * GUARD_PERIOD_NANOS : GUARD_PERIOD_NANOS);
             long now = System.nanoTime();
             for (SerialTransport t : OPEN) {
                 long started = t.writeStartedNanos;
