@@ -639,9 +639,14 @@ public class Board implements AutoCloseable {
      * not zero (only then does the watchdog watch).
      */
     void sendTorques(byte[] data, int len, boolean nonZero) {
-        send(data, len);
-        lastTorqueWriteNanos = System.nanoTime();
-        torqueArmed = nonZero;
+        lock.lock();
+        try {
+            send(data, len);
+            lastTorqueWriteNanos = System.nanoTime();   // under the lock: the watchdog never sees a write half done
+            torqueArmed = nonZero;
+        } finally {
+            lock.unlock();
+        }
         if (nonZero && torqueWatchdog == null && torqueWatchdogMs > 0) {
             startTorqueWatchdog();
         }
