@@ -183,6 +183,7 @@ public final class SerialTransport implements Transport {
 
     private static synchronized void startGuard() {
         if (guard != null) {
+            LockSupport.unpark(guard);   // it may be in its long idle sleep: watch the new port from now
             return;
         }
         Thread t = new Thread(SerialTransport::guardLoop, "tactus-serial-write-guard");
