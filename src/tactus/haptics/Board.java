@@ -3,7 +3,9 @@ package tactus.haptics;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.locks.ReentrantLock;
 
 /**
  * The serial link to a Haply board (hAPI 2.x compatible), speaking the V2 wire protocol over a
@@ -18,15 +20,33 @@ import java.util.concurrent.locks.LockSupport;
  * Processing's {@code dispose}; where the JVM ends with neither (the Processing editor's Stop button, SIGKILL),
  * a {@link MotorGuard} process started with the board sends them.
  *
- * <p>Methods are synchronized on the board (uncontended in normal use: one haptic thread).
+ * <p>Safety net for a sketch that drives the board from its own thread (hAPI style): a torque watchdog
+ * zeroes the motors when no torque write has come for {@link #setTorqueWatchdogMillis(int) a set time} (50 ms
+ * by default) after a non-zero one, and the first failure of each kind (a lost link, a call on a closed
+ * board, a watchdog trip) is printed once to standard error where it happens, so that it shows even when the
+ * sketch's executor swallows the exception. A board that stops reading (its link open but silent) is declared
+ * lost when no reply has come for {@link #setTimeoutMillis(int) timeout} x {@link #setLostAfterTimeouts(int)
+ * count} (1 s by default) while writes are owed an answer, long before the driver's buffer fills; no write
+ * waits without a bound (see {@link SerialTransport}).
+ *
+ * <p>Methods lock the board (uncontended in normal use: one haptic thread); {@link #close()} waits at most
+ * half a second for the lock, so a JVM shutdown never hangs on it.
  */
 public class Board implements AutoCloseable {
     /** Default time a read waits for a complete reply frame, in milliseconds. */
     public static final int DEFAULT_TIMEOUT_MS = 100;
     /** Default number of consecutive reads without a reply after which the link is declared lost. */
     public static final int DEFAULT_LOST_AFTER_TIMEOUTS = 10;
+    /** Default time without a torque write, after a non-zero one, before the watchdog zeroes the motors, in ms. */
+    public static final int DEFAULT_TORQUE_WATCHDOG_MS = 50;
+    /** System property that overrides {@link #DEFAULT_TORQUE_WATCHDOG_MS} for every new board (0 turns it off). */
+    public static final String TORQUE_WATCHDOG_PROPERTY = "tactus.haptics.torqueWatchdogMillis";
     /** How long close() waits for the board to answer its zero torques. */
     private static final long CLOSE_ACK_NANOS = 250_000_000L;
+    /** How long close() waits for the board's lock (held by a read or a write in another thread). */
+    private static final long CLOSE_LOCK_NANOS = 500_000_000L;
+    /** Unread input beyond this many bytes is dropped before a write (a sketch that never reads). */
+    private static final int INPUT_CAP = 4096;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
     private static final float PLAUSIBLE = 1e6f;
 
@@ -36,10 +56,25 @@ public class Board implements AutoCloseable {
     private final Thread shutdownHook;
     private final boolean hookInRuntime;
     private final MotorGuardLink guard;
+    private final ReentrantLock lock = new ReentrantLock();
+    private final ConsoleNotices notices = new ConsoleNotices();
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
     private volatile int lostAfterTimeouts = DEFAULT_LOST_AFTER_TIMEOUTS;
     private int consecutiveTimeouts;
     private volatile boolean closed;
+    private volatile boolean closing;
+
+    // is the board still reading? (lock held)
+    private int seenAvailable;
+    private long writesUnanswered;
+    private long firstUnansweredNanos;
+
+    // the torque watchdog
+    private volatile int torqueWatchdogMs = defaultTorqueWatchdogMillis();
+    private volatile long lastTorqueWriteNanos;
+    private volatile boolean torqueArmed;
+    private volatile Thread torqueWatchdog;
+    private volatile long torqueWatchdogTrips;
     private volatile String lostReason;
     private byte[] rx = new byte[64];
     private byte[] tx = new byte[64];
@@ -148,21 +183,50 @@ public class Board implements AutoCloseable {
         lostAfterTimeouts = n;
     }
 
+    /**
+     * Sets the torque watchdog: when a torque write with a non-zero torque is followed by no torque write for
+     * this many milliseconds, the board sends zero torques (and zero PWM) to every device and prints why, once.
+     * The next write drives the motors again. 0 turns the watchdog off (for a sketch that writes a torque once
+     * and holds it). Default {@value #DEFAULT_TORQUE_WATCHDOG_MS} ms, or the system property
+     * {@value #TORQUE_WATCHDOG_PROPERTY}.
+     */
+    public void setTorqueWatchdogMillis(int ms) {
+        if (ms < 0) {
+            throw new IllegalArgumentException("Board.setTorqueWatchdogMillis: time must be >= 0 ms (0 = off), got " + ms);
+        }
+        torqueWatchdogMs = ms;
+    }
+
+    /** The torque watchdog's time in milliseconds (0 = off). */
+    public int torqueWatchdogMillis() {
+        return torqueWatchdogMs;
+    }
+
+    /** Number of times the torque watchdog zeroed the motors. */
+    public long torqueWatchdogTrips() {
+        return torqueWatchdogTrips;
+    }
+
     /** hAPI: sends {@code [type][id][bData...][fData as little-endian float32...]} in one write. */
-    public synchronized void transmit(byte communicationType, byte deviceID, byte[] bData, float[] fData) {
-        int nb = bData == null ? 0 : bData.length;
-        int nf = fData == null ? 0 : fData.length;
-        int len = 2 + nb + 4 * nf;
-        byte[] out = txBuffer(len);
-        out[0] = communicationType;
-        out[1] = deviceID;
-        if (nb > 0) {
-            System.arraycopy(bData, 0, out, 2, nb);
+    public void transmit(byte communicationType, byte deviceID, byte[] bData, float[] fData) {
+        lock.lock();
+        try {
+            int nb = bData == null ? 0 : bData.length;
+            int nf = fData == null ? 0 : fData.length;
+            int len = 2 + nb + 4 * nf;
+            byte[] out = txBuffer(len);
+            out[0] = communicationType;
+            out[1] = deviceID;
+            if (nb > 0) {
+                System.arraycopy(bData, 0, out, 2, nb);
+            }
+            for (int i = 0; i < nf; i++) {
+                WireFormat.putFloat(out, 2 + nb + 4 * i, fData[i]);
+            }
+            send(out, len);
+        } finally {
+            lock.unlock();
         }
-        for (int i = 0; i < nf; i++) {
-            WireFormat.putFloat(out, 2 + nb + 4 * i, fData[i]);
-        }
-        send(out, len);
     }
 
     /**
@@ -177,14 +241,19 @@ public class Board implements AutoCloseable {
     }
 
     /** hAPI: true when at least one byte from the board is waiting to be read. */
-    public synchronized boolean data_available() {
-        if (closed) {
-            return false;
-        }
+    public boolean data_available() {
+        lock.lock();
         try {
-            return transport.available() > 0;
-        } catch (IOException e) {
-            throw lost("reading", e);
+            if (closed) {
+                return false;
+            }
+            try {
+                return availableNow() > 0;
+            } catch (IOException e) {
+                throw lost("reading", e);
+            }
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -193,16 +262,26 @@ public class Board implements AutoCloseable {
      * complete frames. Waits up to the timeout for one frame. Returns false (out unchanged) on a timeout or an
      * id mismatch; both are counted, and a mismatch or an incomplete frame flushes the input to resynchronise.
      */
-    public synchronized boolean readFrame(byte id, int floats, float[] out) {
-        return takeFrame(id, floats, out, true);
+    public boolean readFrame(byte id, int floats, float[] out) {
+        lock.lock();
+        try {
+            return takeFrame(id, floats, out, true);
+        } finally {
+            lock.unlock();
+        }
     }
 
     /**
      * Like {@link #readFrame} but never waits: returns false at once (nothing counted) if no complete frame
      * has arrived yet. For a fixed-rate loop that must not block.
      */
-    public synchronized boolean pollFrame(byte id, int floats, float[] out) {
-        return takeFrame(id, floats, out, false);
+    public boolean pollFrame(byte id, int floats, float[] out) {
+        lock.lock();
+        try {
+            return takeFrame(id, floats, out, false);
+        } finally {
+            lock.unlock();
+        }
     }
 
     private boolean takeFrame(byte id, int floats, float[] out, boolean wait) {
@@ -210,11 +289,14 @@ public class Board implements AutoCloseable {
         int frame = WireFormat.replyLength(floats);
         try {
             long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
-            int avail = transport.available();
+            int avail = availableNow();
             if (!wait && avail < frame) {
                 return false;
             }
             while (avail < frame) {
+                if (closing) {
+                    return false;   // close() is waiting for the lock
+                }
                 if (System.nanoTime() - deadline > 0) {
                     timeouts++;
                     if (avail > 0) {
@@ -227,7 +309,7 @@ public class Board implements AutoCloseable {
                     return false;
                 }
                 LockSupport.parkNanos(20_000);
-                avail = transport.available();
+                avail = availableNow();
             }
             consecutiveTimeouts = 0;
             if (devices.size() == 1 && avail > pendingReplies * frame) {
@@ -272,41 +354,76 @@ public class Board implements AutoCloseable {
     }
 
     /** Number of reply frames decoded. */
-    public synchronized long framesRead() {
-        return framesRead;
+    public long framesRead() {
+        lock.lock();
+        try {
+            return framesRead;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Number of complete but older reply frames dropped in favour of a newer one. */
-    public synchronized long framesSkipped() {
-        return framesSkipped;
+    public long framesSkipped() {
+        lock.lock();
+        try {
+            return framesSkipped;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Number of frames whose first byte was not the expected device id (each one flushed the input). */
-    public synchronized long idMismatches() {
-        return idMismatches;
+    public long idMismatches() {
+        lock.lock();
+        try {
+            return idMismatches;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Number of reads that found no complete frame within the timeout. */
-    public synchronized long timeouts() {
-        return timeouts;
+    public long timeouts() {
+        lock.lock();
+        try {
+            return timeouts;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Number of bytes thrown away while resynchronising. */
-    public synchronized long bytesDiscarded() {
-        return bytesDiscarded;
+    public long bytesDiscarded() {
+        lock.lock();
+        try {
+            return bytesDiscarded;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /**
      * Number of bytes dropped because more had arrived than the replies still owed (a stray or foreign
      * frame); counted only with one device on the board.
      */
-    public synchronized long unexpectedBytes() {
-        return unexpectedBytes;
+    public long unexpectedBytes() {
+        lock.lock();
+        try {
+            return unexpectedBytes;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** Number of frames with the right id but a non-finite or absurd value (above 1e6), dropped with a flush. */
-    public synchronized long implausibleFrames() {
-        return implausibleFrames;
+    public long implausibleFrames() {
+        lock.lock();
+        try {
+            return implausibleFrames;
+        } finally {
+            lock.unlock();
+        }
     }
 
     /** True once the board has been closed or the link was lost. */
@@ -321,11 +438,34 @@ public class Board implements AutoCloseable {
 
     /**
      * Sends zero torques (and zero PWM) to every configured device and a reset, then closes the link. Safe to
-     * call more than once and from any thread.
+     * call more than once and from any thread. Never waits without a bound: at most half a second for another
+     * thread's read or write to let go of the board (then the port is closed without the zero torques, which
+     * a board that keeps another thread's write waiting could not take anyway), 250 ms for the board to
+     * answer the zero torques, and each write at most {@link SerialTransport#WRITE_TIMEOUT_MS}.
      */
     @Override
     public void close() {
-        synchronized (this) {
+        closing = true;
+        boolean locked;
+        try {
+            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            locked = lock.tryLock();
+        }
+        if (!locked) {
+            if (!closed) {
+                closed = true;
+                notices.once(ConsoleNotices.Kind.CLOSE_TIMEOUT, "tactus: the Haply board on " + transport.describe()
+                        + " was busy for " + CLOSE_LOCK_NANOS / 1_000_000 + " ms in another thread; its port was "
+                        + "closed without sending zero torques");
+                transport.close();
+                guard.release(false); // the motors may still push: the guard zeroes them now that the port is free
+            }
+            removeHook();
+            return;
+        }
+        try {
             if (closed) {
                 return;
             }
@@ -337,28 +477,36 @@ public class Board implements AutoCloseable {
                         // the link may be half gone; closing goes on
                     }
                 }
-                awaitOwedReplies(CLOSE_ACK_NANOS);
-                // then reset: the board forgets the configuration (the duty stays at the zero just sent)
-                try {
-                    transport.write(WireFormat.reset((byte) 0), 0, 2);
-                } catch (IOException ignored) {
-                    // closing anyway
-                }
-                // Let the replies arrive, then drop them.
-                LockSupport.parkNanos(2_000_000);
-                try {
-                    int n = transport.available();
-                    if (n > 0) {
-                        discard(n);
+                if (!closed) {
+                    awaitOwedReplies(CLOSE_ACK_NANOS);
+                    // then reset: the board forgets the configuration (the duty stays at the zero just sent)
+                    try {
+                        transport.write(WireFormat.reset((byte) 0), 0, 2);
+                    } catch (IOException ignored) {
+                        // closing anyway
                     }
-                } catch (IOException ignored) {
-                    // closing anyway
+                    // Let the replies arrive, then drop them.
+                    LockSupport.parkNanos(2_000_000);
+                    try {
+                        int n = availableNow();
+                        if (n > 0) {
+                            discard(n);
+                        }
+                    } catch (IOException ignored) {
+                        // closing anyway
+                    }
                 }
             }
             closed = true;
             transport.close();
             guard.release(lostReason == null);
+        } finally {
+            lock.unlock();
         }
+        removeHook();
+    }
+
+    private void removeHook() {
         try {
             if (hookInRuntime) {
                 Runtime.getRuntime().removeShutdownHook(shutdownHook);
@@ -370,19 +518,32 @@ public class Board implements AutoCloseable {
 
     /**
      * Sends zero torques and zero PWM to every configured device now, from any thread (a watchdog); the link
-     * stays open. Returns false if the link is closed or failed.
+     * stays open. Returns false if the link is closed or failed, or if another thread held the board for more
+     * than half a second.
      */
-    public synchronized boolean zeroTorques() {
-        if (closed) {
+    public boolean zeroTorques() {
+        boolean locked;
+        try {
+            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
+        if (!locked) {
             return false;
         }
         try {
+            if (closed) {
+                return false;
+            }
             for (Device d : devices) {
                 d.writeZeros();
             }
             return true;
         } catch (HaplyLinkException e) {
             return false;
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -401,20 +562,48 @@ public class Board implements AutoCloseable {
 
     // ------------------------------------------------------------------------------------------ for Device
 
-    synchronized void register(Device device) {
-        if (!devices.contains(device)) {
-            devices.add(device);
-            guard.deviceConfigured(device);
+    void register(Device device) {
+        lock.lock();
+        try {
+            if (!devices.contains(device)) {
+                devices.add(device);
+                guard.deviceConfigured(device);
+            }
+        } finally {
+            lock.unlock();
         }
     }
 
-    synchronized boolean hasDevice(byte id) {
-        for (Device d : devices) {
-            if (d.id() == id) {
-                return true;
+    /**
+     * Refuses the setup of a device while another device is set up on this board: the firmware's setup
+     * clears every assignment before it makes its own, so the other device's ports would move to the new id
+     * and its torques would then be read as commands.
+     */
+    void checkNoOtherSetup(Device device, String op) {
+        lock.lock();
+        try {
+            for (Device d : devices) {
+                if (d == device) {
+                    continue;
+                }
+                int other = d.id() & 0xFF;
+                int mine = device.id() & 0xFF;
+                if (other == mine) {
+                    throw new IllegalStateException(op + ": another Device with id " + mine
+                            + " is already set up on this board (" + transport.describe() + ")");
+                }
+                String shared = Device.sharedPorts(d, device);
+                throw new IllegalStateException(op + ": Device(id " + other + ") is already set up on the board on "
+                        + transport.describe() + " (" + d.describePorts() + "); a setup for id " + mine + " ("
+                        + device.describePorts() + ") would "
+                        + (shared.isEmpty() ? "clear its assignments (the firmware's setup resets every port)"
+                                : "take over its " + shared)
+                        + ", and the torques of id " + other + " would then be read as commands. Use one Device "
+                        + "per board, or close the board and open it again");
             }
+        } finally {
+            lock.unlock();
         }
-        return false;
     }
 
     /**
@@ -430,7 +619,7 @@ public class Board implements AutoCloseable {
         long need = pendingReplies * devices.get(0).replyBytes();
         long deadline = System.nanoTime() + maxNanos;
         try {
-            while (transport.available() < need && System.nanoTime() - deadline < 0) {
+            while (availableNow() < need && System.nanoTime() - deadline < 0) {
                 LockSupport.parkNanos(200_000);
             }
         } catch (IOException ignored) {
@@ -439,22 +628,142 @@ public class Board implements AutoCloseable {
     }
 
     /** Sends len bytes of data in one write. */
-    synchronized void send(byte[] data, int len) {
-        requireOpen();
+    void send(byte[] data, int len) {
+        lock.lock();
         try {
-            transport.write(data, 0, len);
-            if (len > 0 && data[0] == WireFormat.WRITE) {
-                pendingReplies++;
+            requireOpen();
+            try {
+                boardStillReads();
+                transport.write(data, 0, len);
+                if (len > 0 && data[0] == WireFormat.WRITE) {
+                    pendingReplies++;
+                    if (writesUnanswered++ == 0) {
+                        firstUnansweredNanos = System.nanoTime();
+                    }
+                }
+            } catch (IOException e) {
+                throw lost("writing", e);
             }
-        } catch (IOException e) {
-            throw lost("writing", e);
+        } finally {
+            lock.unlock();
         }
+    }
+
+    /**
+     * Sends a device's torque write and feeds the torque watchdog: nonZero tells whether any torque in it is
+     * not zero (only then does the watchdog watch).
+     */
+    void sendTorques(byte[] data, int len, boolean nonZero) {
+        lock.lock();
+        try {
+            send(data, len);
+            lastTorqueWriteNanos = System.nanoTime();   // under the lock: the watchdog never sees a write half done
+            torqueArmed = nonZero;
+        } finally {
+            lock.unlock();
+        }
+        if (nonZero && torqueWatchdog == null && torqueWatchdogMs > 0) {
+            startTorqueWatchdog();
+        }
+    }
+
+    /**
+     * Before a write: drops unread input beyond a cap (a sketch that never reads), and declares the link lost
+     * when writes have been owed an answer for longer than the lost-link time with nothing arriving (the board
+     * stopped reading: writing on would fill the driver's buffer until a write blocks).
+     */
+    private void boardStillReads() throws IOException {
+        int avail = availableNow();
+        if (avail >= INPUT_CAP) {
+            discard(avail);
+            pendingReplies = 0;
+        }
+        if (writesUnanswered > 0) {
+            long silent = System.nanoTime() - firstUnansweredNanos;
+            long limit = (long) timeoutMs * lostAfterTimeouts * 1_000_000L;
+            if (silent > limit) {
+                throw new IOException("no reply to the last " + writesUnanswered + " writes in " + silent / 1_000_000
+                        + " ms: the board stopped reading");
+            }
+        }
+    }
+
+    /** The transport's available count, noting whether bytes arrived since the last look. */
+    private int availableNow() throws IOException {
+        int n = transport.available();
+        if (n > seenAvailable) {
+            writesUnanswered = 0;   // the board answered
+        }
+        seenAvailable = n;
+        return n;
+    }
+
+    // ------------------------------------------------------------------------------------------ the watchdog
+
+    private synchronized void startTorqueWatchdog() {
+        if (torqueWatchdog != null || closed) {
+            return;
+        }
+        Thread t = new Thread(this::watchTorques, "tactus-haply-torque-watchdog");
+        t.setDaemon(true);
+        torqueWatchdog = t;
+        t.start();
+    }
+
+    private void watchTorques() {
+        while (!closed) {
+            int ms = torqueWatchdogMs;
+            long limit = ms * 1_000_000L;
+            // a tenth of the time while a torque is on (a trip comes at most 10 % late), 50 ms otherwise
+            LockSupport.parkNanos(ms > 0 && torqueArmed ? Math.max(1_000_000L, limit / 10) : 50_000_000L);
+            if (ms <= 0 || !torqueArmed) {
+                continue;
+            }
+            long since = System.nanoTime() - lastTorqueWriteNanos;
+            if (since > limit && lock.tryLock()) {
+                try {
+                    since = System.nanoTime() - lastTorqueWriteNanos;
+                    if (!closed && torqueArmed && since > limit) {
+                        torqueArmed = false;
+                        torqueWatchdogTrips++;
+                        for (Device d : devices) {
+                            d.writeZeros();
+                        }
+                        notices.once(ConsoleNotices.Kind.WATCHDOG, "tactus: no torque was written to the Haply board on "
+                                + transport.describe() + " for " + since / 1_000_000 + " ms: the motors were set to "
+                                + "zero. Did the haptic thread stop? An exception in a ScheduledExecutorService task "
+                                + "ends the task without a message: catch and print it there. (Board."
+                                + "setTorqueWatchdogMillis sets this time, 0 turns it off.)");
+                    }
+                } catch (RuntimeException ignored) {
+                    // the link failed while zeroing: lost() has said why
+                } finally {
+                    lock.unlock();
+                }
+            }
+        }
+    }
+
+    private static int defaultTorqueWatchdogMillis() {
+        String v = System.getProperty(TORQUE_WATCHDOG_PROPERTY);
+        if (v != null) {
+            try {
+                int ms = Integer.parseInt(v.trim());
+                if (ms >= 0) {
+                    return ms;
+                }
+            } catch (NumberFormatException ignored) {
+                // fall back to the default
+            }
+            System.err.println("tactus: ignoring " + TORQUE_WATCHDOG_PROPERTY + "=" + v + " (not a number of ms >= 0)");
+        }
+        return DEFAULT_TORQUE_WATCHDOG_MS;
     }
 
     // ------------------------------------------------------------------------------------------ internals
 
     private void flushRest() throws IOException {
-        int rest = transport.available();
+        int rest = availableNow();
         if (rest > 0) {
             discard(rest);
         }
@@ -463,8 +772,12 @@ public class Board implements AutoCloseable {
 
     private void requireOpen() {
         if (closed) {
-            throw new HaplyLinkException(lostReason != null ? lostReason
-                    : "the Haply board on " + transport.describe() + " is closed");
+            if (lostReason != null) {
+                throw new HaplyLinkException(lostReason);
+            }
+            String msg = "the Haply board on " + transport.describe() + " is closed";
+            notices.once(ConsoleNotices.Kind.CLOSED_USE, "tactus: " + msg + "; a call to it failed (this is printed once)");
+            throw new HaplyLinkException(msg);
         }
     }
 
@@ -487,12 +800,14 @@ public class Board implements AutoCloseable {
         lostReason = msg;
         closed = true;
         transport.close();
+        notices.once(ConsoleNotices.Kind.LOST, "tactus: " + msg + "; zero torques were sent where the link still "
+                + "took them");
         return new HaplyLinkException(msg, e);
     }
 
     private void flushInput() {
         try {
-            int n = transport.available();
+            int n = availableNow();
             if (n > 0) {
                 discard(n);
                 bytesDiscarded = 0;
@@ -512,6 +827,7 @@ public class Board implements AutoCloseable {
             }
             left -= r;
             bytesDiscarded += r;
+            seenAvailable = Math.max(0, seenAvailable - r);
         }
     }
 
@@ -523,6 +839,7 @@ public class Board implements AutoCloseable {
                 throw new IOException("end of stream");
             }
             got += r;
+            seenAvailable = Math.max(0, seenAvailable - r);
             if (r == 0) {
                 Thread.onSpinWait();
             }

@@ -12,7 +12,10 @@ import java.util.List;
  * marker), ports the board does not have, indices out of 1..4, rotations other than 0/1, zero or non-finite
  * resolutions, unknown analog pins and duplicate ports are refused with an exception naming the value.
  * The setup is sent once: a second {@link #device_set_parameters()} would re-home the encoders at the current
- * pose, so it is refused, as is changing the configuration after it. Non-finite torques are sent as 0.
+ * pose, so it is refused, as is changing the configuration after it, and so is the setup of a second device on
+ * the same board (the firmware's setup clears every assignment). Non-finite torques are sent as 0, and torques
+ * above the firmware's 0.123 N m clip are scaled down together so that the force keeps its direction (the
+ * firmware would clip each motor alone).
  */
 public class Device {
     /** Highest actuator or encoder index (hAPI numbers them 1..4). */
@@ -42,6 +45,7 @@ public class Device {
     private int[] pwmValues;
     private float[] frame;
     private long nonFiniteTorques;
+    private long scaledWrites;
     private byte[] zeroMessage;
 
     /** Creates a device with an id (1..255 as an unsigned byte; 0 is refused) on a board. */
@@ -194,9 +198,7 @@ public class Device {
             throw new IllegalStateException(op + ": the setup was already sent; sending it again mid-session "
                     + "would re-home the encoders at the current pose");
         }
-        if (board.hasDevice(id)) {
-            throw new IllegalStateException(op + ": another Device with id " + (id & 0xFF) + " is already set up on this board");
-        }
+        board.checkNoOtherSetup(this, op);
         checkFirmwareDirectionSlots(op);
         int[] motorDirs = new int[ports];
         int[] encDirs = new int[ports];
@@ -302,7 +304,33 @@ public class Device {
                 torquesByPort[k++] = t;
             }
         }
+        keepDirectionWithinTheClip();
         sendWrite();
+    }
+
+    /**
+     * The firmware clips each motor's |torque| to 0.123 N m on its own, which turns the force (by up to 34
+     * degrees on a pantograph); instead, when any torque is above the clip, scale all of them by the same
+     * factor so that the largest is exactly at the clip and the direction holds.
+     */
+    private void keepDirectionWithinTheClip() {
+        float max = 0f;
+        for (int i = 0; i < nMotors; i++) {
+            max = Math.max(max, Math.abs(torquesByPort[i]));
+        }
+        float clip = (float) BoardModel.MAX_TORQUE;
+        if (max > clip) {
+            float k = clip / max;
+            for (int i = 0; i < nMotors; i++) {
+                torquesByPort[i] *= k;
+            }
+            scaledWrites++;
+        }
+    }
+
+    /** Number of torque writes scaled down together because a torque was above the firmware's 0.123 N m clip. */
+    public long scaledWrites() {
+        return scaledWrites;
     }
 
     /** Number of non-finite torques replaced by 0 before sending. */
@@ -385,7 +413,51 @@ public class Device {
     void writeZeros() {
         byte[] zeros = zeroMessage();
         if (zeros != null) {
-            board.send(zeros, zeros.length);
+            board.sendTorques(zeros, zeros.length, false);
+        }
+    }
+
+    /** The ports and pins this device uses, for messages: "motor ports 1, 2; encoder ports 1, 2". */
+    String describePorts() {
+        StringBuilder b = new StringBuilder();
+        appendList(b, "motor ports", actuatorAtPort);
+        appendList(b, "encoder ports", encoderAtPort);
+        if (!analogs.isEmpty()) {
+            b.append(b.length() > 0 ? "; " : "").append("analog pins");
+            for (int i = 0; i < analogs.size(); i++) {
+                b.append(i == 0 ? " A" : ", A").append(analogs.get(i).get_port() - WireFormat.ANALOG_PIN_BASE);
+            }
+        }
+        if (!pwms.isEmpty()) {
+            b.append(b.length() > 0 ? "; " : "").append("PWM pins");
+            for (int i = 0; i < pwms.size(); i++) {
+                b.append(i == 0 ? " " : ", ").append(pwms.get(i).get_pin());
+            }
+        }
+        return b.length() == 0 ? "no ports" : b.toString();
+    }
+
+    /** The motor and encoder ports both devices use, for messages ("motor ports 1, 2; encoder port 1"), or "". */
+    static String sharedPorts(Device a, Device b) {
+        int n = Math.min(a.ports, b.ports);
+        int[] motors = new int[n];
+        int[] encoders = new int[n];
+        for (int p = 0; p < n; p++) {
+            motors[p] = a.actuatorAtPort[p] != 0 && b.actuatorAtPort[p] != 0 ? 1 : 0;
+            encoders[p] = a.encoderAtPort[p] != 0 && b.encoderAtPort[p] != 0 ? 1 : 0;
+        }
+        StringBuilder s = new StringBuilder();
+        appendList(s, "motor ports", motors);
+        appendList(s, "encoder ports", encoders);
+        return s.toString();
+    }
+
+    private static void appendList(StringBuilder b, String what, int[] atPort) {
+        int first = b.length();
+        for (int p = 0; p < atPort.length; p++) {
+            if (atPort[p] != 0) {
+                b.append(b.length() == first ? (first > 0 ? "; " : "") + what + " " : ", ").append(p + 1);
+            }
         }
     }
 
@@ -404,7 +476,11 @@ public class Device {
             pwmValues[i] = pwms.get(i).get_value();
         }
         WireFormat.encodeWrite(id, pwmValues, nPwm, torquesByPort, nMotors, writeBuffer);
-        board.send(writeBuffer, writeBuffer.length);
+        boolean nonZero = false;
+        for (int i = 0; i < nMotors; i++) {
+            nonZero |= torquesByPort[i] != 0f;
+        }
+        board.sendTorques(writeBuffer, writeBuffer.length, nonZero);
     }
 
     private Pwm pwmAt(String op, int pin) {

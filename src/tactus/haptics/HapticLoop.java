@@ -205,11 +205,20 @@ public final class HapticLoop implements AutoCloseable {
         torqueGain = gain;
     }
 
-    /** Sets the largest joint torque in N m (> 0; default 0.123, the firmware's limit); larger ones are scaled down. */
+    /**
+     * Sets the largest joint torque in N m (0 < limit <= 0.123; default 0.123, the firmware's clip); when a
+     * joint torque is larger, both are scaled down by the same factor, so the force keeps its direction. A
+     * limit above the firmware's clip is refused: the firmware would clip each motor alone and turn the force.
+     */
     public void setTorqueLimit(double nm) {
         beforeStart("setTorqueLimit");
         if (!(nm > 0) || !Double.isFinite(nm)) {
             throw new IllegalArgumentException("HapticLoop.setTorqueLimit: limit must be a finite number > 0 N m, got " + nm);
+        }
+        if (nm > BoardModel.MAX_TORQUE) {
+            throw new IllegalArgumentException("HapticLoop.setTorqueLimit: limit " + nm + " N m is above the firmware's "
+                    + "clip of " + BoardModel.MAX_TORQUE + " N m, which clips each motor alone and turns the force; "
+                    + "use a limit up to " + BoardModel.MAX_TORQUE + " N m");
         }
         torqueLimit = nm;
     }

@@ -10,7 +10,11 @@ import java.util.concurrent.locks.LockSupport;
  */
 public interface Transport {
 
-    /** Writes length bytes in one operation (a command must never be split across writes). */
+    /**
+     * Writes length bytes in one operation (a command must never be split across writes). Never waits without
+     * a bound: when the other side stops taking bytes, the write fails with an IOException after a short time
+     * (a quarter of a second for {@link SerialTransport}) instead of blocking or spinning.
+     */
     void write(byte[] data, int offset, int length) throws IOException;
 
     /** Number of bytes that can be read now without waiting; throws if the link is gone. */

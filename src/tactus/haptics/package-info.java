@@ -9,6 +9,9 @@
  * {@link tactus.haptics.MotorGuard} process that zeroes the motors if the JVM ends without closing the board.
  *
  * <p>A sketch written for hAPI 2.x ports by deleting the hAPI {@code .java} files from its folder and
- * adding {@code import tactus.haptics.*;}. The board emulator lives in {@code tactus.haptics.emulator}.
+ * adding {@code import tactus.haptics.*;}. Such a sketch keeps a safety net without calling anything new:
+ * the {@link tactus.haptics.Board} zeroes the motors when its torque writes stop (50 ms by default), declares
+ * a board that stops reading lost within a second, never lets a write block without a bound, and prints each
+ * kind of failure once where it happens. The board emulator lives in {@code tactus.haptics.emulator}.
  */
 package tactus.haptics;

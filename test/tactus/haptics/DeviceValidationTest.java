@@ -80,4 +80,38 @@ class DeviceValidationTest {
         refused(IllegalStateException.class, "already set up", () -> new Device((byte) 3, board).device_set_parameters());
         assertEquals(1, emulator.setups());
     }
+
+    @Test
+    void aSecondDeviceOnTheSamePortsIsRefusedNamingBothIdsAndThePorts() {
+        Device first = new Device((byte) 3, board);
+        HaplyPreset.HAPLY_2018.configure(first);
+        first.device_set_parameters();
+        Device second = new Device((byte) 7, board);
+        second.add_actuator(1, 0, 1);
+        second.add_encoder(1, 0, 180, 13824, 1);
+        IllegalStateException e = assertThrows(IllegalStateException.class, second::device_set_parameters);
+        String m = e.getMessage();
+        assertTrue(m.contains("id 3") && m.contains("id 7"), m);
+        assertTrue(m.contains("motor ports 1") && m.contains("encoder ports 1"), m);
+        assertTrue(m.contains("emulator"), "names the board's port: " + m);
+        assertEquals(1, emulator.setups(), "no second setup was sent");
+        assertEquals(3, emulator.configuredId(), "the ports stay with id 3");
+        // the first device keeps working
+        first.set_actuator_torque(1, 0.05f);
+        first.device_write_torques();
+        first.device_read_data();
+        assertEquals(0, board.idMismatches());
+        assertTrue(emulator.duty(1) > 0);
+    }
+
+    @Test
+    void aSecondDeviceOnOtherPortsIsRefusedTooBecauseASetupClearsEveryAssignment() {
+        Device first = new Device((byte) 3, board);
+        first.add_actuator(1, 0, 1);
+        first.device_set_parameters();
+        Device second = new Device((byte) 7, board);
+        second.add_actuator(1, 0, 2);
+        refused(IllegalStateException.class, "clear its assignments", second::device_set_parameters);
+        assertEquals(1, emulator.setups());
+    }
 }

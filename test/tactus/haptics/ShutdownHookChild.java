@@ -15,6 +15,7 @@ public final class ShutdownHookChild {
 
     public static void main(String[] args) throws Exception {
         Board board = new Board(args[0], 0);
+        board.setTorqueWatchdogMillis(0);   // the torque is written once and held: this tests the hook alone
         Device d = new Device((byte) 3, board);
         HaplyPreset.HAPLY_2018.configure(d);
         d.device_set_parameters();

@@ -312,7 +312,12 @@ public final class BoardEmulator implements AutoCloseable {
         return firmware.replies;
     }
 
-    /** The id of the configured device, or -1. */
+    /** True once the emulated firmware has stopped as after a HardFault (an id-0 write read an encoder never set up). */
+    public synchronized boolean hasFaulted() {
+        return firmware.hardFault();
+    }
+
+        /** The id of the configured device, or -1. */
     public synchronized int configuredId() {
         return firmware.configuredId();
     }

@@ -9,8 +9,11 @@ import tactus.haptics.WireFormat;
  * as 0xFF); the encoder-parameter and torque blocks wait for their bytes; the k-th rotation byte lands in
  * port k's slot whatever the mask; a reset clears assignments but not the motor duty; a setup zeroes the
  * duty of the ports it configures and presets the encoders at the current pose; a write for another id than
- * the configured one is answered with its id alone and its payload is then read as commands; unknown bytes
- * are dropped one at a time. One configured device at a time.
+ * the configured one is answered with its id alone and its payload is then read as commands; a write with
+ * id 0 (the firmware's "unassigned" marker) claims every free PWM pin, free motor, free analog slot and free
+ * encoder, as the firmware does (reading an encoder that was never set up is a null pointer there: the
+ * emulated board then stops, as after a HardFault); unknown bytes are dropped one at a time. One configured
+ * device at a time.
  */
 final class Firmware {
     /** What the firmware drives and reads. */
@@ -34,6 +37,9 @@ final class Firmware {
     }
 
     private static final int SLOTS = 4;
+    /** Analog slots of the M0 firmware's table (A0..A4). */
+    private static final int M0_ANALOG_SLOTS = 5;
+    private static final int PWM_PINS = 14;
     private static final long BLOCK_WAIT_NANOS = 1_000_000_000L;
 
     private final BoardModel model;
@@ -55,7 +61,10 @@ final class Firmware {
     private int configuredId = -1;
     private int[] sensors = new int[0];     // analog n per reply slot
     private int[] pwmPins = new int[0];
-    private final int[] pwmPulse = new int[14];
+    private final int[] pwmPulse = new int[PWM_PINS];
+    private final boolean[] analogEverSetUp = new boolean[12];
+    private boolean claim;                  // the pending write has id 0 and claims the free slots
+    private boolean hardFault;
 
     // a command waiting for its float block
     private int pendingType = -1;
@@ -89,6 +98,10 @@ final class Firmware {
 
     /** One pass of the firmware loop: handles at most one command. Returns true if a byte was consumed. */
     boolean pass(long nowNanos) {
+        if (hardFault) {
+            in.take(new byte[256], 0, 256);   // a faulted board reads nothing: the bytes are lost
+            return false;
+        }
         if (pendingType >= 0) {
             return continueBlock(nowNanos);
         }
@@ -197,6 +210,10 @@ final class Firmware {
 
     private void startWrite(long now) {
         int id = readNow();
+        if (id == 0 && configuredId != 0) {
+            startClaimingWrite(now);
+            return;
+        }
         if (id != configuredId) {
             foreignWrites++;
             out.write(new byte[] {(byte) id}, 0, 1);
@@ -204,6 +221,7 @@ final class Firmware {
             return;                          // the payload is read as commands from here on
         }
         pendingId = id;
+        claim = false;
         for (int pin : pwmPins) {
             pwmPulse[pin] = readNow();
         }
@@ -214,6 +232,33 @@ final class Firmware {
             }
         }
         startBlock(WireFormat.WRITE, 4 * motors, now);
+    }
+
+    /** A write with id 0: every slot no device holds answers to it (id 0 is the firmware's "unassigned"). */
+    private void startClaimingWrite(long now) {
+        pendingId = 0;
+        claim = true;
+        for (int pin = 0; pin < PWM_PINS; pin++) {
+            if (!contains(pwmPins, pin)) {
+                pwmPulse[pin] = readNow();
+            }
+        }
+        int motors = 0;
+        for (int p = 0; p < model.ports(); p++) {
+            if (!motorOn[p]) {
+                motors++;
+            }
+        }
+        startBlock(WireFormat.WRITE, 4 * motors, now);
+    }
+
+    private static boolean contains(int[] values, int v) {
+        for (int x : values) {
+            if (x == v) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private void startBlock(int type, int need, long now) {
@@ -281,6 +326,9 @@ final class Firmware {
             }
         }
         sensors = pendingSensors;
+        for (int n : sensors) {
+            analogEverSetUp[n] = true;
+        }
         pwmPins = pendingPwm;
         setups++;
     }
@@ -289,7 +337,10 @@ final class Firmware {
         writes++;
         int k = 0;
         for (int p = 0; p < SLOTS; p++) {
-            if (!motorOn[p]) {
+            if (claim ? p >= model.ports() || motorOn[p] || motorMount[p] < 0 : !motorOn[p]) {
+                if (claim && p < model.ports() && !motorOn[p]) {
+                    k++;   // a free motor never set up: its float is read, its pins are not wired
+                }
                 continue;
             }
             float tau = WireFormat.getFloat(block, 4 * k++);
@@ -301,7 +352,8 @@ final class Firmware {
                 duty[p] = 0;
             } else {
                 float mag = Math.min(Math.abs(tau), (float) BoardModel.MAX_TORQUE);
-                duty[p] = (int) ((float) (model.pwmResolution() * mag) / (float) BoardModel.MAX_TORQUE);
+                // the product is a float, the division by the firmware's double constant MAX_TORQUE is in double
+                duty[p] = (int) ((float) (model.pwmResolution() * mag) / BoardModel.MAX_TORQUE);
             }
             boolean low = (tau > 0) ^ (rot == 1);
             dirHigh[p] = !low;
@@ -310,7 +362,58 @@ final class Firmware {
         for (int p = 0; p < SLOTS; p++) {
             hw.motorTorque(p + 1, physicalTorque(p));
         }
-        reply();
+        if (claim) {
+            replyToClaim();
+        } else {
+            reply();
+        }
+    }
+
+    /** The reply to an id-0 write: id 0, then every free analog slot, then every free encoder. */
+    private void replyToClaim() {
+        int analogSlots = model == BoardModel.M0 ? M0_ANALOG_SLOTS : model.maxAnalogPin() + 1;
+        int n = 0;
+        for (int a = 0; a < analogSlots; a++) {
+            if (!contains(sensors, a)) {
+                n++;
+            }
+        }
+        for (int p = 0; p < model.ports(); p++) {
+            if (!encOn[p]) {
+                if (encMount[p] < 0) {
+                    hardFault = true;   // the firmware reads an encoder object that was never created
+                    return;
+                }
+                n++;
+            }
+        }
+        int len = WireFormat.replyLength(n);
+        if (replyBuffer.length < len) {
+            replyBuffer = new byte[len];
+        }
+        byte[] r = replyBuffer;
+        r[0] = 0;
+        int k = 1;
+        for (int a = 0; a < analogSlots; a++) {
+            if (!contains(sensors, a)) {
+                boolean read = analogEverSetUp[a] && (model != BoardModel.M0 || a == 1 || a == 2);
+                WireFormat.putFloat(r, k, read ? (float) hw.analog(a) : 0f);
+                k += 4;
+            }
+        }
+        for (int p = 0; p < model.ports(); p++) {
+            if (!encOn[p]) {
+                WireFormat.putFloat(r, k, angle(p));
+                k += 4;
+            }
+        }
+        out.write(r, 0, len);
+        replies++;
+    }
+
+    /** True once the emulated firmware has faulted (an id-0 write read an encoder never set up). */
+    boolean hardFault() {
+        return hardFault;
     }
 
     private void reply() {

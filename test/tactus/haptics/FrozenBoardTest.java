@@ -1,0 +1,217 @@
+package tactus.haptics;
+
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.time.Duration;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.emulator.PtyPair;
+
+/**
+ * A board that stops reading while its port stays open (socat alive, the emulator's end closed): writes fill
+ * the driver's buffer and then must neither spin nor block for ever.
+ */
+class FrozenBoardTest {
+
+    @Test
+    void aWriteThatCannotCompleteFailsWithinTheWriteTimeoutWithoutSpinning() throws Exception {
+        Assumptions.assumeTrue(PtyPair.socatAvailable(), "socat is not installed");
+        try (PtyPair pty = PtyPair.open()) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            emulator.serve(SerialTransport.open(pty.boardEnd(), 0));
+            SerialTransport host = SerialTransport.open(pty.hostEnd(), 0);
+            emulator.unplug();   // the board side is gone, the pty pair stays
+            assertTrue(pty.isAlive());
+            ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+            byte[] chunk = new byte[4096];
+            long[] stalledFor = new long[1];
+            long[] cpu = new long[1];
+            IOException e = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> {
+                long cpu0 = threads.getCurrentThreadCpuTime();
+                try {
+                    for (int i = 0; i < 10_000; i++) {   // at most 40 MB: the buffer is far smaller
+                        long t0 = System.nanoTime();
+                        try {
+                            host.write(chunk, 0, chunk.length);
+                        } catch (IOException failed) {
+                            stalledFor[0] = System.nanoTime() - t0;
+                            return failed;
+                        }
+                    }
+                    return null;
+                } finally {
+                    cpu[0] = threads.getCurrentThreadCpuTime() - cpu0;
+                }
+            }, "a write to a board that stopped reading must end");
+            assertNotNull(e, "the writes must fail once the buffer is full");
+            assertTrue(e.getMessage().contains("did not complete within " + SerialTransport.WRITE_TIMEOUT_MS), e.getMessage());
+            long stalledMs = stalledFor[0] / 1_000_000;
+            assertTrue(stalledMs >= SerialTransport.WRITE_TIMEOUT_MS - 10 && stalledMs < 1_000,
+                    "the blocked write ends after the write timeout, took " + stalledMs + " ms");
+            // filling the buffer costs a few ms; a spinning write would take the whole stall as CPU
+            assertTrue(cpu[0] < stalledFor[0] / 2, "CPU " + cpu[0] / 1_000_000 + " ms during a stall of " + stalledMs + " ms");
+            assertThrows(IOException.class, () -> host.write(chunk, 0, 1), "the stalled port stays closed");
+            System.out.println("FrozenBoardTest: blocked write failed after " + stalledMs + " ms, thread CPU "
+                    + cpu[0] / 1_000_000 + " ms");
+            host.close();
+        }
+    }
+
+    @Test
+    void theHapticLoopStopsOnAFrozenBoardEvenWithALongLinkTimeout() throws Exception {
+        Assumptions.assumeTrue(PtyPair.socatAvailable(), "socat is not installed");
+        try (PtyPair pty = PtyPair.open()) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            emulator.serve(SerialTransport.open(pty.boardEnd(), 0));
+            Board board = new Board(pty.hostEnd(), 0);
+            Device device = new Device((byte) 3, board);
+            HaplyPreset.HAPLY_2018.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new ConstantForce(0.2, 0.1));
+            loop.setLinkTimeoutMillis(600_000);   // the loop's own stale-reply limit would never fire
+            loop.setWatchdogMillis(1000);
+            loop.start();
+            try {
+                long deadline = System.nanoTime() + 10_000_000_000L;
+                while (loop.ticks() < 200 && System.nanoTime() < deadline) {
+                    Thread.sleep(5);
+                }
+                assertTrue(loop.ticks() >= 200, "the loop runs");
+                long frozenAt = System.nanoTime();
+                emulator.unplug();
+                assertTimeoutPreemptively(Duration.ofSeconds(8), () -> {
+                    while (loop.isRunning()) {
+                        Thread.sleep(5);
+                    }
+                }, "the loop must stop on a board that stopped reading");
+                long ms = (System.nanoTime() - frozenAt) / 1_000_000;
+                assertNotNull(loop.failure());
+                assertTrue(loop.failure().contains("stopped reading"), loop.failure());
+                assertTrue(board.isClosed());
+                System.out.println("FrozenBoardTest: the haptic loop stopped " + ms + " ms after the board froze: " + loop.failure());
+                assertNotNull(board.lostReason(), "the board says why");
+            } finally {
+                pty.close();   // first: a write stuck in the port (the defect) then fails instead of hanging close()
+                loop.close();
+            }
+        }
+    }
+
+    @Test
+    void closeNeverWaitsForAWriteStuckInTheTransport() throws Exception {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        StuckTransport link = new StuckTransport(emulator.connect());
+        Board board = new Board(link);
+        Device device = new Device((byte) 3, board);
+        HaplyPreset.HAPLY_2018.configure(device);
+        device.device_set_parameters();
+        device.set_actuator_torque(1, 0.05f);
+        link.freeze();
+        RuntimeException[] failure = new RuntimeException[1];
+        Thread writer = new Thread(() -> {
+            try {
+                device.device_write_torques();   // blocks in the transport, holding the board
+            } catch (RuntimeException e) {
+                failure[0] = e;
+            }
+        }, "stuck-writer");
+        writer.setDaemon(true);
+        writer.start();
+        assertTrue(link.stuck.await(5, java.util.concurrent.TimeUnit.SECONDS), "the write is stuck");
+        long t0 = System.nanoTime();
+        assertTimeoutPreemptively(Duration.ofSeconds(5), board::close, "close() must not wait for the stuck write");
+        long ms = (System.nanoTime() - t0) / 1_000_000;
+        writer.join(2000);
+        assertTrue(!writer.isAlive(), "closing the transport ends the stuck write");
+        assertTrue(failure[0] instanceof HaplyLinkException, "the writer learns the link is gone: " + failure[0]);
+        assertTrue(board.isClosed());
+        assertTrue(ms < 2000, "close() took " + ms + " ms");
+        System.out.println("FrozenBoardTest: close() beside a stuck write returned after " + ms + " ms");
+    }
+
+    /** A transport whose writes, once frozen, block until the transport is closed (as a blocked serial write). */
+    private static final class StuckTransport implements Transport {
+        private final Transport inner;
+        final java.util.concurrent.CountDownLatch stuck = new java.util.concurrent.CountDownLatch(1);
+        private final java.util.concurrent.CountDownLatch closed = new java.util.concurrent.CountDownLatch(1);
+        private volatile boolean frozen;
+
+        StuckTransport(Transport inner) {
+            this.inner = inner;
+        }
+
+        void freeze() {
+            frozen = true;
+        }
+
+        @Override
+        public void write(byte[] data, int offset, int length) throws IOException {
+            if (frozen) {
+                stuck.countDown();
+                try {
+                    closed.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                throw new IOException("closed while the write was blocked");
+            }
+            inner.write(data, offset, length);
+        }
+
+        @Override
+        public int available() throws IOException {
+            return inner.available();
+        }
+
+        @Override
+        public int read(byte[] buffer, int offset, int length) throws IOException {
+            return inner.read(buffer, offset, length);
+        }
+
+        @Override
+        public void close() {
+            closed.countDown();
+            inner.close();
+        }
+
+        @Override
+        public String describe() {
+            return "stuck transport";
+        }
+    }
+
+    /** A model stand-in whose avatar pushes with a constant force (model units). */
+    private static final class ConstantForce implements AvatarLink {
+        private final double fx;
+        private final double fy;
+
+        ConstantForce(double fx, double fy) {
+            this.fx = fx;
+            this.fy = fy;
+        }
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            // the force does not depend on the position
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = fx;
+            out[1] = fy;
+            out[2] = 0;
+        }
+
+        @Override
+        public void step(int n) {
+            // nothing to step
+        }
+    }
+}
