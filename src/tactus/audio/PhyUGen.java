@@ -84,6 +84,12 @@ public class PhyUGen extends UGen {
     private boolean halted;
     private boolean retryStep;
     private boolean outputSilent;
+    private int haltCheck;
+    /**
+     * Steps between two looks for a divergence that a DivergenceListener was told of (a power of 2). Until then the
+     * frozen model's positions, beyond the divergence limit, are written as 0 anyway (see finite()).
+     */
+    private static final int HALT_CHECK_SAMPLES = 16;
     /** The binding whose accumulator the audio thread has emptied, and the one it lost. */
     private AvatarBinding avatarStarted;
     private AvatarBinding avatarGone;
@@ -520,7 +526,7 @@ public class PhyUGen extends UGen {
             silenceModel(diverged, t);
             return false;
         }
-        if (m.isHalted()) {
+        if ((++haltCheck & (HALT_CHECK_SAMPLES - 1)) == 0 && m.isHalted()) {
             silenceModel(true, null); // diverged, and a DivergenceListener was told
             return false;
         }
