@@ -9,12 +9,14 @@ import java.nio.charset.StandardCharsets;
 final class StderrCapture {
     private final PrintStream before;
     private final ByteArrayOutputStream copy = new ByteArrayOutputStream();
+    private final java.util.Set<String> writers = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     private StderrCapture() {
         before = System.err;
         OutputStream tee = new OutputStream() {
             @Override
             public void write(int b) {
+                writers.add(Thread.currentThread().getName());
                 before.write(b);
                 synchronized (copy) {
                     copy.write(b);
@@ -23,6 +25,7 @@ final class StderrCapture {
 
             @Override
             public void write(byte[] b, int off, int len) {
+                writers.add(Thread.currentThread().getName());
                 before.write(b, off, len);
                 synchronized (copy) {
                     copy.write(b, off, len);
@@ -42,6 +45,11 @@ final class StderrCapture {
         synchronized (copy) {
             return copy.toString(StandardCharsets.UTF_8);
         }
+    }
+
+    /** @return the names of the threads that printed on standard error since {@link #start()}. */
+    java.util.Set<String> writers() {
+        return writers;
     }
 
     /** Puts standard error back. */
