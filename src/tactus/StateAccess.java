@@ -14,25 +14,39 @@ import tactus.engine.StepPlan;
 final class StateAccess {
     private final ModelCore c;
     private final Engine engine;
-    private final double[] tmp = new double[3];
+    /**
+     * Scratch of the realtime owner (which takes no lock), and of the threads that hold the lock: one each, so that
+     * a sketch's read never writes what the audio thread is reading (a wrong audio sample otherwise).
+     */
+    private final double[] ownerTmp = new double[3];
+    private final double[] lockedTmp = new double[3];
 
     StateAccess(ModelCore core) {
         this.c = core;
         this.engine = core.engine;
     }
 
+    /** @return the scratch of the calling thread: the realtime owner's, or the lock holders'. */
+    private double[] tmp() {
+        Ownership o = c.own;
+        return o != null && o.isOwnerThread() ? ownerTmp : lockedTmp;
+    }
+
     Vect3D position(int id, Vect3D out) {
+        double[] tmp = tmp();
         engine.position(id, tmp);
         return out.set(tmp[0], tmp[1], tmp[2]);
     }
 
     Vect3D velocity(int id, Vect3D out) {
+        double[] tmp = tmp();
         engine.displacement(id, tmp);
         UnitScale u = c.units();
         return out.set(u.velocityOut(tmp[0]), u.velocityOut(tmp[1]), u.velocityOut(tmp[2]));
     }
 
     Vect3D force(int id, Vect3D out) {
+        double[] tmp = tmp();
         engine.force(id, tmp);
         UnitScale u = c.units();
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
@@ -103,6 +117,7 @@ final class StateAccess {
      */
     long takeAvatarForceCounted(int id, Vect3D out) {
         Ownership o = c.own;
+        double[] tmp = tmp();
         long n;
         double x;
         double y;
