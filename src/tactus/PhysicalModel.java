@@ -424,15 +424,66 @@ public class PhysicalModel {
      * (in units per second) are kept. In ALGO_UNITS coefficients are per step and stay as they are. Under
      * {@link StabilityPolicy#THROW} a rate that makes the model unstable is refused and everything is restored.
      *
+     * <p>While a realtime driver holds the rate ({@link #holdSimRate(Object)}: a {@code tactus.audio.PhyUGen}
+     * playing the model, which must step at its output's rate), the change is refused with an
+     * {@link IllegalStateException} that names the driver and the rates, and the model is left unchanged.
+     *
      * @param rate steps per second, &gt; 0
      */
     public void setSimRate(int rate) {
         if (rate <= 0) {
             throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
         }
+        Object holder = simRateHolder;
+        if (holder != null && simRateSession == core.own) {
+            throw new IllegalStateException("setSimRate(" + rate + "): refused, the model stays at " + getSimRate()
+                    + " steps/s: " + holder);
+        }
+        changeSimRate(rate);
+    }
+
+    private void changeSimRate(int rate) {
+        if (rate <= 0) {
+            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
+        }
         structuralDo(() -> {
             core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
         });
+    }
+
+    /** The realtime driver that fixes the rate (see {@link #holdSimRate(Object)}), and the session it holds it for. */
+    private volatile Object simRateHolder;
+    private volatile Object simRateSession;
+
+    /**
+     * Fixes the simulation rate for the driver that steps the model in realtime and dictates its rate: a
+     * {@code tactus.audio.PhyUGen} calls it, since the model must step at its output's rate times its
+     * oversampling. Until realtime stepping ends ({@link #endRealtimeStepping()}), {@link #setSimRate(int)}
+     * throws an {@link IllegalStateException} whose message ends with {@code holder.toString()} (say who holds
+     * the rate and how to change it) and leaves the model unchanged; the driver changes the rate through the
+     * returned setter. A later call hands the rate to another driver.
+     *
+     * @param holder the driver, described in the refusal by its {@code toString()}
+     * @return the driver's rate setter, in steps per second (&gt; 0; same checks and effects as setSimRate)
+     * @throws IllegalStateException if the model is not stepped in realtime
+     */
+    public java.util.function.IntConsumer holdSimRate(Object holder) {
+        if (holder == null) {
+            throw new IllegalArgumentException("holdSimRate: the holder must not be null");
+        }
+        enter();
+        try {
+            Ownership o = core.own;
+            if (o == null) {
+                throw new IllegalStateException("holdSimRate: the model is not stepped in realtime; call "
+                        + "beginRealtimeStepping() first");
+            }
+            simRateSession = o;
+            simRateHolder = holder;
+        } finally {
+            exit();
+        }
+        return this::changeSimRate;
     }
 
     /** @return the display rate, in frames per second. */

@@ -4,7 +4,8 @@ package tactus.audio;
  * One signal that a {@link PhyUGen} hears: a mass's displacement along an axis (from where it was when the
  * point was added), or an interaction's elongation or tension, each scaled by a gain and placed in the
  * stereo field by an equal-power pan. Gain and pan may be changed from any thread; the audio thread sees
- * both change together.
+ * both change together. A point whose element has left the model outputs 0 ({@link #isSilent()}) and sounds
+ * again once an element of that name is back.
  */
 public final class ListeningPoint {
     /** What a listening point reads. */
@@ -41,6 +42,8 @@ public final class ListeningPoint {
     SteppedModel boundTo;
     int handle;
     double origin;
+    /** True while the element cannot be read (it left the model); written by the audio thread only. */
+    private volatile boolean silent;
 
     ListeningPoint(Kind kind, String element, int axis, double gain, double pan) {
         this.kind = kind;
@@ -104,7 +107,7 @@ public final class ListeningPoint {
         switch (kind) {
             case MASS_DISPLACEMENT:
                 handle = model.resolveMass(element);
-                origin = model.massPosition(handle, axis);
+                origin = model.massPositionForSetup(handle, axis);
                 break;
             case LINK_ELONGATION:
                 handle = model.resolveLink(element, false);
@@ -114,6 +117,23 @@ public final class ListeningPoint {
                 break;
         }
         boundTo = model;
+    }
+
+    /**
+     * @return true while this point outputs 0 because its mass or interaction is no longer in the model (removed,
+     *     or the model cleared); it sounds again, from its first origin, once an element with its name is back
+     */
+    public boolean isSilent() {
+        return silent;
+    }
+
+    void setSilent(boolean s) {
+        silent = s;
+    }
+
+    /** Asks the model whether the element is back under its name; audio thread, rarely. */
+    boolean reattach(SteppedModel model) {
+        return kind == Kind.MASS_DISPLACEMENT ? model.reattachMass(handle) : model.reattachLink(handle);
     }
 
     /** Reads the raw value (before gain) from the bound model; audio thread only. */

@@ -34,7 +34,20 @@ import tactus.PhysicalModel;
  *
  * <p>Threads: the audio thread steps the model. Listening points, gains, pans, the DC blocker and the
  * oversampling factor may be changed from any thread; the audio thread picks up each change whole at the
- * start of a sample. The haptic thread talks to the model only through an {@link AvatarExchange}.
+ * start of a sample. The haptic thread talks to the model only through an {@link AvatarExchange}. While it plays
+ * a {@link PhysicalModel}, the PhyUGen holds the model's rate: {@code setSimRate} from the sketch is refused
+ * (the rate follows the output, see {@link #sampleRateChanged()} and {@link #setOversampling(int)}).
+ *
+ * <p>Mistakes never reach Minim (whose output loop has no catch: one exception would silence every UGen on the
+ * output for good). Nothing thrown while stepping or reading the model escapes {@link #uGenerate(float[])}: a
+ * diverged model, or one whose steps throw, makes the whole output silent ({@link #isSilenced()}); a listening
+ * point whose element left the model outputs 0 while the others keep sounding ({@link ListeningPoint#isSilent()});
+ * an avatar that left the model gets zero force ({@link #isAvatarLost()}). Each is said once on standard error
+ * (from a thread of its own, not the audio thread), with how to recover, and undone as soon as the model is fixed
+ * (the divergence cleared, the element added again under its name). {@link #getLastError()} keeps the cause. A
+ * subclass's own {@code uGenerate} runs its own code: {@link #stepModel()} and {@link #mix()} are guarded the same
+ * way, but an exception its own code throws (including a {@code DivergenceException} from a direct
+ * {@code mdl.computeStep()}) still reaches Minim, since Minim's {@code tick} is final.
  */
 public class PhyUGen extends UGen {
     /** Default pole of the output DC blocker: 0.95, as in the paper's sketches (corner about 343 Hz at 44.1 kHz). */
@@ -53,14 +66,62 @@ public class PhyUGen extends UGen {
     private volatile boolean forceMono;
     private final DcBlocker dcLeft = new DcBlocker(DEFAULT_DC_COEFFICIENT);
     private final DcBlocker dcRight = new DcBlocker(DEFAULT_DC_COEFFICIENT);
-    private volatile AvatarExchange exchange;
-    private String avatarName;
-    private int avatar = -1;
+    /** The attached avatar, replaced whole; null when none. */
+    private volatile AvatarBinding avatarBinding;
     private final double[] target = new double[3];
     private final double[] force = new double[3];
     private double mixLeft;
     private double mixRight;
     private double mixMono;
+
+    /** Samples between two looks for what failed (a retry of a failing step, an element added again): 46 ms at 44.1 kHz. */
+    static final int RECHECK_SAMPLES = 2048;
+    private final FaultState faults = new FaultState(this);
+    private final RateHolder rateHolder = new RateHolder();
+    // the audio thread's own fault bookkeeping
+    private int sinceRecheck;
+    private boolean modelSilent;
+    private boolean halted;
+    private boolean retryStep;
+    private boolean outputSilent;
+    private int haltCheck;
+    /**
+     * Steps between two looks for a divergence that a DivergenceListener was told of (a power of 2). Until then the
+     * frozen model's positions, beyond the divergence limit, are written as 0 anyway (see finite()).
+     */
+    private static final int HALT_CHECK_SAMPLES = 16;
+    /** The binding whose accumulator the audio thread has emptied, and the one it lost. */
+    private AvatarBinding avatarStarted;
+    private AvatarBinding avatarGone;
+
+    /** An avatar attached with {@link #attachAvatar(String, AvatarExchange)}: its name, handle and exchange. */
+    private static final class AvatarBinding {
+        final String name;
+        final int handle;
+        final AvatarExchange exchange;
+
+        AvatarBinding(String name, int handle, AvatarExchange exchange) {
+            this.name = name;
+            this.handle = handle;
+            this.exchange = exchange;
+        }
+    }
+
+    /** What {@code setSimRate} names when it refuses a change: this PhyUGen, its rates and what to do instead. */
+    private final class RateHolder {
+        @Override
+        public String toString() {
+            Class<?> c = PhyUGen.this.getClass();
+            String n = c == PhyUGen.class || c.getSimpleName().isEmpty() ? "PhyUGen"
+                    : c.getSimpleName() + " (a PhyUGen)";
+            float out = outputRate();
+            int k = oversampling();
+            return n + " plays this model and sets its rate to its output's rate x its oversampling ("
+                    + Math.round(out) + " Hz x " + k + " = " + Math.round(out * k) + " steps/s), which a different "
+                    + "model rate would detune. To change it, open the audio output at the rate you want "
+                    + "(Minim.getLineOut(type, bufferSize, sampleRate)) or call setOversampling(k) on the PhyUGen";
+        }
+    }
 
     /** Decimation state for one oversampling factor, swapped in whole. */
     private static final class Oversampler {
@@ -88,6 +149,7 @@ public class PhyUGen extends UGen {
         }
         this.nominalRate = sampleRate;
         this.mdl = new PhysicalModel(sampleRate);
+        FaultReporter.ensureStarted();
     }
 
     /** The direct way: plays a model built elsewhere; its current rate is taken as the nominal audio rate. */
@@ -98,6 +160,7 @@ public class PhyUGen extends UGen {
         }
         this.mdl = model;
         this.nominalRate = model.getSimRate();
+        FaultReporter.ensureStarted();
         bind();
     }
 
@@ -109,6 +172,7 @@ public class PhyUGen extends UGen {
         }
         this.model = model;
         this.nominalRate = model.stepRate();
+        FaultReporter.ensureStarted();
     }
 
     // ------------------------------------------------------------------ binding (never on the audio path in steady state)
@@ -128,12 +192,13 @@ public class PhyUGen extends UGen {
         if (mdl == null || mdl == boundModel) {
             return;
         }
-        SteppedModel m = new PhysicalModelStepper(mdl);
+        SteppedModel m = new PhysicalModelStepper(mdl, rateHolder);
         for (ListeningPoint p : points) {
             p.bind(m);
         }
-        if (avatarName != null) {
-            avatar = m.resolveAvatar(avatarName);
+        AvatarBinding b = avatarBinding;
+        if (b != null) {
+            avatarBinding = new AvatarBinding(b.name, m.resolveAvatar(b.name), b.exchange);
         }
         model = m;
         boundModel = mdl;
@@ -284,23 +349,43 @@ public class PhyUGen extends UGen {
         }
         SteppedModel m = steppedModel();
         int handle = m.resolveAvatar(avatarName);
-        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-        sampleLock.lock();
-        try {
-            m.takeAvatarForce(handle, force); // start from an empty accumulator
-            this.avatarName = avatarName;
-            this.avatar = handle;
-            this.exchange = exchange;
-        } finally {
-            sampleLock.unlock();
-        }
+        // the audio thread empties the avatar's force accumulator before its first step with this binding
+        avatarBinding = new AvatarBinding(avatarName, handle, exchange);
+        faults.avatarReset();
     }
 
     /** Uncouples the avatar; the model keeps its last target. */
     public synchronized void detachAvatar() {
-        exchange = null;
-        avatarName = null;
-        avatar = -1;
+        avatarBinding = null;
+        faults.avatarReset();
+    }
+
+    // ------------------------------------------------------------------ faults
+
+    /**
+     * @return true while the whole output is silent because the model cannot step: it diverged (until
+     *     {@code clearDivergence()}), or its steps throw (retried about 20 times a second)
+     */
+    public boolean isSilenced() {
+        return faults.isSilenced();
+    }
+
+    /**
+     * @return the last error the audio thread met (a step, a listening point, the avatar, or this PhyUGen), or null
+     *     if none; kept after the PhyUGen recovers
+     */
+    public Throwable getLastError() {
+        return faults.lastError();
+    }
+
+    /** @return true while the attached avatar has left the model: its exchange gets zero force until it is back. */
+    public boolean isAvatarLost() {
+        return faults.isAvatarLost();
+    }
+
+    /** @return how many faults the audio thread has met (the model silenced, a point or the avatar lost, a bug). */
+    public long getFaultCount() {
+        return faults.faultCount();
     }
 
     // ------------------------------------------------------------------ UGen
@@ -321,10 +406,24 @@ public class PhyUGen extends UGen {
     /**
      * Steps the model (k times with oversampling), mixes the listening points, DC-blocks and writes them:
      * channel 0 left and 1 right in stereo, the mono mix in every channel otherwise (and in channels past 1).
+     * Never throws (see the class comment): what cannot be stepped or read is written as 0.
      */
     @Override
     protected void uGenerate(float[] channels) {
+        try {
+            generate(channels);
+        } catch (Throwable t) { // nothing may reach Minim's output loop
+            faults.unexpected(t);
+            silence(channels);
+        }
+    }
+
+    private void generate(float[] channels) {
         SteppedModel m = steppedModel();
+        if (++sinceRecheck >= RECHECK_SAMPLES) {
+            sinceRecheck = 0;
+            recheck(m);
+        }
         Oversampler o = oversampler;
         boolean stereo = channels.length >= 2 && !forceMono;
         double left;
@@ -333,12 +432,20 @@ public class PhyUGen extends UGen {
         sampleLock.lock();
         try {
             if (o == null) {
-                stepAndMix(m);
+                if (!stepGuarded(m)) {
+                    silence(channels);
+                    return;
+                }
+                mixPoints(m);
                 left = stereo ? mixLeft : mixMono;
                 right = mixRight;
             } else {
                 for (int i = 0; i < o.factor; i++) {
-                    stepAndMix(m);
+                    if (!stepGuarded(m)) {
+                        silence(channels);
+                        return;
+                    }
+                    mixPoints(m);
                     o.left.push(stereo ? mixLeft : mixMono);
                     o.right.push(mixRight);
                 }
@@ -348,6 +455,7 @@ public class PhyUGen extends UGen {
         } finally {
             sampleLock.unlock();
         }
+        outputSilent = false;
         if (dcEnabled) {
             double r = dcCoefficient;
             dcLeft.setCoefficient(r);
@@ -376,32 +484,170 @@ public class PhyUGen extends UGen {
         return Math.abs(v) < 1e9 ? (float) v : 0f;
     }
 
-    private void stepAndMix(SteppedModel m) {
-        stepOnce(m);
-        mixPoints(m);
-    }
-
-    private void stepOnce(SteppedModel m) {
-        AvatarExchange ex = exchange;
-        if (ex != null) {
-            if (ex.readPosition(target)) {
-                m.setAvatarTarget(avatar, target[0], target[1], target[2]);
+    /** Writes 0 to every channel; on the first silent sample, empties the filters so that nothing old rings on. */
+    private void silence(float[] channels) {
+        for (int c = 0; c < channels.length; c++) {
+            channels[c] = 0f;
+        }
+        if (!outputSilent) {
+            outputSilent = true;
+            dcLeft.reset(0);
+            dcRight.reset(0);
+            Oversampler o = oversampler;
+            if (o != null) {
+                o.left.reset(0);
+                o.right.reset(0);
             }
-            m.step();
-            m.takeAvatarForce(avatar, force);
-            ex.addForce(force[0], force[1], force[2]);
-        } else {
-            m.step();
         }
     }
 
+    /**
+     * One model step, guarded: a diverged model is not stepped until it is cleared; a step that throws silences
+     * the model until a retry (every {@link #RECHECK_SAMPLES} samples) succeeds.
+     *
+     * @return false when the model did not step and the output must be silent
+     */
+    private boolean stepGuarded(SteppedModel m) {
+        if (modelSilent) {
+            if (halted ? m.isHalted() : !retryStep) {
+                return false;
+            }
+            retryStep = false;
+        }
+        try {
+            stepOnce(m);
+        } catch (Throwable t) {
+            boolean diverged;
+            try {
+                diverged = m.isHalted();
+            } catch (Throwable ignored) {
+                diverged = false;
+            }
+            silenceModel(diverged, t);
+            return false;
+        }
+        if ((++haltCheck & (HALT_CHECK_SAMPLES - 1)) == 0 && m.isHalted()) {
+            silenceModel(true, null); // diverged, and a DivergenceListener was told
+            return false;
+        }
+        if (modelSilent) {
+            modelSilent = false;
+            halted = false;
+            faults.modelSoundsAgain();
+        }
+        return true;
+    }
+
+    private void silenceModel(boolean diverged, Throwable error) {
+        boolean wasSilent = modelSilent;
+        boolean wasHalted = halted;
+        modelSilent = true;
+        halted = diverged;
+        if (wasSilent && wasHalted == diverged) {
+            return; // a retry that failed the same way: said already
+        }
+        FaultNotice.Kind kind = !diverged ? FaultNotice.Kind.STEP_FAILED
+                : error == null || error instanceof tactus.DivergenceException ? FaultNotice.Kind.DIVERGED
+                : FaultNotice.Kind.LISTENER_THREW;
+        faults.modelSilenced(kind, error);
+    }
+
+    /** Every {@link #RECHECK_SAMPLES} samples: allows a retry of a failing step, and looks for lost elements again. */
+    private void recheck(SteppedModel m) {
+        if (modelSilent && !halted) {
+            retryStep = true;
+        }
+        for (ListeningPoint p : points) {
+            if (p.isSilent() && reattached(p, m)) {
+                p.setSilent(false);
+                faults.pointBack(p);
+            }
+        }
+        AvatarBinding b = avatarBinding;
+        if (b != null && b == avatarGone && reattached(b, m)) {
+            avatarGone = null;
+            avatarStarted = null; // empty its accumulator before the next step
+            faults.avatarBack(b.name);
+        }
+    }
+
+    private static boolean reattached(ListeningPoint p, SteppedModel m) {
+        try {
+            return p.reattach(m);
+        } catch (Throwable t) {
+            return false;
+        }
+    }
+
+    private static boolean reattached(AvatarBinding b, SteppedModel m) {
+        try {
+            return m.reattachAvatar(b.handle);
+        } catch (Throwable t) {
+            return false;
+        }
+    }
+
+    /** One step with the avatar exchange; only the step itself may throw (the avatar's failures are caught). */
+    private void stepOnce(SteppedModel m) {
+        AvatarBinding b = avatarBinding;
+        if (b == null) {
+            m.step();
+            return;
+        }
+        boolean drive = b != avatarGone;
+        if (drive) {
+            try {
+                if (b != avatarStarted) {
+                    m.takeAvatarForce(b.handle, force); // start from an empty accumulator
+                    avatarStarted = b;
+                }
+                if (b.exchange.readPosition(target)) {
+                    m.setAvatarTarget(b.handle, target[0], target[1], target[2]);
+                }
+            } catch (Throwable t) {
+                loseAvatar(b, t);
+                drive = false;
+            }
+        }
+        m.step();
+        if (drive) {
+            try {
+                m.takeAvatarForce(b.handle, force);
+            } catch (Throwable t) {
+                loseAvatar(b, t);
+                drive = false;
+            }
+        }
+        if (drive) {
+            b.exchange.addForce(force[0], force[1], force[2]);
+        } else {
+            b.exchange.addForce(0, 0, 0); // the avatar is gone: no force on the hand
+        }
+    }
+
+    private void loseAvatar(AvatarBinding b, Throwable t) {
+        avatarGone = b;
+        faults.avatarLost(b.name, t);
+    }
+
+    /** Mixes the points that can be read; a point whose read throws goes silent (once) and adds 0. */
     private void mixPoints(SteppedModel m) {
         ListeningPoint[] pts = points;
         double l = 0;
         double r = 0;
         double mono = 0;
         for (ListeningPoint p : pts) {
-            double v = p.read(m);
+            if (p.isSilent()) {
+                continue;
+            }
+            double v;
+            try {
+                v = p.read(m);
+            } catch (Throwable t) {
+                p.setSilent(true);
+                faults.pointLost(p, t);
+                continue;
+            }
             ListeningPoint.Gains g = p.gains();
             l += g.left * v;
             r += g.right * v;
@@ -413,30 +659,51 @@ public class PhyUGen extends UGen {
     }
 
     /**
-     * For subclasses that override {@link #uGenerate(float[])}: runs one model step with the avatar
-     * exchange (if any), under the model's sample lock.
+     * For subclasses that override {@link #uGenerate(float[])}: runs one model step with the avatar exchange (if
+     * any), under the model's sample lock. Never throws: a model that cannot step is left as it is (see
+     * {@link #isSilenced()}), and {@link #mix()} then gives 0.
      */
     protected final void stepModel() {
-        SteppedModel m = steppedModel();
-        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-        sampleLock.lock();
         try {
-            stepOnce(m);
-        } finally {
-            sampleLock.unlock();
+            SteppedModel m = steppedModel();
+            if (++sinceRecheck >= RECHECK_SAMPLES) {
+                sinceRecheck = 0;
+                recheck(m);
+            }
+            java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+            sampleLock.lock();
+            try {
+                stepGuarded(m);
+            } finally {
+                sampleLock.unlock();
+            }
+        } catch (Throwable t) {
+            faults.unexpected(t);
         }
     }
 
-    /** For subclasses: the mono mix of every listening point (gain applied, pan ignored) at the current step. */
+    /**
+     * For subclasses: the mono mix of every listening point (gain applied, pan ignored) at the current step; 0
+     * while the model is silenced, and 0 for a point that cannot be read. Never throws.
+     */
     protected final double mix() {
-        SteppedModel m = steppedModel();
-        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-        sampleLock.lock();
         try {
-            mixPoints(m);
-            return mixMono;
-        } finally {
-            sampleLock.unlock();
+            if (modelSilent) {
+                return 0;
+            }
+            SteppedModel m = steppedModel();
+            java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
+            sampleLock.lock();
+            try {
+                mixPoints(m);
+                double v = mixMono;
+                return Math.abs(v) < 1e9 ? v : 0;
+            } finally {
+                sampleLock.unlock();
+            }
+        } catch (Throwable t) {
+            faults.unexpected(t);
+            return 0;
         }
     }
 }

@@ -1,6 +1,7 @@
 package tactus.audio;
 
 import java.util.Arrays;
+import java.util.function.IntConsumer;
 import tactus.Mass;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
@@ -10,37 +11,83 @@ import tactus.paramSystem;
  * The one adapter from {@link SteppedModel} to the public {@link PhysicalModel} API. Creating it puts the model in
  * realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the thread that steps it (Minim's audio thread)
  * takes no lock and never waits for another thread; other threads' changes are queued and applied between two
- * samples. Names are resolved once into handles; the per-sample methods reuse scratch vectors and allocate nothing
- * ({@code PhyUGenAllocationTest}). Interaction reads look the name up in a hash table per call.
+ * samples. It also holds the model's rate ({@link PhysicalModel#holdSimRate(Object)}): from then on only
+ * {@link #setStepRate(int)} changes it, and {@code setSimRate} from the sketch is refused.
+ *
+ * <p>Names are resolved once into handles (slots that keep the name, so that an element removed and added again
+ * is found again by {@link #reattachMass(int)} and its kin). The per-sample methods run on the audio thread only,
+ * use scratch vectors of their own and allocate nothing ({@code PhyUGenAllocationTest}); the setup methods, called
+ * by the sketch's thread, share no scratch state with them. Interaction reads look the name up in a hash table per
+ * call.
  */
 public final class PhysicalModelStepper implements SteppedModel {
     private final PhysicalModel model;
     private final boolean realUnits;
-    private final Vect3D scratch = new Vect3D();
-    private final Vect3D target = new Vect3D();
-    private Mass[] masses = new Mass[4];
+    private final IntConsumer rateSetter;
+    /** Scratch vectors of the audio thread (the per-sample methods); never touched by a setup method. */
+    private final Vect3D audioScratch = new Vect3D();
+    private final Vect3D audioTarget = new Vect3D();
+    private MassSlot[] masses = new MassSlot[4];
     private int massCount;
-    private String[] links = new String[4];
-    private int[] linkRule = new int[4];
-    private double[] lastElongation = new double[4];
+    private LinkSlot[] links = new LinkSlot[4];
     private int linkCount;
     private String[] avatars = new String[2];
     private int avatarCount;
-    private int rate;
+    private volatile int rate;
 
+    private static final int RULE_UNSUPPORTED = -1;
     private static final int RULE_ALWAYS = 0;
     private static final int RULE_COMPRESSED = 1;
     private static final int RULE_STRETCHED = 2;
 
+    /** A resolved mass: its name and its current handle (replaced when the mass is added again). */
+    private static final class MassSlot {
+        final String name;
+        volatile Mass mass;
+
+        MassSlot(String name, Mass mass) {
+            this.name = name;
+            this.mass = mass;
+        }
+    }
+
+    /** A resolved interaction: its name, how its force is read, and the audio thread's last elongation. */
+    private static final class LinkSlot {
+        final String name;
+        final boolean withForce;
+        int rule;
+        double lastElongation;
+
+        LinkSlot(String name, boolean withForce, int rule, double lastElongation) {
+            this.name = name;
+            this.withForce = withForce;
+            this.rule = rule;
+            this.lastElongation = lastElongation;
+        }
+    }
+
     /** Wraps a model; it may still be built or changed, but not removed while audio runs. */
     public PhysicalModelStepper(PhysicalModel model) {
+        this(model, "a tactus.audio.PhysicalModelStepper plays it and sets its rate");
+    }
+
+    /**
+     * Wraps a model for a driver that dictates its rate.
+     *
+     * @param rateHolder what {@code setSimRate} names when it refuses a change (its {@code toString()})
+     */
+    public PhysicalModelStepper(PhysicalModel model, Object rateHolder) {
         if (model == null) {
             throw new IllegalArgumentException("PhysicalModelStepper: the model must not be null");
+        }
+        if (rateHolder == null) {
+            throw new IllegalArgumentException("PhysicalModelStepper: the rate holder must not be null");
         }
         this.model = model;
         this.realUnits = model.getParamSystem() == paramSystem.REAL_UNITS;
         this.rate = model.getSimRate();
         model.beginRealtimeStepping();
+        this.rateSetter = model.holdSimRate(rateHolder);
     }
 
     /** A lock that is never contended: realtime stepping needs none around a sample. */
@@ -59,7 +106,7 @@ public final class PhysicalModelStepper implements SteppedModel {
     @Override
     public void setStepRate(int stepsPerSecond) {
         if (stepsPerSecond != model.getSimRate()) {
-            model.setSimRate(stepsPerSecond);
+            rateSetter.accept(stepsPerSecond);
         }
         rate = stepsPerSecond;
     }
@@ -69,24 +116,39 @@ public final class PhysicalModelStepper implements SteppedModel {
         model.computeStep();
     }
 
+    /** @return true while the model has diverged and is frozen (until {@code clearDivergence()}). */
+    @Override
+    public boolean isHalted() {
+        return model.isDiverged();
+    }
+
     @Override
     public java.util.concurrent.locks.Lock sampleLock() {
         return NO_LOCK;
     }
 
+    // ------------------------------------------------------------------ setup (the sketch's thread)
+
     @Override
     public int resolveMass(String name) {
         Mass m = model.getMass(name);
         for (int i = 0; i < massCount; i++) {
-            if (masses[i] == m) {
+            if (masses[i].name.equals(name)) {
+                masses[i].mass = m;
                 return i;
             }
         }
         if (massCount == masses.length) {
             masses = Arrays.copyOf(masses, massCount * 2);
         }
-        masses[massCount] = m;
+        masses[massCount] = new MassSlot(name, m);
         return massCount++;
+    }
+
+    @Override
+    public double massPositionForSetup(int mass, int axis) {
+        Vect3D p = masses[mass].mass.getPosition(new Vect3D());
+        return axis == X ? p.x : axis == Y ? p.y : p.z;
     }
 
     @Override
@@ -94,37 +156,41 @@ public final class PhysicalModelStepper implements SteppedModel {
         if (!model.linkExists(name)) {
             throw new IllegalArgumentException("resolveLink(\"" + name + "\"): no interaction with this name");
         }
-        int rule = RULE_ALWAYS;
-        if (withForce) {
-            String type = model.getLinkTypeAt(model.getLinkIndex(name)).name();
-            switch (type) {
-                case "Spring3D":
-                case "Damper3D":
-                case "SpringDamper3D":
-                case "SpringDamper1D":
-                    rule = RULE_ALWAYS;
-                    break;
-                case "Contact3D":
-                    rule = RULE_COMPRESSED;
-                    break;
-                case "Rope3D":
-                case "Bubble3D":
-                    rule = RULE_STRETCHED;
-                    break;
-                default:
-                    throw new IllegalArgumentException("resolveLink(\"" + name + "\"): cannot listen to the force of a "
-                            + type + "; listen to its elongation instead");
-            }
+        int rule = ruleFor(name, withForce);
+        if (rule == RULE_UNSUPPORTED) {
+            throw new IllegalArgumentException("resolveLink(\"" + name + "\"): cannot listen to the force of a "
+                    + linkType(name) + "; listen to its elongation instead");
         }
         if (linkCount == links.length) {
             links = Arrays.copyOf(links, linkCount * 2);
-            linkRule = Arrays.copyOf(linkRule, linkCount * 2);
-            lastElongation = Arrays.copyOf(lastElongation, linkCount * 2);
         }
-        links[linkCount] = name;
-        linkRule[linkCount] = rule;
-        lastElongation[linkCount] = model.getLinkElongation(name);
+        links[linkCount] = new LinkSlot(name, withForce, rule, model.getLinkElongation(name));
         return linkCount++;
+    }
+
+    private String linkType(String name) {
+        return model.getLinkTypeAt(model.getLinkIndex(name)).name();
+    }
+
+    /** @return how the tension of a link is read, or RULE_UNSUPPORTED; allocates nothing. */
+    private int ruleFor(String name, boolean withForce) {
+        if (!withForce) {
+            return RULE_ALWAYS;
+        }
+        switch (linkType(name)) {
+            case "Spring3D":
+            case "Damper3D":
+            case "SpringDamper3D":
+            case "SpringDamper1D":
+                return RULE_ALWAYS;
+            case "Contact3D":
+                return RULE_COMPRESSED;
+            case "Rope3D":
+            case "Bubble3D":
+                return RULE_STRETCHED;
+            default:
+                return RULE_UNSUPPORTED;
+        }
     }
 
     @Override
@@ -153,24 +219,27 @@ public final class PhysicalModelStepper implements SteppedModel {
         return i;
     }
 
+    // ------------------------------------------------------------------ per sample (the audio thread)
+
     @Override
     public double massPosition(int mass, int axis) {
-        Vect3D p = masses[mass].getPosition(scratch);
+        Vect3D p = masses[mass].mass.getPosition(audioScratch);
         return axis == X ? p.x : axis == Y ? p.y : p.z;
     }
 
     @Override
     public double linkElongation(int link) {
-        return model.getLinkElongation(links[link]);
+        return model.getLinkElongation(links[link].name);
     }
 
     @Override
     public double linkTension(int link) {
-        String name = links[link];
+        LinkSlot s = links[link];
+        String name = s.name;
         double e = model.getLinkElongation(name);
-        double de = e - lastElongation[link];
-        lastElongation[link] = e;
-        int rule = linkRule[link];
+        double de = e - s.lastElongation;
+        s.lastElongation = e;
+        int rule = s.rule;
         if ((rule == RULE_COMPRESSED && e >= 0) || (rule == RULE_STRETCHED && e <= 0)) {
             return 0;
         }
@@ -180,17 +249,52 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     @Override
     public void setAvatarTarget(int avatar, double x, double y, double z) {
-        model.setHapticPosition(avatars[avatar], target.set(x, y, z));
+        model.setHapticPosition(avatars[avatar], audioTarget.set(x, y, z));
     }
 
     @Override
     public void takeAvatarForce(int avatar, double[] out) {
-        Vect3D f = model.getHapticForce(avatars[avatar], scratch);
+        Vect3D f = model.getHapticForce(avatars[avatar], audioScratch);
         out[0] = f.x;
         out[1] = f.y;
         out[2] = f.z;
     }
 
+    // ------------------------------------------------------------------ finding a removed element again (audio thread, rarely)
+
+    @Override
+    public boolean reattachMass(int mass) {
+        MassSlot s = masses[mass];
+        if (s.mass.isValid()) {
+            return true;
+        }
+        if (!model.matExists(s.name)) {
+            return false;
+        }
+        s.mass = model.getMass(s.name);
+        return true;
+    }
+
+    @Override
+    public boolean reattachLink(int link) {
+        LinkSlot s = links[link];
+        if (!model.linkExists(s.name)) {
+            return false;
+        }
+        int rule = ruleFor(s.name, s.withForce);
+        if (rule == RULE_UNSUPPORTED) {
+            return false;
+        }
+        s.rule = rule;
+        s.lastElongation = model.getLinkElongation(s.name);
+        return true;
+    }
+
+    @Override
+    public boolean reattachAvatar(int avatar) {
+        int i = model.getMatIndex(avatars[avatar]);
+        return i >= 0 && "HapticInput3D".equals(model.getMatTypeAt(i).name());
+    }
 
     /** The no-op lock of {@link #sampleLock()}. */
     private static final class NoLock implements java.util.concurrent.locks.Lock {

@@ -6,8 +6,13 @@ package tactus.audio;
  * handles; the per-sample methods take handles, never allocate and never print.
  *
  * <p>Every method may be called only by the thread that owns the stepping (the audio thread while a
- * {@link PhyUGen} runs), except the {@code resolve*} methods and {@link #setStepRate(int)}, which a sketch
- * calls while setting up.
+ * {@link PhyUGen} runs), except the {@code resolve*} methods, {@link #massPositionForSetup(int, int)} and
+ * {@link #setStepRate(int)}, which a sketch calls while setting up; these share no scratch state with the
+ * per-sample methods.
+ *
+ * <p>A per-sample method may throw when its element has left the model (removed, cleared): {@link PhyUGen} catches
+ * that once, silences what it can no longer read, and asks {@code reattach*} now and then whether the element is
+ * back under the same name.
  */
 public interface SteppedModel {
     /** Axis index of x. */
@@ -25,6 +30,14 @@ public interface SteppedModel {
 
     /** Runs one simulation step. */
     void step();
+
+    /**
+     * @return true while the model cannot step (a diverged model, frozen until it is cleared): the audio thread
+     *     then writes silence and does not step it; false by default
+     */
+    default boolean isHalted() {
+        return false;
+    }
 
     /**
      * @return the monitor to hold around one sample's calls (step, reads, avatar exchange) so that a model
@@ -49,6 +62,14 @@ public interface SteppedModel {
     /** @return the position of a mass along an axis ({@link #X}, {@link #Y} or {@link #Z}), in model units. */
     double massPosition(int mass, int axis);
 
+    /**
+     * As {@link #massPosition(int, int)}, for the sketch's thread while it sets up (where a listening point starts
+     * from); shares no scratch state with the audio thread's reads.
+     */
+    default double massPositionForSetup(int mass, int axis) {
+        return massPosition(mass, axis);
+    }
+
     /** @return the elongation of an interaction (distance minus its length parameter), in model units. */
     double linkElongation(int link);
 
@@ -66,4 +87,23 @@ public interface SteppedModel {
      * in between (REAL_UNITS: N), and resets the model's accumulator.
      */
     void takeAvatarForce(int avatar, double[] out);
+
+    /**
+     * Looks again, by name, for a mass that left the model (audio thread, rarely: never per sample).
+     *
+     * @return true when the mass is in the model again and {@code mass} reads it; false by default
+     */
+    default boolean reattachMass(int mass) {
+        return false;
+    }
+
+    /** As {@link #reattachMass(int)}, for an interaction. */
+    default boolean reattachLink(int link) {
+        return false;
+    }
+
+    /** As {@link #reattachMass(int)}, for a haptic avatar. */
+    default boolean reattachAvatar(int avatar) {
+        return false;
+    }
 }
