@@ -199,6 +199,47 @@ final class Ownership {
         return STEP;
     }
 
+    /**
+     * Makes the current thread the owner, even if another thread holds the role and is active (a PhyUGen's audio
+     * thread takes the model from a sketch that stepped it first). Waits only for a stepping or facade call that
+     * holds the gate, at most {@link #waitLimitNanos}. Costs one volatile read when the current thread already owns
+     * the role.
+     *
+     * @return true when the current thread owns the role; false when the mode is ending or the gate stayed busy
+     */
+    boolean claim() {
+        Thread me = Thread.currentThread();
+        if (owner == me) {
+            return true;
+        }
+        long start = System.nanoTime();
+        for (;;) {
+            if (ending) {
+                return false;
+            }
+            if (gate.compareAndSet(FREE, STEPPING)) {
+                try {
+                    if (ending) {
+                        return false;
+                    }
+                    if (owner != me) {
+                        owner = me;
+                        ownerDepth = 0;
+                        handOvers++;
+                        lastStep = System.nanoTime();
+                    }
+                    return true;
+                } finally {
+                    gate.set(FREE);
+                }
+            }
+            if (System.nanoTime() - start > waitLimitNanos) {
+                return false;
+            }
+            LockSupport.parkNanos(50_000L);
+        }
+    }
+
     /** Applies every queued command; the owner calls it at the start of a stepping call, holding the gate. */
     void applyQueued() {
         drain();

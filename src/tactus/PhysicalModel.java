@@ -238,8 +238,8 @@ public class PhysicalModel {
      * parameters) prepared on that thread, queued, and applied by the owner between two steps, in call order, also
      * when that thread holds {@link #getLock()}. A stepping call from another thread while the owner is active does
      * nothing (it prints one message saying so). The role passes on only when the owner ends the mode
-     * ({@link #endRealtimeStepping()}), or when it has died or has not stepped for 250 ms and another thread needs
-     * it. {@link tactus.audio.PhyUGen} calls this; see docs/architecture.md (Threads) for the rule and docs/audio.md
+     * ({@link #endRealtimeStepping()}), when it has died or has not stepped for 250 ms and another thread needs
+     * it, or when another thread claims it ({@link #takeRealtimeStepping()}, which a PhyUGen's audio thread does). {@link tactus.audio.PhyUGen} calls this; see docs/architecture.md (Threads) for the rule and docs/audio.md
      * for which calls are queued and when they apply. Calling it again does nothing.
      */
     public void beginRealtimeStepping() {
@@ -312,6 +312,22 @@ public class PhysicalModel {
     public Thread getRealtimeOwner() {
         Ownership o = core.own;
         return o == null ? null : o.owner();
+    }
+
+    /**
+     * Makes the calling thread the one that steps this realtime-stepped model from now on, even if another thread
+     * stepped it before: a {@link tactus.audio.PhyUGen}'s audio thread calls it before it steps, so that a sketch
+     * that also calls {@link #draw_physics()} (or started stepping the model before the sound began) cannot keep the
+     * audio silent; that sketch's stepping calls then do nothing, with one message. Waits at most for the stepping
+     * call in progress on the previous owner. Takes no lock; costs one volatile read when the caller already owns
+     * the model.
+     *
+     * @return true when the calling thread now steps the model; false when the model is not stepped in realtime, or
+     *     its realtime mode is ending
+     */
+    public boolean takeRealtimeStepping() {
+        Ownership o = core.own;
+        return o != null && o.claim();
     }
 
     /**

@@ -113,6 +113,7 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     @Override
     public void step() {
+        model.takeRealtimeStepping(); // the audio thread steps this model, whoever stepped it before
         model.computeStep();
     }
 
