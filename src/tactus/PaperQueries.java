@@ -14,11 +14,13 @@ import tactus.engine.LinkKind;
 final class PaperQueries {
     private final ModelCore c;
     private final Engine engine;
-    private final double[] tmp = new double[3];
+    /** Scratch vectors, one for the realtime owner and one for lock holders. */
+    private final RoleScratch scratch;
 
     PaperQueries(ModelCore core) {
         this.c = core;
         this.engine = core.engine;
+        this.scratch = new RoleScratch(core);
     }
 
     /** @return true when the link's second end is the plane, not a mass. */
@@ -31,6 +33,7 @@ final class PaperQueries {
      * the mass on the plane.
      */
     Vect3D linkEnd(int linkId, boolean first, Vect3D out) {
+        double[] tmp = scratch.get();
         engine.position(engine.linkMassA(linkId), tmp);
         if (!first) {
             if (isPlane(linkId)) {
@@ -60,6 +63,7 @@ final class PaperQueries {
 
     /** Writes the position a mass had one step before into {@code out}. */
     Vect3D delayedPosition(int massId, Vect3D out) {
+        double[] tmp = scratch.get();
         engine.position(massId, tmp);
         double x = tmp[0], y = tmp[1], z = tmp[2];
         engine.displacement(massId, tmp);
@@ -69,6 +73,7 @@ final class PaperQueries {
     /** @return the distance of an oscillator from its rest point, in length units. */
     double oscDisplacement(String op, int massId) {
         c.params.requireOsc(op, massId);
+        double[] tmp = scratch.get();
         engine.position(massId, tmp);
         double dx = tmp[0] - engine.restPosition(massId, 0);
         double dy = tmp[1] - engine.restPosition(massId, 1);
@@ -105,6 +110,7 @@ final class PaperQueries {
             }
         }
         int k = 0;
+        double[] tmp = scratch.get();
         for (int i = 0; i < n; i++) {
             int id = c.dir.mats.idAt(i);
             if (ModuleTypes.of(engine.massKind(id)) != type) {

@@ -15,37 +15,30 @@ import tactus.engine.StepPlan;
 final class StateAccess {
     private final ModelCore c;
     private final Engine engine;
-    /** Scratch of the threads that hold the model's lock (they take turns). */
-    private final double[] lockedTmp = new double[3];
-    /** Scratch of a realtime owner, which takes no lock and so may run beside a lock holder. */
-    private final double[] ownerTmp = new double[3];
+    /** Scratch vectors, one for the realtime owner and one for lock holders. */
+    private final RoleScratch scratch;
 
     StateAccess(ModelCore core) {
         this.c = core;
         this.engine = core.engine;
-    }
-
-    /** @return the calling thread's scratch vector: the owner's own while the model is stepped in realtime. */
-    private double[] scratch() {
-        Ownership o = c.own;
-        return o != null && o.isOwnerThread() ? ownerTmp : lockedTmp;
+        this.scratch = new RoleScratch(core);
     }
 
     Vect3D position(int id, Vect3D out) {
-        double[] tmp = scratch();
+        double[] tmp = scratch.get();
         engine.position(id, tmp);
         return out.set(tmp[0], tmp[1], tmp[2]);
     }
 
     Vect3D velocity(int id, Vect3D out) {
-        double[] tmp = scratch();
+        double[] tmp = scratch.get();
         engine.displacement(id, tmp);
         UnitScale u = c.units();
         return out.set(u.velocityOut(tmp[0]), u.velocityOut(tmp[1]), u.velocityOut(tmp[2]));
     }
 
     Vect3D force(int id, Vect3D out) {
-        double[] tmp = scratch();
+        double[] tmp = scratch.get();
         engine.force(id, tmp);
         UnitScale u = c.units();
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
@@ -115,7 +108,7 @@ final class StateAccess {
      * model units of force are converted to the user's units in {@code out}).
      */
     long takeAvatarForceCounted(int id, Vect3D out) {
-        double[] tmp = scratch();
+        double[] tmp = scratch.get();
         Ownership o = c.own;
         long n;
         double x;
