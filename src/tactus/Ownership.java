@@ -223,10 +223,8 @@ final class Ownership {
                         return false;
                     }
                     if (owner != me) {
-                        owner = me;
+                        takeRole(me);
                         ownerDepth = 0;
-                        handOvers++;
-                        lastStep = System.nanoTime();
                     }
                     return true;
                 } finally {
@@ -307,9 +305,7 @@ final class Ownership {
                     continue;
                 }
                 if (o != me) {
-                    owner = me;
-                    handOvers++;
-                    lastStep = System.nanoTime();
+                    takeRole(me);
                 }
                 ownerDepth = 1;
                 return STEP;
@@ -341,6 +337,18 @@ final class Ownership {
     private void finishRole() {
         drain();
         ending = true;
+        freeRole();
+    }
+
+    /** Under the gate: the role passes to {@code t}, which counts as having just stepped. */
+    private void takeRole(Thread t) {
+        owner = t;
+        handOvers++;
+        lastStep = System.nanoTime();
+    }
+
+    /** Under the gate: nobody holds the role. */
+    private void freeRole() {
         owner = null;
         handOvers++;
     }
@@ -566,8 +574,7 @@ final class Ownership {
             try {
                 if (ownerGone()) {
                     if (owner != null) {
-                        owner = null;
-                        handOvers++;
+                        freeRole();
                     }
                     drain();
                 }
@@ -672,8 +679,7 @@ final class Ownership {
         }
         try {
             drain();
-            owner = null;
-            handOvers++;
+            freeRole();
         } finally {
             ownerDepth = 0;
             gate.set(FREE);

@@ -239,8 +239,9 @@ public class PhysicalModel {
      * when that thread holds {@link #getLock()}. A stepping call from another thread while the owner is active does
      * nothing (it prints one message saying so). The role passes on only when the owner ends the mode
      * ({@link #endRealtimeStepping()}), when it has died or has not stepped for 250 ms and another thread needs
-     * it, or when another thread claims it ({@link #takeRealtimeStepping()}, which a PhyUGen's audio thread does). {@link tactus.audio.PhyUGen} calls this; see docs/architecture.md (Threads) for the rule and docs/audio.md
-     * for which calls are queued and when they apply. Calling it again does nothing.
+     * it, or when another thread claims it ({@link #takeRealtimeStepping()}, which a PhyUGen's audio thread does).
+     * {@link tactus.audio.PhyUGen} calls this; see docs/architecture.md (Threads) for the rule and docs/audio.md for
+     * which calls are queued and when they apply. Calling it again does nothing.
      */
     public void beginRealtimeStepping() {
         enter();
@@ -377,6 +378,9 @@ public class PhysicalModel {
         return core.own != null;
     }
 
+    /** Results of {@link #stepOwned} other than a step count. */
+    private static final int ENDED = -1, REFUSED = -2;
+
     /**
      * One stepping call of a realtime-stepped model on the calling thread (which takes the owner role if it is free):
      * applies the queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
@@ -385,9 +389,6 @@ public class PhysicalModel {
      * @return the number of steps run; {@link #ENDED} when the mode is ending (the caller steps in locked mode);
      *     {@link #REFUSED} when another thread owns the model (nothing was done, the message was printed once)
      */
-    /** Results of {@link #stepOwned} other than a step count. */
-    private static final int ENDED = -1, REFUSED = -2;
-
     private int stepOwned(Ownership o, int n, String call) {
         int r = o.beginStep(n);
         if (r == Ownership.ENDED) {
@@ -447,9 +448,7 @@ public class PhysicalModel {
      * @param rate steps per second, &gt; 0
      */
     public void setSimRate(int rate) {
-        if (rate <= 0) {
-            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
-        }
+        checkSimRate(rate);
         Object holder = simRateHolder;
         if (holder != null && simRateSession == core.own) {
             throw new IllegalStateException("setSimRate(" + rate + "): refused, the model stays at " + getSimRate()
@@ -459,12 +458,16 @@ public class PhysicalModel {
     }
 
     private void changeSimRate(int rate) {
-        if (rate <= 0) {
-            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
-        }
+        checkSimRate(rate);
         structuralDo(() -> {
             core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
         });
+    }
+
+    private static void checkSimRate(int rate) {
+        if (rate <= 0) {
+            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
+        }
     }
 
     /** The realtime driver that fixes the rate (see {@link #holdSimRate(Object)}), and the session it holds it for. */

@@ -420,10 +420,7 @@ public class PhyUGen extends UGen {
 
     private void generate(float[] channels) {
         SteppedModel m = steppedModel();
-        if (++sinceRecheck >= RECHECK_SAMPLES) {
-            sinceRecheck = 0;
-            recheck(m);
-        }
+        countTowardsRecheck(m);
         Oversampler o = oversampler;
         boolean stereo = channels.length >= 2 && !forceMono;
         double left;
@@ -552,6 +549,14 @@ public class PhyUGen extends UGen {
         faults.modelSilenced(kind, error);
     }
 
+    /** Counts one sample; every {@link #RECHECK_SAMPLES} samples, {@link #recheck}s. */
+    private void countTowardsRecheck(SteppedModel m) {
+        if (++sinceRecheck >= RECHECK_SAMPLES) {
+            sinceRecheck = 0;
+            recheck(m);
+        }
+    }
+
     /** Every {@link #RECHECK_SAMPLES} samples: allows a retry of a failing step, and looks for lost elements again. */
     private void recheck(SteppedModel m) {
         if (modelSilent && !halted) {
@@ -666,10 +671,7 @@ public class PhyUGen extends UGen {
     protected final void stepModel() {
         try {
             SteppedModel m = steppedModel();
-            if (++sinceRecheck >= RECHECK_SAMPLES) {
-                sinceRecheck = 0;
-                recheck(m);
-            }
+            countTowardsRecheck(m);
             java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
             sampleLock.lock();
             try {
