@@ -1325,8 +1325,9 @@ public class PhysicalModel {
 
     /**
      * Moves a mass to a position with zero velocity. Its interactions forget the distance they saw before, so
-     * that their dampers do not take the jump for a velocity. An oscillator's rest point stays where it is, so
-     * a displaced oscillator swings back toward it; a fixed point moves for good.
+     * that their dampers do not take the jump for a velocity (unless {@link #setMoveKeepsLinkHistory} asks for
+     * the paper engine's behaviour). An oscillator's rest point stays where it is, so a displaced oscillator
+     * swings back toward it; a fixed point moves for good.
      */
     public void setMatPosition(String name, Vect3D pos) {
         Check.vector("setMatPosition", name, "pos", pos);
@@ -1348,6 +1349,38 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    /**
+     * Chooses what moving a mass by hand ({@link #setMatPosition}, {@link #setMatPosAt}, {@link Mass#setPosition})
+     * does to its interactions' memory of the distance they saw at their last step.
+     *
+     * <ul>
+     * <li>{@code false}, the default: they forget it and start again from the new distance, so a jump is not a
+     * velocity: a mass put somewhere else starts there at rest, and no damper kicks it.</li>
+     * <li>{@code true}, the paper's engine: they keep it, so in the next step each damper of the moved mass sees
+     * the jump as a radial velocity and pushes against it (a force of Z × the change of distance, in per-step
+     * units). A mass moved a little at every step, as the paper's PluckedString moves its plectrum, then drags
+     * its dampers along as a moving mass would, and sounds as it did in the paper's engine.</li>
+     * </ul>
+     *
+     * <p>The choice applies to moves made after the call. {@code changeDistXBetweenSubset}, ramps and
+     * {@code changeToFixedPoint} always reset the history.
+     *
+     * @param keep true for the paper engine's behaviour
+     */
+    public void setMoveKeepsLinkHistory(boolean keep) {
+        enter();
+        try {
+            core.state.moveKeepsLinkHistory = keep;
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return true when a position move keeps the link history, as the paper's engine did (false by default). */
+    public boolean getMoveKeepsLinkHistory() {
+        return core.state.moveKeepsLinkHistory;
     }
 
     /** Sets the velocity of a mass, in units per second, keeping its position. */
