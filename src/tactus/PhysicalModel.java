@@ -765,13 +765,16 @@ public class PhysicalModel {
 
     /**
      * Sets the gravity magnitude (REAL_UNITS: m/s²). Masses accelerate along minus the gravity direction, so
-     * with the default direction (0, 0, 1) they fall toward -z.
+     * with the default direction (0, 0, 1) they fall toward -z. Mass1D and Osc1D feel its z component, which the
+     * paper's engine did not give them: the first time gravity pulls along z in a model with a 1D mass (set here,
+     * by {@link #setGravityDirection(Vect3D)}, or by adding a 1D mass), a note says so, once per model.
      */
     public void setGravity(double magnitude) {
         Check.finite("setGravity", "gravity", "magnitude", magnitude);
         enterChange();
         try {
             core.time.setGravity(magnitude);
+            core.gravityNote.afterGravityChange();
         } finally {
             exit();
         }
@@ -796,6 +799,7 @@ public class PhysicalModel {
         enterChange();
         try {
             core.time.setGravityDirection(direction.x, direction.y, direction.z);
+            core.gravityNote.afterGravityChange();
         } finally {
             exit();
         }
@@ -974,7 +978,9 @@ public class PhysicalModel {
                          double K, double Z, int smoothing) {
         ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
         return structural(() -> {
-            return core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            Mass added = core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            core.gravityNote.afterMassAdded(kind, name);
+            return added;
         });
     }
 
