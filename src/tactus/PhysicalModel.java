@@ -540,7 +540,10 @@ public class PhysicalModel {
 
     /**
      * Advances the model by one display frame: {@code floor(simRate / displayRate + r)} steps, where the
-     * fractional remainder r is carried to the next frame.
+     * fractional remainder r is carried to the next frame in exact integer arithmetic (frame n runs
+     * {@code floor(n·simRate/displayRate) - floor((n-1)·simRate/displayRate)} steps). The paper's engine carried it
+     * in floating point, so at rates whose ratio is not exact in {@code float} (1000 Hz and 60 fps: after frames
+     * 3, 6, 9, ...) Tactus is one step ahead of it on some frames; at 44100 Hz and 60 fps both run 735 steps.
      *
      * @return the number of steps of this frame
      */
