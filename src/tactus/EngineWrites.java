@@ -21,6 +21,9 @@ interface EngineWrites {
 
     void setPosition(int id, double x, double y, double z);
 
+    /** Moves a mass with zero velocity, its links keeping their previous distances (the paper engine's move). */
+    void setPositionKeepingLinkHistory(int id, double x, double y, double z);
+
     void setState(int id, double x, double y, double z, double px, double py, double pz);
 
     /** Sets the per-step velocity of a mass, keeping the position it has when the write is applied. */
@@ -65,6 +68,10 @@ interface EngineWrites {
 
             public void setPosition(int id, double x, double y, double z) {
                 e.setPosition(id, x, y, z);
+            }
+
+            public void setPositionKeepingLinkHistory(int id, double x, double y, double z) {
+                e.setPositionKeepingLinkHistory(id, x, y, z);
             }
 
             public void setState(int id, double x, double y, double z, double px, double py, double pz) {

@@ -22,6 +22,7 @@ final class ModelCore {
     final StateAccess state;
     final SnapshotWriter snapshots;
     final PaperQueries paper;
+    final GravityNote gravityNote;
     /** Parameter controllers by name, in creation order (see {@link ParamController}). */
     private final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
     /** The same controllers as an array, so that the stepping path checks them without allocating an iterator. */
@@ -44,6 +45,7 @@ final class ModelCore {
         this.state = new StateAccess(this);
         this.snapshots = new SnapshotWriter(this);
         this.paper = new PaperQueries(this);
+        this.gravityNote = new GravityNote(this);
         this.time.core = this;
     }
 

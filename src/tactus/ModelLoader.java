@@ -23,6 +23,8 @@ public class ModelLoader {
     private final PApplet app;
     private volatile boolean loaded;
     private PhysicalModel pending;
+    /** Whether the one message about a sketch without {@code load(File)} was printed. */
+    private boolean toldNoHandler;
 
     /**
      * @param parent the sketch ({@code this}); may be null outside Processing, then file names are
@@ -59,9 +61,21 @@ public class ModelLoader {
     }
 
     /**
-     * Opens a file chooser; when the user picks a file it is loaded into {@code mdl} and
-     * {@link #getIsLoaded()} becomes true. The chooser runs asynchronously, as Processing's
-     * {@code selectInput}. A load error is printed and leaves the model unchanged.
+     * Opens a file chooser, as the paper's engine did; when it closes, the sketch's own {@code load(File)} method
+     * is called with the chosen file (null when the user cancelled), exactly as the original's
+     * {@code selectInput(prompt, "load")} did. The paper's sketches load the model there themselves:
+     *
+     * <pre>
+     * void load(File selection) {
+     *   if (selection == null) { println("No file was selected"); return; }
+     *   loader.loadModel(selection.getAbsolutePath(), mdl);
+     * }
+     * </pre>
+     *
+     * <p>A sketch without a public {@code load(File)} method gets Tactus's help instead: the chosen file is loaded
+     * into {@code mdl} and {@link #getIsLoaded()} becomes true, and one message (once per loader) says so. The
+     * chooser runs asynchronously, as Processing's {@code selectInput}. An error in the sketch's method or in the
+     * load is printed and leaves the model as the load left it (a failed load leaves it unchanged).
      *
      * @throws IllegalStateException on a machine without a display, where no chooser can open; call
      *     {@link #loadModel(String, PhysicalModel)} there
@@ -76,12 +90,13 @@ public class ModelLoader {
         synchronized (this) {
             pending = mdl;
         }
-        app.selectInput("Select a model file (XML) to load", "modelFileSelected", null, this);
+        app.selectInput("Select the model to load", "modelFileSelected", null, this);
     }
 
     /**
-     * Called by Processing when the file chooser opened by {@link #loadModelFromFile} closes; not
-     * meant to be called by sketches.
+     * Called by Processing when the file chooser opened by {@link #loadModelFromFile} closes; not meant to be
+     * called by sketches. Calls the sketch's {@code load(File)}, or loads the file itself (see
+     * {@link #loadModelFromFile}).
      *
      * @param selection the chosen file, or null when the user cancelled
      */
@@ -90,6 +105,21 @@ public class ModelLoader {
         synchronized (this) {
             target = pending;
             pending = null;
+        }
+        deliver(selection, target);
+    }
+
+    /** Hands a chosen file to the sketch's {@code load(File)}, or loads it into {@code target} when there is none. */
+    void deliver(File selection, PhysicalModel target) {
+        java.lang.reflect.Method handler = SketchCallback.find(app, "load");
+        if (handler != null) {
+            SketchCallback.call(handler, app, selection, "ModelLoader");
+            return;
+        }
+        if (!toldNoHandler) {
+            toldNoHandler = true;
+            System.err.println(SketchCallback.missing(app, "load", "ModelLoader.loadModelFromFile",
+                    "Tactus loads the chosen file into the model given to loadModelFromFile instead"));
         }
         if (selection == null || target == null) {
             return;

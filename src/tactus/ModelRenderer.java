@@ -238,17 +238,22 @@ public class ModelRenderer implements PConstants {
         drawer.setShowMasses(cond);
     }
 
-    /** Draws the model into the sketch's current renderer ({@code g}); call it in {@code draw()}. */
+    /**
+     * Draws the model into the sketch's current renderer ({@code g}); call it in {@code draw()}. Like the paper's
+     * engine, it leaves the fill of the last mass, and the stroke of the last visible link, set (see
+     * {@link ModelDrawer#leaveStyleAsPaperEngine}).
+     */
     public void renderModel(PhysicalModel mdl) {
-        drawer.draw(mdl, app.g);
+        renderModel(mdl, app.g);
     }
 
     /**
      * Draws the model into any graphics, for example an off-screen {@code createGraphics()} buffer, between its
-     * {@code beginDraw()} and {@code endDraw()}.
+     * {@code beginDraw()} and {@code endDraw()}, leaving the same style set as {@link #renderModel(PhysicalModel)}.
      */
     public void renderModel(PhysicalModel mdl, PGraphics target) {
         drawer.draw(mdl, target);
+        drawer.leaveStyleAsPaperEngine(target);
     }
 
     /** @return the drawer doing the work: its styles, view and replaceable painters. */

@@ -540,7 +540,10 @@ public class PhysicalModel {
 
     /**
      * Advances the model by one display frame: {@code floor(simRate / displayRate + r)} steps, where the
-     * fractional remainder r is carried to the next frame.
+     * fractional remainder r is carried to the next frame in exact integer arithmetic (frame n runs
+     * {@code floor(n·simRate/displayRate) - floor((n-1)·simRate/displayRate)} steps). The paper's engine carried it
+     * in floating point, so at rates whose ratio is not exact in {@code float} (1000 Hz and 60 fps: after frames
+     * 3, 6, 9, ...) Tactus is one step ahead of it on some frames; at 44100 Hz and 60 fps both run 735 steps.
      *
      * @return the number of steps of this frame
      */
@@ -765,13 +768,16 @@ public class PhysicalModel {
 
     /**
      * Sets the gravity magnitude (REAL_UNITS: m/s²). Masses accelerate along minus the gravity direction, so
-     * with the default direction (0, 0, 1) they fall toward -z.
+     * with the default direction (0, 0, 1) they fall toward -z. Mass1D and Osc1D feel its z component, which the
+     * paper's engine did not give them: the first time gravity pulls along z in a model with a 1D mass (set here,
+     * by {@link #setGravityDirection(Vect3D)}, or by adding a 1D mass), a note says so, once per model.
      */
     public void setGravity(double magnitude) {
         Check.finite("setGravity", "gravity", "magnitude", magnitude);
         enterChange();
         try {
             core.time.setGravity(magnitude);
+            core.gravityNote.afterGravityChange();
         } finally {
             exit();
         }
@@ -796,6 +802,7 @@ public class PhysicalModel {
         enterChange();
         try {
             core.time.setGravityDirection(direction.x, direction.y, direction.z);
+            core.gravityNote.afterGravityChange();
         } finally {
             exit();
         }
@@ -974,7 +981,9 @@ public class PhysicalModel {
                          double K, double Z, int smoothing) {
         ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
         return structural(() -> {
-            return core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            Mass added = core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            core.gravityNote.afterMassAdded(kind, name);
+            return added;
         });
     }
 
@@ -1325,8 +1334,9 @@ public class PhysicalModel {
 
     /**
      * Moves a mass to a position with zero velocity. Its interactions forget the distance they saw before, so
-     * that their dampers do not take the jump for a velocity. An oscillator's rest point stays where it is, so
-     * a displaced oscillator swings back toward it; a fixed point moves for good.
+     * that their dampers do not take the jump for a velocity (unless {@link #setMoveKeepsLinkHistory} asks for
+     * the paper engine's behaviour). An oscillator's rest point stays where it is, so a displaced oscillator
+     * swings back toward it; a fixed point moves for good.
      */
     public void setMatPosition(String name, Vect3D pos) {
         Check.vector("setMatPosition", name, "pos", pos);
@@ -1348,6 +1358,38 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    /**
+     * Chooses what moving a mass by hand ({@link #setMatPosition}, {@link #setMatPosAt}, {@link Mass#setPosition})
+     * does to its interactions' memory of the distance they saw at their last step.
+     *
+     * <ul>
+     * <li>{@code false}, the default: they forget it and start again from the new distance, so a jump is not a
+     * velocity: a mass put somewhere else starts there at rest, and no damper kicks it.</li>
+     * <li>{@code true}, the paper's engine: they keep it, so in the next step each damper of the moved mass sees
+     * the jump as a radial velocity and pushes against it (a force of Z × the change of distance, in per-step
+     * units). A mass moved a little at every step, as the paper's PluckedString moves its plectrum, then drags
+     * its dampers along as a moving mass would, and sounds as it did in the paper's engine.</li>
+     * </ul>
+     *
+     * <p>The choice applies to moves made after the call. {@code changeDistXBetweenSubset}, ramps and
+     * {@code changeToFixedPoint} always reset the history.
+     *
+     * @param keep true for the paper engine's behaviour
+     */
+    public void setMoveKeepsLinkHistory(boolean keep) {
+        enter();
+        try {
+            core.state.moveKeepsLinkHistory = keep;
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return true when a position move keeps the link history, as the paper's engine did (false by default). */
+    public boolean getMoveKeepsLinkHistory() {
+        return core.state.moveKeepsLinkHistory;
     }
 
     /** Sets the velocity of a mass, in units per second, keeping its position. */

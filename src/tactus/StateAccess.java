@@ -44,9 +44,22 @@ final class StateAccess {
         return out.set(u.forceOut(tmp[0]), u.forceOut(tmp[1]), u.forceOut(tmp[2]));
     }
 
-    /** Moves a mass to a validated position with zero velocity; its links forget their previous distance. */
+    /**
+     * Whether a position move keeps the moved mass's link history, as the paper's engine did (see
+     * {@link PhysicalModel#setMoveKeepsLinkHistory}); read by the thread that records the move.
+     */
+    volatile boolean moveKeepsLinkHistory;
+
+    /**
+     * Moves a mass to a validated position with zero velocity; its links forget their previous distance, unless
+     * {@link #moveKeepsLinkHistory}.
+     */
     void setPosition(int id, Vect3D pos) {
-        c.writes().setPosition(id, pos.x, pos.y, pos.z);
+        if (moveKeepsLinkHistory) {
+            c.writes().setPositionKeepingLinkHistory(id, pos.x, pos.y, pos.z);
+        } else {
+            c.writes().setPosition(id, pos.x, pos.y, pos.z);
+        }
     }
 
     /** Sets the velocity (units per second) of an inertial mass, keeping its position. */

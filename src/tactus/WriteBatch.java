@@ -10,7 +10,7 @@ import tactus.engine.Engine;
  */
 final class WriteBatch extends Command implements EngineWrites {
     private static final int MASS = 0, OSC = 1, LINK = 2, PLANE = 3, ATTR = 4, POS = 5, STATE = 6, FORCE = 7,
-            TARGET = 8, MEDIUM = 9, VELOCITY = 10;
+            TARGET = 8, MEDIUM = 9, VELOCITY = 10, POS_KEEP = 11;
     private final double[] tmp = new double[3];
     private int[] ops = new int[4];
     private int[] ids = new int[4];
@@ -74,6 +74,10 @@ final class WriteBatch extends Command implements EngineWrites {
 
     public void setPosition(int id, double x, double y, double z) {
         put3(add(POS, id), x, y, z);
+    }
+
+    public void setPositionKeepingLinkHistory(int id, double x, double y, double z) {
+        put3(add(POS_KEEP, id), x, y, z);
     }
 
     public void setState(int id, double x, double y, double z, double px, double py, double pz) {
@@ -151,6 +155,9 @@ final class WriteBatch extends Command implements EngineWrites {
                     break;
                 case POS:
                     e.setPosition(id, v[at], v[at + 1], v[at + 2]);
+                    break;
+                case POS_KEEP:
+                    e.setPositionKeepingLinkHistory(id, v[at], v[at + 1], v[at + 2]);
                     break;
                 case STATE:
                     e.setState(id, v[at], v[at + 1], v[at + 2], v[at + 3], v[at + 4], v[at + 5]);

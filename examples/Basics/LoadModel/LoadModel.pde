@@ -156,8 +156,17 @@ void keyPressed() {
   } else if (key == 'l' || key == 'L') {
     loadMobile();
   } else if (key == 'o' || key == 'O') {
-    // Opens Processing's file chooser; the model is loaded when you confirm, and getIsLoaded() turns true.
+    // Opens Processing's file chooser; when it closes, load(File) below is called, as in the paper's engine.
     chosen = new PhysicalModel(simRate, dispRate);
     loader.loadModelFromFile(chosen);
+  }
+}
+
+// Called with the file picked in loadModelFromFile's chooser (null when cancelled); loadModel turns getIsLoaded() true.
+void load(File selection) {
+  if (selection == null) {
+    println("No file was selected");
+  } else {
+    loader.loadModel(selection.getAbsolutePath(), chosen);
   }
 }

@@ -934,13 +934,29 @@ public final class Engine implements AutoCloseable {
         }
     }
 
-    /** Moves a mass to a position and sets its velocity to zero (both current and previous positions). */
+    /**
+     * Moves a mass to a position and sets its velocity to zero (both current and previous positions); its links
+     * forget the distance they saw before.
+     */
     public void setPosition(int id, double x, double y, double z) {
         setState(id, x, y, z, x, y, z);
     }
 
-    /** Sets the current and previous positions of a mass. */
+    /**
+     * Moves a mass to a position with zero velocity as the paper's engine did: its links keep the distance they
+     * saw at their last step, so each damper takes the jump for a radial velocity in the next step.
+     */
+    public void setPositionKeepingLinkHistory(int id, double x, double y, double z) {
+        writeState(id, x, y, z, x, y, z, false);
+    }
+
+    /** Sets the current and previous positions of a mass; its links forget the distance they saw before. */
     public void setState(int id, double x, double y, double z, double prevX, double prevY, double prevZ) {
+        writeState(id, x, y, z, prevX, prevY, prevZ, true);
+    }
+
+    private void writeState(int id, double x, double y, double z, double prevX, double prevY, double prevZ,
+                            boolean resetLinks) {
         checkMass(id);
         int s = liveSlot(id);
         if (s >= 0) {
@@ -957,7 +973,7 @@ public final class Engine implements AutoCloseable {
             masses.setPending(id, x, y, z, prevX, prevY, prevZ);
             masses.pendingTarget[3 * id] = Double.NaN;
         }
-        if (s >= 0) {
+        if (s >= 0 && resetLinks) {
             PlanCompiler.resetLinkHistory(plan, s);
         }
         if (masses.kind[id].isFixed()) {

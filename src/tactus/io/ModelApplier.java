@@ -31,8 +31,8 @@ final class ModelApplier {
             for (String n : outside) {
                 scratch.addGround3D(n, target.getMatPosition(n));
             }
-            new Build(f, scratch).run();
-            new Build(f, target).runOrUndo();
+            new Build(f, scratch, true).run();
+            new Build(f, target, false).runOrUndo();
             return null;
         });
     }
@@ -79,10 +79,13 @@ final class ModelApplier {
         private double gravity;
         private double friction;
         private Vect3D direction;
+        /** The scratch pass runs without gravity (the target checks it), so that notes are printed once, for the target. */
+        private final boolean scratch;
 
-        Build(ModelFile f, PhysicalModel m) {
+        Build(ModelFile f, PhysicalModel m, boolean scratch) {
             this.f = f;
             this.m = m;
+            this.scratch = scratch;
         }
 
         void runOrUndo() {
@@ -122,7 +125,7 @@ final class ModelApplier {
 
         private void setGlobals() {
             try {
-                m.setGravity(f.gravity);
+                m.setGravity(scratch ? 0 : f.gravity);
                 m.setFriction(f.friction);
                 Vect3D d = m.getGravityDirection();
                 if (d.x != f.dirX || d.y != f.dirY || d.z != f.dirZ) {

@@ -101,9 +101,9 @@ final class ModelFileParser {
         m.z = number(e, "initPos.z");
         if (FileTypes.isInertial(type)) {
             m.mass = number(e, "mass");
-            m.vx = optionalNumber(e, "posR.x");
-            m.vy = optionalNumber(e, "posR.y");
-            m.vz = optionalNumber(e, "posR.z");
+            m.vx = velocity(e, "x");
+            m.vy = velocity(e, "y");
+            m.vz = velocity(e, "z");
         }
         if (FileTypes.isOscillator(type)) {
             m.stiffness = number(e, "stiffness");
@@ -208,6 +208,27 @@ final class ModelFileParser {
         } catch (NumberFormatException x) {
             throw fail(e, "the attribute \"" + attr + "\" must be a number, got \"" + v + "\"");
         }
+    }
+
+    /**
+     * @return one coordinate of a mass's initial velocity, in units per second: {@code initVel.*} (what the
+     *     paper-era engine writes and reads, from v1.1.1 on), else {@code posR.*} (its first loader, and Tactus
+     *     before it read initVel), else 0. When both are given they must agree.
+     */
+    private double velocity(XmlNode e, String axis) {
+        String paper = "initVel." + axis;
+        String early = "posR." + axis;
+        boolean hasPaper = e.attributes.containsKey(paper);
+        if (hasPaper && e.attributes.containsKey(early)) {
+            double a = number(e, paper);
+            double b = number(e, early);
+            if (Double.compare(a, b) != 0) {
+                throw fail(e, "the attributes \"" + paper + "\" (" + a + ") and \"" + early + "\" (" + b
+                        + ") give two different velocities; keep one of them");
+            }
+            return a;
+        }
+        return optionalNumber(e, hasPaper ? paper : early);
     }
 
     private double optionalNumber(XmlNode e, String attr) {

@@ -79,14 +79,13 @@ final class ModelFileWriter {
         add(a, "initPos.y", num(m.y));
         add(a, "initPos.z", num(m.z));
         if (inertial) {
+            // the paper-era engine's name for the velocity (v1.1.1 to the paper's commit); it reads no other
+            add(a, "initVel.x", num(m.vx));
+            add(a, "initVel.y", num(m.vy));
+            add(a, "initVel.z", num(m.vz));
             add(a, "mass", num(m.mass));
         }
         add(a, "name", m.name);
-        if (inertial) {
-            add(a, "posR.x", num(m.vx));
-            add(a, "posR.y", num(m.vy));
-            add(a, "posR.z", num(m.vz));
-        }
         if (osc) {
             add(a, "stiffness", num(m.stiffness));
         }

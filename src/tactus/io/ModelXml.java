@@ -16,7 +16,8 @@ import tactus.PhysicalModel;
  * {@code ModelLoader}), so that files move both ways between the two engines.
  *
  * <p>The file stores what the model's getters return, in the model's own unit system: positions,
- * velocities in units per second (attributes {@code posR.*}, as in the original), masses,
+ * velocities in units per second (attributes {@code initVel.*}, as the paper-era engine writes
+ * them; files with the {@code posR.*} attributes of its first loader, and of Tactus before, load too), masses,
  * stiffnesses, dampings and lengths. Like the original it does not store the simulation rate or the
  * unit system in a way the original reads; Tactus adds a {@code <units paramSystem=".." simRate=".."/>}
  * element under {@code <global>}, which the original ignores and which makes a Tactus load refuse a

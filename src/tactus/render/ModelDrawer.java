@@ -56,6 +56,8 @@ public final class ModelDrawer {
     private boolean showArrows = true;
     private boolean disposed;
     private boolean motionRequested;
+    /** What the paper engine's renderer would have left set after the last draw (see {@link #leaveStyleAsPaperEngine}). */
+    private final Leftovers leftovers = new Leftovers();
 
     /**
      * Creates a drawer with the default styles, scale 1, zoom (1, 1, 1), colours by type, and force arrows of
@@ -270,6 +272,7 @@ public final class ModelDrawer {
             throw new IllegalArgumentException("draw: " + (model == null ? "the model" : "the target")
                     + " must not be null");
         }
+        leftovers.clear();
         if (disposed) {
             return;
         }
@@ -307,6 +310,7 @@ public final class ModelDrawer {
         ColorBy by = colorBy;   // links take every colouring
         ColorScale scaleOf = colorScale;
         p.begin(g, n);
+        leftovers.links = n;
         float kx = scale * zoomX;
         float ky = scale * zoomY;
         float kz = scale * zoomZ;
@@ -332,6 +336,7 @@ public final class ModelDrawer {
                 }
                 argb = (ls.argb() & 0xFF000000) | (scaleOf.colorAt(v) & 0x00FFFFFF);
             }
+            leftovers.link(l, argb, ls.getWeight());
             if ((argb >>> 24) == 0) {
                 continue;
             }
@@ -377,6 +382,7 @@ public final class ModelDrawer {
             if (by != ColorBy.TYPE && ModelCache.isSimulated(type)) {
                 argb = (argb & 0xFF000000) | (scaleOf.colorAt(massValue(s, i, by)) & 0x00FFFFFF);
             }
+            leftovers.mass(argb);
             float r = scale * ms.radius(cache.inertia(i));
             if ((argb >>> 24) == 0 || !(r > 0)) {
                 continue;
@@ -384,6 +390,63 @@ public final class ModelDrawer {
             p.mass(g, i, type, (float) (kx * s.x(i)), (float) (ky * s.y(i)), (float) (kz * s.z(i)), r, argb);
         }
         p.end(g);
+    }
+
+    /**
+     * Sets on {@code g} the fill, stroke and stroke weight that the paper engine's renderer left set after drawing
+     * the model of the last {@link #draw} (which itself restores the target's style): the fill of the last mass in
+     * model order and no stroke, when masses are shown; then, when there are links, the stroke colour of the last
+     * visible link and a stroke weight of that link's weight if it is the last link, else 1. Some of the paper's
+     * sketches draw with what it left (TinyWreckingBall fills its plane with the fixed point's green);
+     * {@link tactus.ModelRenderer} calls this after every drawing.
+     *
+     * @param g the target the last {@link #draw} drew into, not null
+     */
+    public void leaveStyleAsPaperEngine(PGraphics g) {
+        if (g == null) {
+            throw new IllegalArgumentException("leaveStyleAsPaperEngine: the target must not be null");
+        }
+        leftovers.apply(g);
+    }
+
+    /** The style the paper engine's renderer leaves set, recorded while drawing (no allocation). */
+    private static final class Leftovers {
+        private boolean massSeen;
+        private int fill;
+        private int links;
+        private int lastVisible = -1;
+        private int stroke;
+        private float weight;
+
+        void clear() {
+            massSeen = false;
+            links = 0;
+            lastVisible = -1;
+        }
+
+        void mass(int argb) {
+            massSeen = true;
+            fill = argb;
+        }
+
+        void link(int index, int argb, float w) {
+            lastVisible = index;
+            stroke = argb;
+            weight = w;
+        }
+
+        void apply(PGraphics g) {
+            if (massSeen) {
+                g.fill(fill);
+                g.noStroke();
+            }
+            if (lastVisible >= 0) {
+                g.stroke(stroke);
+            }
+            if (links > 0) {
+                g.strokeWeight(lastVisible == links - 1 ? weight : 1);
+            }
+        }
     }
 
     /** True when this drawer shows velocities or forces of masses other than avatars. */

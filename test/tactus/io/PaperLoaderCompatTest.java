@@ -67,7 +67,7 @@ class PaperLoaderCompatTest {
 
         for (XML e : walk(mat)) {
             Vect3D pos = new Vect3D(e.getDouble("initPos.x"), e.getDouble("initPos.y"), e.getDouble("initPos.z"));
-            Vect3D vel = new Vect3D(e.getDouble("posR.x"), e.getDouble("posR.y"), e.getDouble("posR.z"));
+            Vect3D vel = new Vect3D(e.getDouble("initVel.x"), e.getDouble("initVel.y"), e.getDouble("initVel.z"));
             String name = e.getString("name");
             switch (e.getParent().getName()) {
                 case "Ground3D":

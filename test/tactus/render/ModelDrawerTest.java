@@ -353,7 +353,7 @@ class ModelDrawerTest {
         g.fill(1, 2, 3);
         g.stroke(4, 5, 6);
         g.strokeWeight(7);
-        new ModelRenderer(new PApplet()).renderModel(m, g);
+        new ModelDrawer().draw(m, g);   // ModelRenderer then leaves the paper engine's style (LeftStyleTest)
         assertEquals(rgb(1, 2, 3), g.fillColor);
         assertEquals(rgb(4, 5, 6), g.strokeColor);
         assertEquals(7f, g.strokeWeight);
