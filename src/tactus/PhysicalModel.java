@@ -987,7 +987,7 @@ public class PhysicalModel {
 
     /** Adds a spring between two mass handles (see {@link #addSpring3D(String, double, double, String, String)}). */
     public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return addSpring3D(name, dist, K, nameOf(m1), nameOf(m2));
+        return addSpring3D(name, dist, K, distinct("addSpring3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a damper: force -Z (d(n) - d(n-1)) along the line between the masses (REAL_UNITS: N·s/m). */
@@ -997,7 +997,7 @@ public class PhysicalModel {
 
     /** Adds a damper between two mass handles. */
     public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return addDamper3D(name, Z, nameOf(m1), nameOf(m2));
+        return addDamper3D(name, Z, distinct("addDamper3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a spring and damper in parallel, with rest length {@code dist}. */
@@ -1007,7 +1007,7 @@ public class PhysicalModel {
 
     /** Adds a spring-damper between two mass handles. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addSpringDamper3D(name, dist, K, Z, distinct("addSpringDamper3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a spring-damper that acts along z only, on the signed difference z1 - z2 with rest value {@code dist}. */
@@ -1017,7 +1017,7 @@ public class PhysicalModel {
 
     /** Adds a 1D spring-damper between two mass handles. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper1D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addSpringDamper1D(name, dist, K, Z, distinct("addSpringDamper1D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a rope: a spring-damper that acts only while the masses are farther apart than {@code dist}. */
@@ -1027,7 +1027,7 @@ public class PhysicalModel {
 
     /** Adds a rope between two mass handles. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addRope3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addRope3D(name, dist, K, Z, distinct("addRope3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
@@ -1037,7 +1037,7 @@ public class PhysicalModel {
 
     /** Adds a contact between two mass handles. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addContact3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addContact3D(name, dist, K, Z, distinct("addContact3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a bubble: keeps m1 within radius {@code dist} of m2 with a spring-damper acting only outside it. */
@@ -1047,7 +1047,7 @@ public class PhysicalModel {
 
     /** Adds a bubble between two mass handles. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addBubble3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addBubble3D(name, dist, K, Z, distinct("addBubble3D", name, m1, m2), nameOf(m2));
     }
 
     /**
@@ -1078,17 +1078,35 @@ public class PhysicalModel {
 
     /** Adds an attractor between two mass handles. */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return addAttractor3D(name, dLim, attr, nameOf(m1), nameOf(m2));
+        return addAttractor3D(name, dLim, attr, distinct("addAttractor3D", name, m1, m2), nameOf(m2));
     }
 
     private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2,
                                 double K, double Z, double len, double aux, int axis) {
         ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
+        if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && matExists(m1)) {
+            // the paper's engine added a link that never acted (or, on a moving mass, made it NaN): add nothing
+            core.lenient.forgive(PaperLeniency.Kind.SELF_LINK, op, name, "cannot link mass \"" + m1 + "\" to itself",
+                    "the interaction was not added and null was returned");
+            return null;
+        }
         return structural(() -> {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
             return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
         });
+    }
+
+    /**
+     * @return the name of {@code m1}, after checking that the two handles are two masses: the handle calls are
+     *     Tactus's own, so a mass linked to itself stays an error there, strict or not
+     */
+    private String distinct(String op, String name, Mass m1, Mass m2) {
+        String a = nameOf(m1);
+        if (a.equals(nameOf(m2))) {
+            throw Check.fail(op, name, "cannot link mass \"" + a + "\" to itself");
+        }
+        return a;
     }
 
     private String nameOf(Mass m) {
@@ -1515,7 +1533,9 @@ public class PhysicalModel {
     public double getOsc3DDeltaPos(int i) {
         enter();
         try {
-            return core.paper.oscDisplacement("getOsc3DDeltaPos", core.dir.massAt("getOsc3DDeltaPos", i));
+            int id = core.dir.massAt("getOsc3DDeltaPos", i);
+            return core.params.paperIsOsc("getOsc3DDeltaPos", id, "0 was returned")
+                    ? core.paper.oscDisplacement("getOsc3DDeltaPos", id) : 0;
         } finally {
             exit();
         }
@@ -1525,7 +1545,9 @@ public class PhysicalModel {
     public int getPlaneOrientationAt(int i) {
         enter();
         try {
-            return core.params.planeAxis("getPlaneOrientationAt", core.dir.linkAt("getPlaneOrientationAt", i));
+            int id = core.dir.linkAt("getPlaneOrientationAt", i);
+            return core.params.paperIsPlane("getPlaneOrientationAt", id) ? core.params.planeAxis("getPlaneOrientationAt",
+                    id) : 0;
         } finally {
             exit();
         }
@@ -1535,7 +1557,9 @@ public class PhysicalModel {
     public double getPlanePositionAt(int i) {
         enter();
         try {
-            return core.params.planePosition("getPlanePositionAt", core.dir.linkAt("getPlanePositionAt", i));
+            int id = core.dir.linkAt("getPlanePositionAt", i);
+            return core.params.paperIsPlane("getPlanePositionAt", id) ? core.params.planePosition("getPlanePositionAt",
+                    id) : 0;
         } finally {
             exit();
         }
@@ -1673,6 +1697,16 @@ public class PhysicalModel {
         return getParamController(name);
     }
 
+    /** @return true when a subset of masses (or of interactions) with this name exists. */
+    private boolean hasSubset(String subset, boolean mats) {
+        enter();
+        try {
+            return mats ? core.subsets.isMatSubset(subset) : core.subsets.isLinkSubset(subset);
+        } finally {
+            exit();
+        }
+    }
+
     /** @return true when a mass or link subset with this name exists. */
     boolean subsetExists(String subset) {
         enter();
@@ -1699,7 +1733,7 @@ public class PhysicalModel {
     public double getMatMassAt(int i) {
         enter();
         try {
-            return core.params.mass("getMatMassAt", core.dir.massAt("getMatMassAt", i));
+            return core.params.paperMass("getMatMassAt", core.dir.massAt("getMatMassAt", i));
         } finally {
             exit();
         }
@@ -1709,7 +1743,7 @@ public class PhysicalModel {
     public void setMatMass(String name, double mass) {
         enterChange();
         try {
-            core.params.setMass("setMatMass", core.dir.massId("setMatMass", name), mass);
+            core.params.paperSetMass("setMatMass", core.dir.massId("setMatMass", name), mass);
         } finally {
             exit();
         }
@@ -1719,7 +1753,7 @@ public class PhysicalModel {
     public void setMatMassAt(int i, double mass) {
         enterChange();
         try {
-            core.params.setMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
+            core.params.paperSetMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
         } finally {
             exit();
         }
@@ -1741,7 +1775,10 @@ public class PhysicalModel {
         Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
         enterChange();
         try {
-            core.params.setOsc("setMatStiffnessAt", core.dir.massAt("setMatStiffnessAt", i), K, Double.NaN);
+            int id = core.dir.massAt("setMatStiffnessAt", i);
+            if (core.params.paperIsOsc("setMatStiffnessAt", id, "nothing was changed")) {
+                core.params.setOsc("setMatStiffnessAt", id, K, Double.NaN);
+            }
         } finally {
             exit();
         }
@@ -1763,7 +1800,10 @@ public class PhysicalModel {
         Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
         enterChange();
         try {
-            core.params.setOsc("setMatDampingAt", core.dir.massAt("setMatDampingAt", i), Double.NaN, Z);
+            int id = core.dir.massAt("setMatDampingAt", i);
+            if (core.params.paperIsOsc("setMatDampingAt", id, "nothing was changed")) {
+                core.params.setOsc("setMatDampingAt", id, Double.NaN, Z);
+            }
         } finally {
             exit();
         }
@@ -1783,7 +1823,9 @@ public class PhysicalModel {
     public double getMatStiffnessAt(int i) {
         enter();
         try {
-            return core.params.oscStiffness("getMatStiffnessAt", core.dir.massAt("getMatStiffnessAt", i));
+            int id = core.dir.massAt("getMatStiffnessAt", i);
+            return core.params.paperIsOsc("getMatStiffnessAt", id, "0 was returned")
+                    ? core.params.oscStiffness("getMatStiffnessAt", id) : 0;
         } finally {
             exit();
         }
@@ -1803,7 +1845,9 @@ public class PhysicalModel {
     public double getMatDampingAt(int i) {
         enter();
         try {
-            return core.params.oscDamping("getMatDampingAt", core.dir.massAt("getMatDampingAt", i));
+            int id = core.dir.massAt("getMatDampingAt", i);
+            return core.params.paperIsOsc("getMatDampingAt", id, "0 was returned")
+                    ? core.params.oscDamping("getMatDampingAt", id) : 0;
         } finally {
             exit();
         }
@@ -2002,8 +2046,9 @@ public class PhysicalModel {
         enterChange();
         try {
             int id = core.dir.massId("setHapticPosition", name);
-            core.state.requireInput("setHapticPosition", id);
-            core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+            if (core.state.paperIsInput("setHapticPosition", id, "nothing was changed")) {
+                core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+            }
         } finally {
             exit();
         }
@@ -2014,7 +2059,7 @@ public class PhysicalModel {
      * (REAL_UNITS: N), and resets the accumulator.
      */
     public Vect3D getHapticForce(String name) {
-        return getHapticForce(name, new Vect3D());
+        return hapticForce(name, new Vect3D(), true);
     }
 
     /**
@@ -2041,10 +2086,19 @@ public class PhysicalModel {
      * (see {@link #getHapticForce(String)}) and returns it.
      */
     public Vect3D getHapticForce(String name, Vect3D out) {
+        return hapticForce(name, out, false);
+    }
+
+    /** Takes an avatar's force; the paper's call (paper = true) answers zero for a mass that is not an input. */
+    private Vect3D hapticForce(String name, Vect3D out, boolean paper) {
         enter();
         try {
             int id = core.dir.massId("getHapticForce", name);
-            core.state.requireInput("getHapticForce", id);
+            if (!paper) {
+                core.state.requireInput("getHapticForce", id);
+            } else if (!core.state.paperIsInput("getHapticForce", id, "a zero force was returned")) {
+                return out.set(0, 0, 0);
+            }
             return core.state.takeAvatarForce(id, out);
         } finally {
             exit();
@@ -2105,6 +2159,11 @@ public class PhysicalModel {
     /** Creates an empty named group of masses, for grouped parameter changes. */
     public void createMatSubset(String subset) {
         Check.name("createMatSubset", subset);
+        if (!core.lenient.strict() && hasSubset(subset, true)) {
+            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createMatSubset", subset,
+                    "a subset with this name already exists", "the subset was kept as it is");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.createMatSubset(subset);
         });
@@ -2113,6 +2172,11 @@ public class PhysicalModel {
     /** Creates an empty named group of interactions. */
     public void createLinkSubset(String subset) {
         Check.name("createLinkSubset", subset);
+        if (!core.lenient.strict() && hasSubset(subset, false)) {
+            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createLinkSubset", subset,
+                    "a subset with this name already exists", "the subset was kept as it is");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.createLinkSubset(subset);
         });
@@ -2120,6 +2184,11 @@ public class PhysicalModel {
 
     /** Adds a mass to a mass subset. */
     public void addMatToSubset(String mass, String subset) {
+        if (!core.lenient.strict() && !matExists(mass)) {
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", String.valueOf(mass),
+                    "no mass with this name", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massId("addMatToSubset", mass), subset);
         });
@@ -2127,6 +2196,11 @@ public class PhysicalModel {
 
     /** Adds the mass at an index to a mass subset. */
     public void addMatToSubset(int i, String subset) {
+        if (i == -1 && !core.lenient.strict()) { // getMatIndex's answer for a name that is not in the model
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", "-1",
+                    "mass index out of range", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massAt("addMatToSubset", i), subset);
         });
@@ -2134,6 +2208,11 @@ public class PhysicalModel {
 
     /** Adds an interaction (the first one with this name) to a link subset. */
     public void addLinkToSubset(String link, String subset) {
+        if (!core.lenient.strict() && !linkExists(link)) {
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", String.valueOf(link),
+                    "no interaction with this name", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkId("addLinkToSubset", link), subset);
         });
@@ -2141,6 +2220,11 @@ public class PhysicalModel {
 
     /** Adds the interaction at an index to a link subset. */
     public void addLinkToSubset(int i, String subset) {
+        if (i == -1 && !core.lenient.strict()) { // getLinkIndex's answer for a name that is not in the model
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", "-1",
+                    "interaction index out of range", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkAt("addLinkToSubset", i), subset);
         });
@@ -2172,22 +2256,22 @@ public class PhysicalModel {
 
     /** Sets the inertia of every mass in a mass subset. */
     public void changeMassParamOfSubset(double mass, String subset) {
-        changeParamOfSubset(mass, subset, "mass");
+        changeSubsetParam("changeMassParamOfSubset", mass, subset, "mass");
     }
 
     /** Sets the stiffness of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeStiffnessParamOfSubset(double K, String subset) {
-        changeParamOfSubset(K, subset, "stiffness");
+        changeSubsetParam("changeStiffnessParamOfSubset", K, subset, "stiffness");
     }
 
     /** Sets the damping of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeDampingParamOfSubset(double Z, String subset) {
-        changeParamOfSubset(Z, subset, "damping");
+        changeSubsetParam("changeDampingParamOfSubset", Z, subset, "damping");
     }
 
     /** Sets the length parameter (rest length, threshold, radius) of every interaction in a link subset. */
     public void changeDistParamOfSubset(double d, String subset) {
-        changeParamOfSubset(d, subset, "dist");
+        changeSubsetParam("changeDistParamOfSubset", d, subset, "dist");
     }
 
     /**
@@ -2195,9 +2279,13 @@ public class PhysicalModel {
      * "dist". Every member is checked before any is changed, so an error leaves the model unchanged.
      */
     public void changeParamOfSubset(double value, String subset, String param) {
+        changeSubsetParam("changeParamOfSubset", value, subset, param);
+    }
+
+    private void changeSubsetParam(String op, double value, String subset, String param) {
         enterChange();
         try {
-            core.subsets.changeParam("changeParamOfSubset", value, subset, param);
+            core.subsets.changeParam(op, value, subset, param);
         } finally {
             exit();
         }
@@ -2281,6 +2369,40 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    // =================================================================== strictness
+
+    /**
+     * Chooses what the calls of the paper's API do with the mistakes the paper's engine (miPhysics) silently
+     * ignored. Forgiving (false, the default): the call does what the original did, and the first time each kind of
+     * problem occurs one warning goes to standard error, naming the call, the element and what was skipped. The cases: an
+     * interaction from a mass to itself ({@code addBubble3D("b", ..., "gnd", "gnd")} and the other two-mass
+     * {@code add...} calls: nothing is added, null is returned); a subset never created given to
+     * {@code changeStiffnessParamOfSubset}, {@code changeDampingParamOfSubset}, {@code changeDistXBetweenSubset},
+     * {@code getParamValueOfSubset} (returns -1) or a controller; a subset created twice; a mass or interaction that
+     * is not in the model given to {@code addMatToSubset} / {@code addLinkToSubset}; a parameter a member does not
+     * have (the mass of a ground in {@code changeMassParamOfSubset}, {@code setMatParamsForName},
+     * {@code setMatMass(At)}; the stiffness of a Mass3D; the damping of a Spring3D ...: that member is left alone,
+     * the others change; {@code getMatMassAt} on a ground returns 1, {@code getMatStiffnessAt} /
+     * {@code getMatDampingAt} of a mass that is not an oscillator return 0); an unknown parameter name in
+     * {@code changeParamOfSubset}; {@code setHapticPosition} / {@code getHapticForce} on a mass that is not an input.
+     * Nothing is ever half done: a skipped call changes nothing, a partly skipped one changes exactly the members
+     * that have the parameter.
+     *
+     * <p>Strict (true): each of these calls throws the {@link IllegalArgumentException} that names the element and
+     * the problem, and leaves the model unchanged. The calls that are Tactus's own (handles, contact groups,
+     * {@code getMatMass(String)}, ...) are always strict. docs/coming-from-miphysics.md lists every case.
+     *
+     * @param strict true to throw, false (the default) to forgive as the paper's engine did
+     */
+    public void setStrict(boolean strict) {
+        core.lenient.setStrict(strict);
+    }
+
+    /** @return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)}). */
+    public boolean isStrict() {
+        return core.lenient.strict();
     }
 
     // =================================================================== stability and divergence
