@@ -29,7 +29,9 @@ final class PaperLeniency {
         /** A parameter name that is none of "mass", "stiffness", "damping", "dist". */
         UNKNOWN_PARAMETER_NAME,
         /** A haptic-input call on a mass that is not an input module. */
-        NOT_AN_INPUT
+        NOT_AN_INPUT,
+        /** An index past the last mass or interaction, in an index getter of the paper's API. */
+        INDEX_PAST_THE_END
     }
 
     private volatile boolean strict;

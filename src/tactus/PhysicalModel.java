@@ -1098,6 +1098,31 @@ public class PhysicalModel {
     }
 
     /**
+     * @return the id of the mass at index i; or, for an index past the end (i &ge; the mass count), -1 after a
+     *     warning, as the paper's index getters answered a default there (strict mode: the usual exception)
+     */
+    private int paperMassAt(String op, int i, String skipped) {
+        int n = core.dir.mats.size();
+        if (i >= n && !core.lenient.strict()) {
+            core.lenient.forgive(PaperLeniency.Kind.INDEX_PAST_THE_END, op, String.valueOf(i), "mass index out of range"
+                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
+            return -1;
+        }
+        return core.dir.massAt(op, i);
+    }
+
+    /** @return the id of the interaction at index i; or -1 for an index past the end (see {@link #paperMassAt}). */
+    private int paperLinkAt(String op, int i, String skipped) {
+        int n = core.dir.links.size();
+        if (i >= n && !core.lenient.strict()) {
+            core.lenient.forgive(PaperLeniency.Kind.INDEX_PAST_THE_END, op, String.valueOf(i),
+                    "interaction index out of range" + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
+            return -1;
+        }
+        return core.dir.linkAt(op, i);
+    }
+
+    /**
      * @return the name of {@code m1}, after checking that the two handles are two masses: the handle calls are
      *     Tactus's own, so a mass linked to itself stays an error there, strict or not
      */
@@ -1216,7 +1241,11 @@ public class PhysicalModel {
     public String getMatNameAt(int i) {
         enter();
         try {
-            return core.dir.massName(core.dir.massAt("getMatNameAt", i));
+            int id = paperMassAt("getMatNameAt", i, "\"None\" was returned");
+            if (id < 0) {
+                return "None";
+            }
+            return core.dir.massName(id);
         } finally {
             exit();
         }
@@ -1226,7 +1255,11 @@ public class PhysicalModel {
     public String getLinkNameAt(int i) {
         enter();
         try {
-            return core.dir.linkName(core.dir.linkAt("getLinkNameAt", i));
+            int id = paperLinkAt("getLinkNameAt", i, "\"None\" was returned");
+            if (id < 0) {
+                return "None";
+            }
+            return core.dir.linkName(id);
         } finally {
             exit();
         }
@@ -1236,7 +1269,11 @@ public class PhysicalModel {
     public matModuleType getMatTypeAt(int i) {
         enter();
         try {
-            return ModuleTypes.of(core.dir.massKind(core.dir.massAt("getMatTypeAt", i)));
+            int id = paperMassAt("getMatTypeAt", i, "UNDEFINED was returned");
+            if (id < 0) {
+                return matModuleType.UNDEFINED;
+            }
+            return ModuleTypes.of(core.dir.massKind(id));
         } finally {
             exit();
         }
@@ -1246,7 +1283,11 @@ public class PhysicalModel {
     public linkModuleType getLinkTypeAt(int i) {
         enter();
         try {
-            return ModuleTypes.of(core.dir.linkKind(core.dir.linkAt("getLinkTypeAt", i)));
+            int id = paperLinkAt("getLinkTypeAt", i, "UNDEFINED was returned");
+            if (id < 0) {
+                return linkModuleType.UNDEFINED;
+            }
+            return ModuleTypes.of(core.dir.linkKind(id));
         } finally {
             exit();
         }
@@ -1290,7 +1331,11 @@ public class PhysicalModel {
     public Vect3D getMatPosAt(int i) {
         enter();
         try {
-            return core.state.position(core.dir.massAt("getMatPosAt", i), new Vect3D());
+            int id = paperMassAt("getMatPosAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.position(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1310,7 +1355,11 @@ public class PhysicalModel {
     public Vect3D getMatVelAt(int i) {
         enter();
         try {
-            return core.state.velocity(core.dir.massAt("getMatVelAt", i), new Vect3D());
+            int id = paperMassAt("getMatVelAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.velocity(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1330,7 +1379,11 @@ public class PhysicalModel {
     public Vect3D getMatFrcAt(int i) {
         enter();
         try {
-            return core.state.force(core.dir.massAt("getMatFrcAt", i), new Vect3D());
+            int id = paperMassAt("getMatFrcAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.force(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1450,7 +1503,11 @@ public class PhysicalModel {
     public Vect3D getLinkPos1At(int i) {
         enter();
         try {
-            return core.paper.linkEnd(core.dir.linkAt("getLinkPos1At", i), true, new Vect3D());
+            int id = paperLinkAt("getLinkPos1At", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.linkEnd(id, true, new Vect3D());
         } finally {
             exit();
         }
@@ -1463,7 +1520,11 @@ public class PhysicalModel {
     public Vect3D getLinkPos2At(int i) {
         enter();
         try {
-            return core.paper.linkEnd(core.dir.linkAt("getLinkPos2At", i), false, new Vect3D());
+            int id = paperLinkAt("getLinkPos2At", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.linkEnd(id, false, new Vect3D());
         } finally {
             exit();
         }
@@ -1473,7 +1534,11 @@ public class PhysicalModel {
     public int getLinkMat1IdxAt(int i) {
         enter();
         try {
-            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat1IdxAt", i), true);
+            int id = paperLinkAt("getLinkMat1IdxAt", i, "-1 was returned");
+            if (id < 0) {
+                return -1;
+            }
+            return core.paper.linkEndIndex(id, true);
         } finally {
             exit();
         }
@@ -1483,7 +1548,11 @@ public class PhysicalModel {
     public int getLinkMat2IdxAt(int i) {
         enter();
         try {
-            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat2IdxAt", i), false);
+            int id = paperLinkAt("getLinkMat2IdxAt", i, "-1 was returned");
+            if (id < 0) {
+                return -1;
+            }
+            return core.paper.linkEndIndex(id, false);
         } finally {
             exit();
         }
@@ -1493,7 +1562,11 @@ public class PhysicalModel {
     public String getLinkMat1NameAt(int i) {
         enter();
         try {
-            return core.paper.linkEndName(core.dir.linkAt("getLinkMat1NameAt", i), true);
+            int id = paperLinkAt("getLinkMat1NameAt", i, "\"\" was returned");
+            if (id < 0) {
+                return "";
+            }
+            return core.paper.linkEndName(id, true);
         } finally {
             exit();
         }
@@ -1503,7 +1576,11 @@ public class PhysicalModel {
     public String getLinkMat2NameAt(int i) {
         enter();
         try {
-            return core.paper.linkEndName(core.dir.linkAt("getLinkMat2NameAt", i), false);
+            int id = paperLinkAt("getLinkMat2NameAt", i, "\"\" was returned");
+            if (id < 0) {
+                return "";
+            }
+            return core.paper.linkEndName(id, false);
         } finally {
             exit();
         }
@@ -1513,7 +1590,11 @@ public class PhysicalModel {
     public Vect3D getMatDelayedPosAt(int i) {
         enter();
         try {
-            return core.paper.delayedPosition(core.dir.massAt("getMatDelayedPosAt", i), new Vect3D());
+            int id = paperMassAt("getMatDelayedPosAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.delayedPosition(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1545,7 +1626,10 @@ public class PhysicalModel {
     public int getPlaneOrientationAt(int i) {
         enter();
         try {
-            int id = core.dir.linkAt("getPlaneOrientationAt", i);
+            int id = paperLinkAt("getPlaneOrientationAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
             return core.params.paperIsPlane("getPlaneOrientationAt", id) ? core.params.planeAxis("getPlaneOrientationAt",
                     id) : 0;
         } finally {
@@ -1557,7 +1641,10 @@ public class PhysicalModel {
     public double getPlanePositionAt(int i) {
         enter();
         try {
-            int id = core.dir.linkAt("getPlanePositionAt", i);
+            int id = paperLinkAt("getPlanePositionAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
             return core.params.paperIsPlane("getPlanePositionAt", id) ? core.params.planePosition("getPlanePositionAt",
                     id) : 0;
         } finally {
@@ -1733,7 +1820,11 @@ public class PhysicalModel {
     public double getMatMassAt(int i) {
         enter();
         try {
-            return core.params.paperMass("getMatMassAt", core.dir.massAt("getMatMassAt", i));
+            int id = paperMassAt("getMatMassAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperMass("getMatMassAt", id);
         } finally {
             exit();
         }
@@ -1775,7 +1866,10 @@ public class PhysicalModel {
         Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
         enterChange();
         try {
-            int id = core.dir.massAt("setMatStiffnessAt", i);
+            int id = paperMassAt("setMatStiffnessAt", i, "nothing was changed");
+            if (id < 0) {
+                return;
+            }
             if (core.params.paperIsOsc("setMatStiffnessAt", id, "nothing was changed")) {
                 core.params.setOsc("setMatStiffnessAt", id, K, Double.NaN);
             }
@@ -1800,7 +1894,10 @@ public class PhysicalModel {
         Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
         enterChange();
         try {
-            int id = core.dir.massAt("setMatDampingAt", i);
+            int id = paperMassAt("setMatDampingAt", i, "nothing was changed");
+            if (id < 0) {
+                return;
+            }
             if (core.params.paperIsOsc("setMatDampingAt", id, "nothing was changed")) {
                 core.params.setOsc("setMatDampingAt", id, Double.NaN, Z);
             }
@@ -1823,7 +1920,10 @@ public class PhysicalModel {
     public double getMatStiffnessAt(int i) {
         enter();
         try {
-            int id = core.dir.massAt("getMatStiffnessAt", i);
+            int id = paperMassAt("getMatStiffnessAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
             return core.params.paperIsOsc("getMatStiffnessAt", id, "0 was returned")
                     ? core.params.oscStiffness("getMatStiffnessAt", id) : 0;
         } finally {
@@ -1845,7 +1945,10 @@ public class PhysicalModel {
     public double getMatDampingAt(int i) {
         enter();
         try {
-            int id = core.dir.massAt("getMatDampingAt", i);
+            int id = paperMassAt("getMatDampingAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
             return core.params.paperIsOsc("getMatDampingAt", id, "0 was returned")
                     ? core.params.oscDamping("getMatDampingAt", id) : 0;
         } finally {
@@ -1869,7 +1972,11 @@ public class PhysicalModel {
     public double getLinkDistanceAt(int i) {
         enter();
         try {
-            return core.params.linkDistance(core.dir.linkAt("getLinkDistanceAt", i));
+            int id = paperLinkAt("getLinkDistanceAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkDistance(id);
         } finally {
             exit();
         }
@@ -1889,7 +1996,11 @@ public class PhysicalModel {
     public double getLinkElongationAt(int i) {
         enter();
         try {
-            return core.params.linkElongation(core.dir.linkAt("getLinkElongationAt", i));
+            int id = paperLinkAt("getLinkElongationAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkElongation(id);
         } finally {
             exit();
         }
@@ -1909,7 +2020,11 @@ public class PhysicalModel {
     public double getLinkStiffnessAt(int i) {
         enter();
         try {
-            return core.params.linkStiffness(core.dir.linkAt("getLinkStiffnessAt", i));
+            int id = paperLinkAt("getLinkStiffnessAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkStiffness(id);
         } finally {
             exit();
         }
@@ -1929,7 +2044,11 @@ public class PhysicalModel {
     public double getLinkDampingAt(int i) {
         enter();
         try {
-            return core.params.linkDamping(core.dir.linkAt("getLinkDampingAt", i));
+            int id = paperLinkAt("getLinkDampingAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkDamping(id);
         } finally {
             exit();
         }
@@ -1949,7 +2068,11 @@ public class PhysicalModel {
     public double getLinkDRestAt(int i) {
         enter();
         try {
-            return core.params.linkLength(core.dir.linkAt("getLinkDRestAt", i));
+            int id = paperLinkAt("getLinkDRestAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkLength(id);
         } finally {
             exit();
         }

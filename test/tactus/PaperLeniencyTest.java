@@ -311,6 +311,69 @@ class PaperLeniencyTest {
     }
 
     @Test
+    void indexGettersPastTheEndAnswerTheOriginalsDefaults() {
+        PhysicalModel m = scene();
+        int nm = m.getNumberOfMats();
+        int nl = m.getNumberOfLinks();
+        String before = ModelState.of(m, "all", "links");
+        String err = forgiving(m, x -> {
+            for (int i = 0; i <= nm; i++) { // the paper's off-by-one loop
+                x.getMatPosAt(i);
+            }
+            assertEquals("None", x.getMatNameAt(nm));
+            assertEquals(matModuleType.UNDEFINED, x.getMatTypeAt(nm));
+            assertEquals(0, x.getMatPosAt(nm).norm(), 0);
+            assertEquals(0, x.getMatVelAt(nm).norm(), 0);
+            assertEquals(0, x.getMatFrcAt(nm).norm(), 0);
+            assertEquals(0, x.getMatDelayedPosAt(nm + 3).norm(), 0);
+            assertEquals(0, x.getMatMassAt(nm), 0);
+            assertEquals(0, x.getMatStiffnessAt(nm), 0);
+            assertEquals(0, x.getMatDampingAt(nm), 0);
+            x.setMatStiffnessAt(nm, 1);
+            x.setMatDampingAt(nm, 1);
+            assertEquals("None", x.getLinkNameAt(nl));
+            assertEquals(linkModuleType.UNDEFINED, x.getLinkTypeAt(nl));
+            assertEquals(0, x.getLinkPos1At(nl).norm(), 0);
+            assertEquals(0, x.getLinkPos2At(nl).norm(), 0);
+            assertEquals(-1, x.getLinkMat1IdxAt(nl));
+            assertEquals(-1, x.getLinkMat2IdxAt(nl));
+            assertEquals("", x.getLinkMat1NameAt(nl));
+            assertEquals("", x.getLinkMat2NameAt(nl));
+            assertEquals(0, x.getLinkStiffnessAt(nl), 0);
+            assertEquals(0, x.getLinkDampingAt(nl), 0);
+            assertEquals(0, x.getLinkDistanceAt(nl), 0);
+            assertEquals(0, x.getLinkElongationAt(nl), 0);
+            assertEquals(0, x.getLinkDRestAt(nl), 0);
+            assertEquals(0, x.getPlaneOrientationAt(nl));
+            assertEquals(0, x.getPlanePositionAt(nl), 0);
+        });
+        assertEquals(before, ModelState.of(m, "all", "links"));
+        assertEquals(1, warnings(err), err);
+        assertTrue(err.contains("getMatPosAt(\"" + nm + "\"): mass index out of range 0.." + (nm - 1)), err);
+        // a negative index crashed the original: it stays an error, and setters past the end too
+        assertThrows(IllegalArgumentException.class, () -> m.getMatPosAt(-1));
+        assertThrows(IllegalArgumentException.class, () -> m.setMatMassAt(nm, 2));
+        assertThrows(IllegalArgumentException.class, () -> m.setLinkStiffnessAt(nl, 2));
+        strictThrows(x -> x.getMatNameAt(x.getNumberOfMats()), "out of range");
+        strictThrows(x -> x.getLinkStiffnessAt(x.getNumberOfLinks()), "out of range");
+    }
+
+    @Test
+    void getParamValueOfSubsetAnswersAsTheOriginal() {
+        PhysicalModel m = scene();
+        m.createLinkSubset("empty");
+        String err = forgiving(m, x -> {
+            assertEquals(-1, x.getParamValueOfSubset("empty", "stiffness"), 0);
+            assertEquals(1, x.getParamValueOfSubset("all", "mass"), 0, "the first member is the ground");
+            assertEquals(-1, x.getParamValueOfSubset("all", "stiffness"), 0);
+            assertEquals(0, x.getParamValueOfSubset("links", "dist") - 1, 0, "s1's rest length");
+            assertEquals(-1, x.getParamValueOfSubset("links", "mass"), 0);
+        });
+        assertEquals(2, warnings(err), err); // an empty subset; parameters the first member lacks
+        strictThrows(x -> x.getParamValueOfSubset("all", "mass"), "gnd");
+    }
+
+    @Test
     void aRampOnARealtimeModelSkipsTheGroundsToo() throws Exception {
         PhysicalModel m = scene();
         m.addParamController("ramp", "all", "mass", 0.01f);
