@@ -15,7 +15,9 @@ import tactus.engine.MassKind;
  * {@link #draw_physics()} once per frame, or with {@link #computeStep()} / {@link #computeNSteps(int)} from a
  * haptic or audio loop. Parameters are given in the unit system chosen at construction ({@link paramSystem});
  * initial velocities are always in units per second. Bad arguments raise an {@link IllegalArgumentException}
- * that names the element and the value, and leave the model unchanged.
+ * that names the element and the value, and leave the model unchanged, except the mistakes that the paper's engine
+ * silently ignored (a mass linked to itself, a subset never created, the mass of a ground, ...): the paper's calls
+ * forgive those as it did, with one warning per kind, unless the model is strict ({@link #setStrict(boolean)}).
  *
  * <p>Mass names are unique. Interaction names may repeat, as in the paper's sketches (seventy contacts all
  * called "col"): a call that addresses an interaction by a shared name acts on the first one added that is
@@ -2399,7 +2401,10 @@ public class PhysicalModel {
 
     /**
      * Sets one parameter on every member of a subset. {@code param} is "mass", "stiffness", "damping" or
-     * "dist". Every member is checked before any is changed, so an error leaves the model unchanged.
+     * "dist". Every member is checked before any is changed, so an error leaves the model unchanged. As in the paper's
+     * engine, members without the parameter (the grounds of a mass change) are left alone, an unknown subset is
+     * ignored for "stiffness" and "damping", and an unknown parameter name is ignored, each with one warning (see
+     * {@link #setStrict(boolean)}).
      */
     public void changeParamOfSubset(double value, String subset, String param) {
         changeSubsetParam("changeParamOfSubset", value, subset, param);
@@ -2509,8 +2514,9 @@ public class PhysicalModel {
      * {@code setMatMass(At)}; the stiffness of a Mass3D; the damping of a Spring3D ...: that member is left alone,
      * the others change; {@code getMatMassAt} on a ground returns 1, {@code getMatStiffnessAt} /
      * {@code getMatDampingAt} of a mass that is not an oscillator return 0); an unknown parameter name in
-     * {@code changeParamOfSubset}; {@code setHapticPosition} / {@code getHapticForce} on a mass that is not an input.
-     * Nothing is ever half done: a skipped call changes nothing, a partly skipped one changes exactly the members
+     * {@code changeParamOfSubset}; {@code setHapticPosition} / {@code getHapticForce} on a mass that is not an input;
+     * an index past the end in the index getters ({@code getMatPosAt}, {@code getLinkNameAt}, ...: the original's
+     * default, "None", a zero vector, -1 or 0). Nothing is ever half done: a skipped call changes nothing, a partly skipped one changes exactly the members
      * that have the parameter.
      *
      * <p>Strict (true): each of these calls throws the {@link IllegalArgumentException} that names the element and
