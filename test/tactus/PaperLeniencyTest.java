@@ -374,6 +374,27 @@ class PaperLeniencyTest {
     }
 
     @Test
+    void twoTopoGeneratorsFillingOneSubsetWarnNothing() {
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        String err = forgiving(m, x -> {
+            for (String prefix : new String[] {"a", "b"}) {
+                TopoGenerator q = new TopoGenerator(x, prefix, "l");
+                q.setDim(2, 1, 1, 1);
+                q.setParams(1, 0.01, 0.001);
+                q.setGeometry(1, 1);
+                q.setTranslation(0, "a".equals(prefix) ? 0 : 5, 0);
+                q.setMatSubsetName("shared");
+                q.setLinkSubsetName("sharedLinks");
+                q.generate();
+            }
+        });
+        assertEquals("", err);
+        assertEquals(4, m.getSubsetMembers("shared").length);
+        assertEquals(2, m.getSubsetMembers("sharedLinks").length);
+        assertEquals(0, m.core.lenient.forgivenCount());
+    }
+
+    @Test
     void aRampOnARealtimeModelSkipsTheGroundsToo() throws Exception {
         PhysicalModel m = scene();
         m.addParamController("ramp", "all", "mass", 0.01f);
