@@ -11,7 +11,11 @@ import java.util.EnumSet;
  * ({@link PhysicalModel#setStrict(boolean)}) the same calls throw the {@link IllegalArgumentException} they threw
  * before, with the same message. docs/coming-from-miphysics.md lists every case.
  *
- * <p>Thread-safe. Called from facade calls only, on the caller's thread, never on the step, audio or haptic path.
+ * <p>Thread-safe. Called from facade calls, on the caller's thread; the engine's stepping never calls it. A ramp of a
+ * {@link ParamController} meets it on the thread that triggers the ramp (the realtime path resolves its members
+ * there) or, outside realtime stepping, at each ramp step: its {@link ParamController#init(float)} (which a
+ * {@link MidiController} calls) prints the warning first, so the steps find it already printed. The only prints left
+ * on an audio thread are those of forgiven calls that a sketch makes itself from its audio callback (once each).
  */
 final class PaperLeniency {
     /** The kinds of problem the paper's engine ignored. */
@@ -63,25 +67,44 @@ final class PaperLeniency {
         if (strict) {
             throw Check.fail(op, element, problem);
         }
-        String message = null;
+        record(kind, op, element, 0, problem, skipped);
+    }
+
+    /**
+     * Forgives one call that named an index past the end, as {@link #forgive} does; the messages show {@code op(i)},
+     * as the index calls' own exceptions do.
+     */
+    void forgiveIndex(String op, int index, String problem, String skipped) {
+        if (strict) {
+            throw new IllegalArgumentException(op + "(" + index + "): " + problem);
+        }
+        record(Kind.INDEX_PAST_THE_END, op, null, index, problem, skipped);
+    }
+
+    /**
+     * Counts a forgiven call and prints its warning if it is the first of its kind (the text is built only then: a
+     * call forgiven again costs a count).
+     */
+    private void record(Kind kind, String op, String element, int index, String problem, String skipped) {
+        boolean first;
         synchronized (warned) {
             forgiven++;
-            if (warned.add(kind)) {
+            first = warned.add(kind);
+            if (first) {
                 printed++;
-                message = warning(op, element, problem, skipped);
             }
         }
-        if (message != null) {
-            System.err.println(message);
+        if (first) {
+            String call = element == null ? op + "(" + index + ")" : op + "(\"" + element + "\")";
+            System.err.println(warning(call, problem, skipped));
             System.err.flush();
         }
     }
 
-    /** @return the text printed the first time a kind of problem occurs. */
-    static String warning(String op, String element, String problem, String skipped) {
-        return "Tactus: " + op + "(\"" + element + "\"): " + problem + "; " + skipped + ", as the paper's engine"
-                + " did (printed once per model for this kind of problem; PhysicalModel.setStrict(true) makes it an"
-                + " exception)";
+    /** @return the text printed the first time a kind of problem occurs; {@code call} is for example op("name"). */
+    static String warning(String call, String problem, String skipped) {
+        return "Tactus: " + call + ": " + problem + "; " + skipped + ", as the paper's engine did (printed once per"
+                + " model for this kind of problem; PhysicalModel.setStrict(true) makes it an exception)";
     }
 
     /** @return the number of calls forgiven so far. */

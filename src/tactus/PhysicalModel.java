@@ -1106,7 +1106,7 @@ public class PhysicalModel {
     private int paperMassAt(String op, int i, String skipped) {
         int n = core.dir.mats.size();
         if (i >= n && !core.lenient.strict()) {
-            core.lenient.forgive(PaperLeniency.Kind.INDEX_PAST_THE_END, op, String.valueOf(i), "mass index out of range"
+            core.lenient.forgiveIndex(op, i, "mass index out of range"
                     + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
             return -1;
         }
@@ -1117,8 +1117,8 @@ public class PhysicalModel {
     private int paperLinkAt(String op, int i, String skipped) {
         int n = core.dir.links.size();
         if (i >= n && !core.lenient.strict()) {
-            core.lenient.forgive(PaperLeniency.Kind.INDEX_PAST_THE_END, op, String.valueOf(i),
-                    "interaction index out of range" + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
+            core.lenient.forgiveIndex(op, i, "interaction index out of range"
+                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
             return -1;
         }
         return core.dir.linkAt(op, i);

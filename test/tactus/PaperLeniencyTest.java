@@ -349,7 +349,7 @@ class PaperLeniencyTest {
         });
         assertEquals(before, ModelState.of(m, "all", "links"));
         assertEquals(1, warnings(err), err);
-        assertTrue(err.contains("getMatPosAt(\"" + nm + "\"): mass index out of range 0.." + (nm - 1)), err);
+        assertTrue(err.contains("getMatPosAt(" + nm + "): mass index out of range 0.." + (nm - 1)), err);
         // a negative index crashed the original: it stays an error, and setters past the end too
         assertThrows(IllegalArgumentException.class, () -> m.getMatPosAt(-1));
         assertThrows(IllegalArgumentException.class, () -> m.setMatMassAt(nm, 2));
