@@ -25,7 +25,8 @@ public class AbstractController {
      * Creates a controller of one parameter of a subset.
      *
      * @param pm the model
-     * @param subsetName an existing mass or link subset
+     * @param subsetName a mass or link subset (one that does not exist is forgiven as in the paper's engine, with
+     *     one warning, unless the model is strict: {@link PhysicalModel#setStrict(boolean)})
      * @param param "mass", "stiffness", "damping", "dist" or "distX"
      */
     public AbstractController(PhysicalModel pm, String subsetName, String param) {
@@ -38,7 +39,12 @@ public class AbstractController {
                     + "\"stiffness\", \"damping\", \"dist\" or \"distX\", got \"" + param + "\"");
         }
         if (!pm.subsetExists(subsetName)) {
-            throw new IllegalArgumentException("controller of \"" + subsetName + "\": no such subset");
+            if (pm.isStrict() || subsetName == null) {
+                throw new IllegalArgumentException("controller of \"" + subsetName + "\": no such subset");
+            }
+            // the paper's engine made the controller anyway; its changes go through the same forgiving calls
+            pm.core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, "controller", subsetName, "no such subset",
+                    "the controller was made, and changes nothing");
         }
         this.pm = pm;
         this.subsetName = subsetName;

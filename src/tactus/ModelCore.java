@@ -23,6 +23,8 @@ final class ModelCore {
     final SnapshotWriter snapshots;
     final PaperQueries paper;
     final GravityNote gravityNote;
+    /** The calls of the paper's API forgiven as the paper's engine did, and the warnings printed once each. */
+    final PaperLeniency lenient = new PaperLeniency();
     /** Parameter controllers by name, in creation order (see {@link ParamController}). */
     private final java.util.LinkedHashMap<String, ParamController> controllers = new java.util.LinkedHashMap<>();
     /** The same controllers as an array, so that the stepping path checks them without allocating an iterator. */

@@ -152,7 +152,8 @@ final class PaperQueries {
 
     /** Sets the inertia of every mass whose name contains {@code tag}; checked first, analysed once. */
     void setMassForName(String op, String tag, double mass) {
-        c.subsets.changeParamOf(op, true, matching(c.dir.mats, tag), "mass", mass);
+        c.subsets.changeParamOf(op, true, c.subsets.lenientMembers(op, true, matching(c.dir.mats, tag), "mass"), "mass",
+                mass);
     }
 
     /**
@@ -188,6 +189,11 @@ final class PaperQueries {
      * from it), at rest, in subset order.
      */
     void spaceAlongX(String op, Vect3D center, double d, String subset) {
+        if (subset != null && !c.subsets.isMatSubset(subset)) {
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "no such mass subset",
+                    "nothing was moved");
+            return;
+        }
         int[] ids = c.subsets.memberIds(c.subsets.requireMatSubset(op, subset));
         int n = ids.length;
         for (int k = 0; k < n; k++) {

@@ -48,6 +48,56 @@ final class ParamEditor {
         c.guard.afterChange(() -> engine.setMass(id, old));
     }
 
+    /**
+     * The paper's {@code getMatMassAt}: a module without inertia (a ground, an input) answers its nominal mass 1, as
+     * the paper's engine did (one warning; strict mode throws).
+     */
+    double paperMass(String op, int id) {
+        MassKind k = engine.massKind(id);
+        if (!k.isInertial()) {
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, c.dir.massName(id),
+                    "a " + k.label() + " has no mass parameter", "1 was returned");
+            return 1;
+        }
+        return engine.mass(id);
+    }
+
+    /** The paper's {@code setMatMass(At)}: a module without inertia is left alone (one warning; strict mode throws). */
+    void paperSetMass(String op, int id, double mass) {
+        MassKind k = engine.massKind(id);
+        if (!k.isInertial()) {
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, c.dir.massName(id),
+                    "a " + k.label() + " has no mass parameter", "it was left alone");
+            return;
+        }
+        setMass(op, id, mass);
+    }
+
+    /**
+     * @return true when the mass is an oscillator; otherwise, for the paper's index calls, false after one warning
+     *     (the paper's engine answered 0 or did nothing), or the exception in strict mode
+     */
+    boolean paperIsOsc(String op, int id, String skipped) {
+        MassKind k = engine.massKind(id);
+        if (k.isOscillator()) {
+            return true;
+        }
+        c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, c.dir.massName(id),
+                "only Osc3D and Osc1D have stiffness and damping, this is a " + k.label(), skipped);
+        return false;
+    }
+
+    /** @return true when the link is a plane contact; otherwise as {@link #paperIsOsc}. */
+    boolean paperIsPlane(String op, int id) {
+        LinkKind k = engine.linkKind(id);
+        if (k == LinkKind.PLANE_CONTACT3D) {
+            return true;
+        }
+        c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, c.dir.linkName(id), "only a "
+                + LinkKind.PLANE_CONTACT3D.label() + " has this parameter, this is a " + k.label(), "0 was returned");
+        return false;
+    }
+
     double oscStiffness(String op, int id) {
         requireOsc(op, id);
         return c.units().stiffnessOut(engine.oscStiffness(id));

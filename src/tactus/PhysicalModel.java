@@ -15,7 +15,9 @@ import tactus.engine.MassKind;
  * {@link #draw_physics()} once per frame, or with {@link #computeStep()} / {@link #computeNSteps(int)} from a
  * haptic or audio loop. Parameters are given in the unit system chosen at construction ({@link paramSystem});
  * initial velocities are always in units per second. Bad arguments raise an {@link IllegalArgumentException}
- * that names the element and the value, and leave the model unchanged.
+ * that names the element and the value, and leave the model unchanged, except the mistakes that the paper's engine
+ * silently ignored (a mass linked to itself, a subset never created, the mass of a ground, ...): the paper's calls
+ * forgive those as it did, with one warning per kind, unless the model is strict ({@link #setStrict(boolean)}).
  *
  * <p>Mass names are unique. Interaction names may repeat, as in the paper's sketches (seventy contacts all
  * called "col"): a call that addresses an interaction by a shared name acts on the first one added that is
@@ -996,7 +998,7 @@ public class PhysicalModel {
 
     /** Adds a spring between two mass handles (see {@link #addSpring3D(String, double, double, String, String)}). */
     public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return addSpring3D(name, dist, K, nameOf(m1), nameOf(m2));
+        return addSpring3D(name, dist, K, distinct("addSpring3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a damper: force -Z (d(n) - d(n-1)) along the line between the masses (REAL_UNITS: N·s/m). */
@@ -1006,7 +1008,7 @@ public class PhysicalModel {
 
     /** Adds a damper between two mass handles. */
     public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return addDamper3D(name, Z, nameOf(m1), nameOf(m2));
+        return addDamper3D(name, Z, distinct("addDamper3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a spring and damper in parallel, with rest length {@code dist}. */
@@ -1016,7 +1018,7 @@ public class PhysicalModel {
 
     /** Adds a spring-damper between two mass handles. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addSpringDamper3D(name, dist, K, Z, distinct("addSpringDamper3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a spring-damper that acts along z only, on the signed difference z1 - z2 with rest value {@code dist}. */
@@ -1026,7 +1028,7 @@ public class PhysicalModel {
 
     /** Adds a 1D spring-damper between two mass handles. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper1D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addSpringDamper1D(name, dist, K, Z, distinct("addSpringDamper1D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a rope: a spring-damper that acts only while the masses are farther apart than {@code dist}. */
@@ -1036,7 +1038,7 @@ public class PhysicalModel {
 
     /** Adds a rope between two mass handles. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addRope3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addRope3D(name, dist, K, Z, distinct("addRope3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
@@ -1046,7 +1048,7 @@ public class PhysicalModel {
 
     /** Adds a contact between two mass handles. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addContact3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addContact3D(name, dist, K, Z, distinct("addContact3D", name, m1, m2), nameOf(m2));
     }
 
     /** Adds a bubble: keeps m1 within radius {@code dist} of m2 with a spring-damper acting only outside it. */
@@ -1056,7 +1058,7 @@ public class PhysicalModel {
 
     /** Adds a bubble between two mass handles. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addBubble3D(name, dist, K, Z, nameOf(m1), nameOf(m2));
+        return addBubble3D(name, dist, K, Z, distinct("addBubble3D", name, m1, m2), nameOf(m2));
     }
 
     /**
@@ -1087,17 +1089,60 @@ public class PhysicalModel {
 
     /** Adds an attractor between two mass handles. */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return addAttractor3D(name, dLim, attr, nameOf(m1), nameOf(m2));
+        return addAttractor3D(name, dLim, attr, distinct("addAttractor3D", name, m1, m2), nameOf(m2));
     }
 
     private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2,
                                 double K, double Z, double len, double aux, int axis) {
         ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
+        if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && matExists(m1)) {
+            // the paper's engine added a link that never acted (or, on a moving mass, made it NaN): add nothing
+            core.lenient.forgive(PaperLeniency.Kind.SELF_LINK, op, name, "cannot link mass \"" + m1 + "\" to itself",
+                    "the interaction was not added and null was returned");
+            return null;
+        }
         return structural(() -> {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
             return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
         });
+    }
+
+    /**
+     * @return the id of the mass at index i; or, for an index past the end (i &ge; the mass count), -1 after a
+     *     warning, as the paper's index getters answered a default there (strict mode: the usual exception)
+     */
+    private int paperMassAt(String op, int i, String skipped) {
+        int n = core.dir.mats.size();
+        if (i >= n && !core.lenient.strict()) {
+            core.lenient.forgiveIndex(op, i, "mass index out of range"
+                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
+            return -1;
+        }
+        return core.dir.massAt(op, i);
+    }
+
+    /** @return the id of the interaction at index i; or -1 for an index past the end (see {@link #paperMassAt}). */
+    private int paperLinkAt(String op, int i, String skipped) {
+        int n = core.dir.links.size();
+        if (i >= n && !core.lenient.strict()) {
+            core.lenient.forgiveIndex(op, i, "interaction index out of range"
+                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
+            return -1;
+        }
+        return core.dir.linkAt(op, i);
+    }
+
+    /**
+     * @return the name of {@code m1}, after checking that the two handles are two masses: the handle calls are
+     *     Tactus's own, so a mass linked to itself stays an error there, strict or not
+     */
+    private String distinct(String op, String name, Mass m1, Mass m2) {
+        String a = nameOf(m1);
+        if (a.equals(nameOf(m2))) {
+            throw Check.fail(op, name, "cannot link mass \"" + a + "\" to itself");
+        }
+        return a;
     }
 
     private String nameOf(Mass m) {
@@ -1207,7 +1252,11 @@ public class PhysicalModel {
     public String getMatNameAt(int i) {
         enter();
         try {
-            return core.dir.massName(core.dir.massAt("getMatNameAt", i));
+            int id = paperMassAt("getMatNameAt", i, "\"None\" was returned");
+            if (id < 0) {
+                return "None";
+            }
+            return core.dir.massName(id);
         } finally {
             exit();
         }
@@ -1217,7 +1266,11 @@ public class PhysicalModel {
     public String getLinkNameAt(int i) {
         enter();
         try {
-            return core.dir.linkName(core.dir.linkAt("getLinkNameAt", i));
+            int id = paperLinkAt("getLinkNameAt", i, "\"None\" was returned");
+            if (id < 0) {
+                return "None";
+            }
+            return core.dir.linkName(id);
         } finally {
             exit();
         }
@@ -1227,7 +1280,11 @@ public class PhysicalModel {
     public matModuleType getMatTypeAt(int i) {
         enter();
         try {
-            return ModuleTypes.of(core.dir.massKind(core.dir.massAt("getMatTypeAt", i)));
+            int id = paperMassAt("getMatTypeAt", i, "UNDEFINED was returned");
+            if (id < 0) {
+                return matModuleType.UNDEFINED;
+            }
+            return ModuleTypes.of(core.dir.massKind(id));
         } finally {
             exit();
         }
@@ -1237,7 +1294,11 @@ public class PhysicalModel {
     public linkModuleType getLinkTypeAt(int i) {
         enter();
         try {
-            return ModuleTypes.of(core.dir.linkKind(core.dir.linkAt("getLinkTypeAt", i)));
+            int id = paperLinkAt("getLinkTypeAt", i, "UNDEFINED was returned");
+            if (id < 0) {
+                return linkModuleType.UNDEFINED;
+            }
+            return ModuleTypes.of(core.dir.linkKind(id));
         } finally {
             exit();
         }
@@ -1281,7 +1342,11 @@ public class PhysicalModel {
     public Vect3D getMatPosAt(int i) {
         enter();
         try {
-            return core.state.position(core.dir.massAt("getMatPosAt", i), new Vect3D());
+            int id = paperMassAt("getMatPosAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.position(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1301,7 +1366,11 @@ public class PhysicalModel {
     public Vect3D getMatVelAt(int i) {
         enter();
         try {
-            return core.state.velocity(core.dir.massAt("getMatVelAt", i), new Vect3D());
+            int id = paperMassAt("getMatVelAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.velocity(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1321,7 +1390,11 @@ public class PhysicalModel {
     public Vect3D getMatFrcAt(int i) {
         enter();
         try {
-            return core.state.force(core.dir.massAt("getMatFrcAt", i), new Vect3D());
+            int id = paperMassAt("getMatFrcAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.state.force(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1474,7 +1547,11 @@ public class PhysicalModel {
     public Vect3D getLinkPos1At(int i) {
         enter();
         try {
-            return core.paper.linkEnd(core.dir.linkAt("getLinkPos1At", i), true, new Vect3D());
+            int id = paperLinkAt("getLinkPos1At", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.linkEnd(id, true, new Vect3D());
         } finally {
             exit();
         }
@@ -1487,7 +1564,11 @@ public class PhysicalModel {
     public Vect3D getLinkPos2At(int i) {
         enter();
         try {
-            return core.paper.linkEnd(core.dir.linkAt("getLinkPos2At", i), false, new Vect3D());
+            int id = paperLinkAt("getLinkPos2At", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.linkEnd(id, false, new Vect3D());
         } finally {
             exit();
         }
@@ -1497,7 +1578,11 @@ public class PhysicalModel {
     public int getLinkMat1IdxAt(int i) {
         enter();
         try {
-            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat1IdxAt", i), true);
+            int id = paperLinkAt("getLinkMat1IdxAt", i, "-1 was returned");
+            if (id < 0) {
+                return -1;
+            }
+            return core.paper.linkEndIndex(id, true);
         } finally {
             exit();
         }
@@ -1507,7 +1592,11 @@ public class PhysicalModel {
     public int getLinkMat2IdxAt(int i) {
         enter();
         try {
-            return core.paper.linkEndIndex(core.dir.linkAt("getLinkMat2IdxAt", i), false);
+            int id = paperLinkAt("getLinkMat2IdxAt", i, "-1 was returned");
+            if (id < 0) {
+                return -1;
+            }
+            return core.paper.linkEndIndex(id, false);
         } finally {
             exit();
         }
@@ -1517,7 +1606,11 @@ public class PhysicalModel {
     public String getLinkMat1NameAt(int i) {
         enter();
         try {
-            return core.paper.linkEndName(core.dir.linkAt("getLinkMat1NameAt", i), true);
+            int id = paperLinkAt("getLinkMat1NameAt", i, "\"\" was returned");
+            if (id < 0) {
+                return "";
+            }
+            return core.paper.linkEndName(id, true);
         } finally {
             exit();
         }
@@ -1527,7 +1620,11 @@ public class PhysicalModel {
     public String getLinkMat2NameAt(int i) {
         enter();
         try {
-            return core.paper.linkEndName(core.dir.linkAt("getLinkMat2NameAt", i), false);
+            int id = paperLinkAt("getLinkMat2NameAt", i, "\"\" was returned");
+            if (id < 0) {
+                return "";
+            }
+            return core.paper.linkEndName(id, false);
         } finally {
             exit();
         }
@@ -1537,7 +1634,11 @@ public class PhysicalModel {
     public Vect3D getMatDelayedPosAt(int i) {
         enter();
         try {
-            return core.paper.delayedPosition(core.dir.massAt("getMatDelayedPosAt", i), new Vect3D());
+            int id = paperMassAt("getMatDelayedPosAt", i, "a zero vector was returned");
+            if (id < 0) {
+                return new Vect3D();
+            }
+            return core.paper.delayedPosition(id, new Vect3D());
         } finally {
             exit();
         }
@@ -1557,7 +1658,9 @@ public class PhysicalModel {
     public double getOsc3DDeltaPos(int i) {
         enter();
         try {
-            return core.paper.oscDisplacement("getOsc3DDeltaPos", core.dir.massAt("getOsc3DDeltaPos", i));
+            int id = core.dir.massAt("getOsc3DDeltaPos", i);
+            return core.params.paperIsOsc("getOsc3DDeltaPos", id, "0 was returned")
+                    ? core.paper.oscDisplacement("getOsc3DDeltaPos", id) : 0;
         } finally {
             exit();
         }
@@ -1567,7 +1670,12 @@ public class PhysicalModel {
     public int getPlaneOrientationAt(int i) {
         enter();
         try {
-            return core.params.planeAxis("getPlaneOrientationAt", core.dir.linkAt("getPlaneOrientationAt", i));
+            int id = paperLinkAt("getPlaneOrientationAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperIsPlane("getPlaneOrientationAt", id) ? core.params.planeAxis("getPlaneOrientationAt",
+                    id) : 0;
         } finally {
             exit();
         }
@@ -1577,7 +1685,12 @@ public class PhysicalModel {
     public double getPlanePositionAt(int i) {
         enter();
         try {
-            return core.params.planePosition("getPlanePositionAt", core.dir.linkAt("getPlanePositionAt", i));
+            int id = paperLinkAt("getPlanePositionAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperIsPlane("getPlanePositionAt", id) ? core.params.planePosition("getPlanePositionAt",
+                    id) : 0;
         } finally {
             exit();
         }
@@ -1715,6 +1828,16 @@ public class PhysicalModel {
         return getParamController(name);
     }
 
+    /** @return true when a subset of masses (or of interactions) with this name exists. */
+    private boolean hasSubset(String subset, boolean mats) {
+        enter();
+        try {
+            return mats ? core.subsets.isMatSubset(subset) : core.subsets.isLinkSubset(subset);
+        } finally {
+            exit();
+        }
+    }
+
     /** @return true when a mass or link subset with this name exists. */
     boolean subsetExists(String subset) {
         enter();
@@ -1741,7 +1864,11 @@ public class PhysicalModel {
     public double getMatMassAt(int i) {
         enter();
         try {
-            return core.params.mass("getMatMassAt", core.dir.massAt("getMatMassAt", i));
+            int id = paperMassAt("getMatMassAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperMass("getMatMassAt", id);
         } finally {
             exit();
         }
@@ -1751,7 +1878,7 @@ public class PhysicalModel {
     public void setMatMass(String name, double mass) {
         enterChange();
         try {
-            core.params.setMass("setMatMass", core.dir.massId("setMatMass", name), mass);
+            core.params.paperSetMass("setMatMass", core.dir.massId("setMatMass", name), mass);
         } finally {
             exit();
         }
@@ -1761,7 +1888,7 @@ public class PhysicalModel {
     public void setMatMassAt(int i, double mass) {
         enterChange();
         try {
-            core.params.setMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
+            core.params.paperSetMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
         } finally {
             exit();
         }
@@ -1783,7 +1910,13 @@ public class PhysicalModel {
         Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
         enterChange();
         try {
-            core.params.setOsc("setMatStiffnessAt", core.dir.massAt("setMatStiffnessAt", i), K, Double.NaN);
+            int id = paperMassAt("setMatStiffnessAt", i, "nothing was changed");
+            if (id < 0) {
+                return;
+            }
+            if (core.params.paperIsOsc("setMatStiffnessAt", id, "nothing was changed")) {
+                core.params.setOsc("setMatStiffnessAt", id, K, Double.NaN);
+            }
         } finally {
             exit();
         }
@@ -1805,7 +1938,13 @@ public class PhysicalModel {
         Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
         enterChange();
         try {
-            core.params.setOsc("setMatDampingAt", core.dir.massAt("setMatDampingAt", i), Double.NaN, Z);
+            int id = paperMassAt("setMatDampingAt", i, "nothing was changed");
+            if (id < 0) {
+                return;
+            }
+            if (core.params.paperIsOsc("setMatDampingAt", id, "nothing was changed")) {
+                core.params.setOsc("setMatDampingAt", id, Double.NaN, Z);
+            }
         } finally {
             exit();
         }
@@ -1825,7 +1964,12 @@ public class PhysicalModel {
     public double getMatStiffnessAt(int i) {
         enter();
         try {
-            return core.params.oscStiffness("getMatStiffnessAt", core.dir.massAt("getMatStiffnessAt", i));
+            int id = paperMassAt("getMatStiffnessAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperIsOsc("getMatStiffnessAt", id, "0 was returned")
+                    ? core.params.oscStiffness("getMatStiffnessAt", id) : 0;
         } finally {
             exit();
         }
@@ -1845,7 +1989,12 @@ public class PhysicalModel {
     public double getMatDampingAt(int i) {
         enter();
         try {
-            return core.params.oscDamping("getMatDampingAt", core.dir.massAt("getMatDampingAt", i));
+            int id = paperMassAt("getMatDampingAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.paperIsOsc("getMatDampingAt", id, "0 was returned")
+                    ? core.params.oscDamping("getMatDampingAt", id) : 0;
         } finally {
             exit();
         }
@@ -1867,7 +2016,11 @@ public class PhysicalModel {
     public double getLinkDistanceAt(int i) {
         enter();
         try {
-            return core.params.linkDistance(core.dir.linkAt("getLinkDistanceAt", i));
+            int id = paperLinkAt("getLinkDistanceAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkDistance(id);
         } finally {
             exit();
         }
@@ -1887,7 +2040,11 @@ public class PhysicalModel {
     public double getLinkElongationAt(int i) {
         enter();
         try {
-            return core.params.linkElongation(core.dir.linkAt("getLinkElongationAt", i));
+            int id = paperLinkAt("getLinkElongationAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkElongation(id);
         } finally {
             exit();
         }
@@ -1907,7 +2064,11 @@ public class PhysicalModel {
     public double getLinkStiffnessAt(int i) {
         enter();
         try {
-            return core.params.linkStiffness(core.dir.linkAt("getLinkStiffnessAt", i));
+            int id = paperLinkAt("getLinkStiffnessAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkStiffness(id);
         } finally {
             exit();
         }
@@ -1927,7 +2088,11 @@ public class PhysicalModel {
     public double getLinkDampingAt(int i) {
         enter();
         try {
-            return core.params.linkDamping(core.dir.linkAt("getLinkDampingAt", i));
+            int id = paperLinkAt("getLinkDampingAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkDamping(id);
         } finally {
             exit();
         }
@@ -1947,7 +2112,11 @@ public class PhysicalModel {
     public double getLinkDRestAt(int i) {
         enter();
         try {
-            return core.params.linkLength(core.dir.linkAt("getLinkDRestAt", i));
+            int id = paperLinkAt("getLinkDRestAt", i, "0 was returned");
+            if (id < 0) {
+                return 0;
+            }
+            return core.params.linkLength(id);
         } finally {
             exit();
         }
@@ -2044,8 +2213,9 @@ public class PhysicalModel {
         enterChange();
         try {
             int id = core.dir.massId("setHapticPosition", name);
-            core.state.requireInput("setHapticPosition", id);
-            core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+            if (core.state.paperIsInput("setHapticPosition", id, "nothing was changed")) {
+                core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+            }
         } finally {
             exit();
         }
@@ -2056,7 +2226,7 @@ public class PhysicalModel {
      * (REAL_UNITS: N), and resets the accumulator.
      */
     public Vect3D getHapticForce(String name) {
-        return getHapticForce(name, new Vect3D());
+        return hapticForce(name, new Vect3D(), true);
     }
 
     /**
@@ -2083,10 +2253,19 @@ public class PhysicalModel {
      * (see {@link #getHapticForce(String)}) and returns it.
      */
     public Vect3D getHapticForce(String name, Vect3D out) {
+        return hapticForce(name, out, false);
+    }
+
+    /** Takes an avatar's force; the paper's call (paper = true) answers zero for a mass that is not an input. */
+    private Vect3D hapticForce(String name, Vect3D out, boolean paper) {
         enter();
         try {
             int id = core.dir.massId("getHapticForce", name);
-            core.state.requireInput("getHapticForce", id);
+            if (!paper) {
+                core.state.requireInput("getHapticForce", id);
+            } else if (!core.state.paperIsInput("getHapticForce", id, "a zero force was returned")) {
+                return out.set(0, 0, 0);
+            }
             return core.state.takeAvatarForce(id, out);
         } finally {
             exit();
@@ -2147,6 +2326,11 @@ public class PhysicalModel {
     /** Creates an empty named group of masses, for grouped parameter changes. */
     public void createMatSubset(String subset) {
         Check.name("createMatSubset", subset);
+        if (!core.lenient.strict() && hasSubset(subset, true)) {
+            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createMatSubset", subset,
+                    "a subset with this name already exists", "the subset was kept as it is");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.createMatSubset(subset);
         });
@@ -2155,6 +2339,11 @@ public class PhysicalModel {
     /** Creates an empty named group of interactions. */
     public void createLinkSubset(String subset) {
         Check.name("createLinkSubset", subset);
+        if (!core.lenient.strict() && hasSubset(subset, false)) {
+            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createLinkSubset", subset,
+                    "a subset with this name already exists", "the subset was kept as it is");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.createLinkSubset(subset);
         });
@@ -2162,6 +2351,11 @@ public class PhysicalModel {
 
     /** Adds a mass to a mass subset. */
     public void addMatToSubset(String mass, String subset) {
+        if (!core.lenient.strict() && !matExists(mass)) {
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", String.valueOf(mass),
+                    "no mass with this name", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massId("addMatToSubset", mass), subset);
         });
@@ -2169,6 +2363,11 @@ public class PhysicalModel {
 
     /** Adds the mass at an index to a mass subset. */
     public void addMatToSubset(int i, String subset) {
+        if (i == -1 && !core.lenient.strict()) { // getMatIndex's answer for a name that is not in the model
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", "-1",
+                    "mass index out of range", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addMat("addMatToSubset", core.dir.massAt("addMatToSubset", i), subset);
         });
@@ -2176,6 +2375,11 @@ public class PhysicalModel {
 
     /** Adds an interaction (the first one with this name) to a link subset. */
     public void addLinkToSubset(String link, String subset) {
+        if (!core.lenient.strict() && !linkExists(link)) {
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", String.valueOf(link),
+                    "no interaction with this name", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkId("addLinkToSubset", link), subset);
         });
@@ -2183,6 +2387,11 @@ public class PhysicalModel {
 
     /** Adds the interaction at an index to a link subset. */
     public void addLinkToSubset(int i, String subset) {
+        if (i == -1 && !core.lenient.strict()) { // getLinkIndex's answer for a name that is not in the model
+            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", "-1",
+                    "interaction index out of range", "nothing was added to subset \"" + subset + "\"");
+            return;
+        }
         structuralDo(() -> {
             core.subsets.addLink("addLinkToSubset", core.dir.linkAt("addLinkToSubset", i), subset);
         });
@@ -2214,32 +2423,39 @@ public class PhysicalModel {
 
     /** Sets the inertia of every mass in a mass subset. */
     public void changeMassParamOfSubset(double mass, String subset) {
-        changeParamOfSubset(mass, subset, "mass");
+        changeSubsetParam("changeMassParamOfSubset", mass, subset, "mass");
     }
 
     /** Sets the stiffness of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeStiffnessParamOfSubset(double K, String subset) {
-        changeParamOfSubset(K, subset, "stiffness");
+        changeSubsetParam("changeStiffnessParamOfSubset", K, subset, "stiffness");
     }
 
     /** Sets the damping of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeDampingParamOfSubset(double Z, String subset) {
-        changeParamOfSubset(Z, subset, "damping");
+        changeSubsetParam("changeDampingParamOfSubset", Z, subset, "damping");
     }
 
     /** Sets the length parameter (rest length, threshold, radius) of every interaction in a link subset. */
     public void changeDistParamOfSubset(double d, String subset) {
-        changeParamOfSubset(d, subset, "dist");
+        changeSubsetParam("changeDistParamOfSubset", d, subset, "dist");
     }
 
     /**
      * Sets one parameter on every member of a subset. {@code param} is "mass", "stiffness", "damping" or
-     * "dist". Every member is checked before any is changed, so an error leaves the model unchanged.
+     * "dist". Every member is checked before any is changed, so an error leaves the model unchanged. As in the paper's
+     * engine, members without the parameter (the grounds of a mass change) are left alone, an unknown subset is
+     * ignored for "stiffness" and "damping", and an unknown parameter name is ignored, each with one warning (see
+     * {@link #setStrict(boolean)}).
      */
     public void changeParamOfSubset(double value, String subset, String param) {
+        changeSubsetParam("changeParamOfSubset", value, subset, param);
+    }
+
+    private void changeSubsetParam(String op, double value, String subset, String param) {
         enterChange();
         try {
-            core.subsets.changeParam("changeParamOfSubset", value, subset, param);
+            core.subsets.changeParam(op, value, subset, param);
         } finally {
             exit();
         }
@@ -2323,6 +2539,41 @@ public class PhysicalModel {
         } finally {
             exit();
         }
+    }
+
+    // =================================================================== strictness
+
+    /**
+     * Chooses what the calls of the paper's API do with the mistakes the paper's engine (miPhysics) silently
+     * ignored. Forgiving (false, the default): the call does what the original did, and the first time each kind of
+     * problem occurs one warning goes to standard error, naming the call, the element and what was skipped. The cases: an
+     * interaction from a mass to itself ({@code addBubble3D("b", ..., "gnd", "gnd")} and the other two-mass
+     * {@code add...} calls: nothing is added, null is returned); a subset never created given to
+     * {@code changeStiffnessParamOfSubset}, {@code changeDampingParamOfSubset}, {@code changeDistXBetweenSubset},
+     * {@code getParamValueOfSubset} (returns -1) or a controller; a subset created twice; a mass or interaction that
+     * is not in the model given to {@code addMatToSubset} / {@code addLinkToSubset}; a parameter a member does not
+     * have (the mass of a ground in {@code changeMassParamOfSubset}, {@code setMatParamsForName},
+     * {@code setMatMass(At)}; the stiffness of a Mass3D; the damping of a Spring3D ...: that member is left alone,
+     * the others change; {@code getMatMassAt} on a ground returns 1, {@code getMatStiffnessAt} /
+     * {@code getMatDampingAt} of a mass that is not an oscillator return 0); an unknown parameter name in
+     * {@code changeParamOfSubset}; {@code setHapticPosition} / {@code getHapticForce} on a mass that is not an input;
+     * an index past the end in the index getters ({@code getMatPosAt}, {@code getLinkNameAt}, ...: the original's
+     * default, "None", a zero vector, -1 or 0). Nothing is ever half done: a skipped call changes nothing, a partly skipped one changes exactly the members
+     * that have the parameter.
+     *
+     * <p>Strict (true): each of these calls throws the {@link IllegalArgumentException} that names the element and
+     * the problem, and leaves the model unchanged. The calls that are Tactus's own (handles, contact groups,
+     * {@code getMatMass(String)}, ...) are always strict. docs/coming-from-miphysics.md lists every case.
+     *
+     * @param strict true to throw, false (the default) to forgive as the paper's engine did
+     */
+    public void setStrict(boolean strict) {
+        core.lenient.setStrict(strict);
+    }
+
+    /** @return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)}). */
+    public boolean isStrict() {
+        return core.lenient.strict();
     }
 
     // =================================================================== stability and divergence

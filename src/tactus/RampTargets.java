@@ -36,10 +36,15 @@ final class RampTargets {
         int p = "mass".equals(param) ? MASS : "stiffness".equals(param) ? STIFFNESS : "damping".equals(param)
                 ? DAMPING : "dist".equals(param) ? DIST : DIST_X;
         int[] ids;
-        if (p == DIST_X) {
+        if (subset != null && !mats && !c.subsets.isLinkSubset(subset) && p != MASS && p != DIST) {
+            // a subset never created: the paper's engine changed nothing (it threw for mass and dist)
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "no such subset", "nothing was changed");
+            ids = new int[0];
+        } else if (p == DIST_X) {
             ids = c.subsets.memberIds(c.subsets.requireMatSubset(op, subset));
         } else {
-            java.util.Set<Integer> m = c.subsets.members(op, subset);
+            java.util.Collection<Integer> m = c.subsets.lenientMembers(op, mats, c.subsets.members(op, subset),
+                    param);
             ids = m.stream().mapToInt(Integer::intValue).toArray();
             if (p != DIST_X && ids.length > 0) {
                 // the same check as a direct change, on both ends of the ramp

@@ -100,6 +100,20 @@ final class StateAccess {
         }
     }
 
+    /**
+     * @return true when the mass is an input module; otherwise, for the paper's haptic calls, false after one warning
+     *     (the paper's engine printed a line and did nothing), or the exception of {@link #requireInput} in strict mode
+     */
+    boolean paperIsInput(String op, int id, String skipped) {
+        MassKind k = engine.massKind(id);
+        if (k.isInput()) {
+            return true;
+        }
+        c.lenient.forgive(PaperLeniency.Kind.NOT_AN_INPUT, op, c.dir.massName(id),
+                "not an input module, this is a " + k.label(), skipped);
+        return false;
+    }
+
     /** Sets the target that an input module follows through its EWMA. */
     void setInputTarget(int id, double x, double y, double z) {
         c.writes().setInputTarget(id, x, y, z);

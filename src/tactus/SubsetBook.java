@@ -126,15 +126,61 @@ final class SubsetBook {
      */
     void changeParam(String op, double value, String subset, String param) {
         boolean isMat = isMatSubset(subset);
+        if (!isMat && !isLinkSubset(subset) && subset != null && isStiffnessOrDamping(param)) {
+            // the paper's engine changed stiffness and damping only of subsets it found (mass and dist threw)
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "no such subset", "nothing was changed");
+            return;
+        }
         if (!isMat) {
             requireLinkSubset(op, subset);
         }
         if (!java.util.Arrays.asList(PARAMS).contains(param)) {
-            throw Check.fail(op, subset, "param must be \"mass\", \"stiffness\", \"damping\" or \"dist\", got \""
-                    + param + "\"");
+            c.lenient.forgive(PaperLeniency.Kind.UNKNOWN_PARAMETER_NAME, op, subset, "param must be \"mass\", "
+                    + "\"stiffness\", \"damping\" or \"dist\", got \"" + param + "\"", "nothing was changed");
+            return;
         }
         Check.finite(op, subset, param, value);
-        changeParamOf(op, isMat, isMat ? mats.members(subset) : links.members(subset), param, value);
+        Set<Integer> members = isMat ? mats.members(subset) : links.members(subset);
+        changeParamOf(op, isMat, lenientMembers(op, isMat, members, param), param, value);
+    }
+
+    private static boolean isStiffnessOrDamping(String param) {
+        return "stiffness".equals(param) || "damping".equals(param);
+    }
+
+    /**
+     * @return the members that have {@code param}; the others (a ground in a mass change, a Mass3D in a stiffness
+     *     change, a Spring3D in a damping change ...) are left alone, as the paper's engine did, with one warning,
+     *     or, in strict mode, make this throw. Returns {@code members} itself when all of them have it.
+     */
+    java.util.Collection<Integer> lenientMembers(String op, boolean isMat, java.util.Collection<Integer> members,
+                                                 String param) {
+        List<Integer> kept = new ArrayList<>(members.size());
+        for (int id : members) {
+            String lacks = lacks(isMat, id, param);
+            if (lacks == null) {
+                kept.add(id);
+            } else {
+                c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, isMat ? c.dir.massName(id)
+                        : c.dir.linkName(id), lacks, "it was left alone and the other members were changed");
+            }
+        }
+        return kept.size() == members.size() ? members : kept;
+    }
+
+    /** @return the error for a member that has no such parameter ("a Ground3D has no mass parameter"), or null. */
+    private String lacks(boolean isMat, int id, String param) {
+        if (isMat) {
+            MassKind k = engine.massKind(id);
+            boolean ok = "mass".equals(param) ? k.isInertial()
+                    : ("stiffness".equals(param) || "damping".equals(param)) && k.isOscillator();
+            return ok ? null : "a " + k.label() + " has no " + param + " parameter";
+        }
+        LinkKind k = engine.linkKind(id);
+        boolean ok = "stiffness".equals(param) ? k.hasStiffness()
+                : "damping".equals(param) ? k.hasDamping()
+                : "dist".equals(param) && k.hasLength();
+        return ok ? null : "a " + k.label() + " has no " + param + " parameter";
     }
 
     /**
@@ -161,12 +207,32 @@ final class SubsetBook {
     /** @return the value of a parameter for the first member of a subset, in model units. */
     double paramValue(String op, String subset, String param) {
         boolean isMat = isMatSubset(subset);
+        if (!isMat && !isLinkSubset(subset) && subset != null) {
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "no such subset", "-1 was returned");
+            return -1;
+        }
         Set<Integer> members = members(op, subset);
         if (members.isEmpty()) {
+            if (!isMat) { // the paper's engine answered -1 for an empty link subset (and threw for a mass subset)
+                c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "the subset is empty",
+                        "-1 was returned");
+                return -1;
+            }
             throw Check.fail(op, subset, "the subset is empty");
         }
         int id = members.iterator().next();
-        checkMember(op, isMat, id, param, 1.0);
+        String lacks = lacks(isMat, id, param);
+        if (lacks != null) {
+            if (!java.util.Arrays.asList(PARAMS).contains(param)) {
+                lacks = "param must be \"mass\", \"stiffness\", \"damping\" or \"dist\", got \"" + param + "\"";
+            }
+            // what the paper's engine answered: a ground's nominal mass 1, 0 for the missing stiffness or damping of
+            // an interaction, -1 otherwise
+            double answer = isMat ? ("mass".equals(param) ? 1 : -1) : (isStiffnessOrDamping(param) ? 0 : -1);
+            c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, isMat ? c.dir.massName(id)
+                    : c.dir.linkName(id), lacks, answer + " was returned");
+            return answer;
+        }
         UnitScale u = c.units();
         if (isMat) {
             return "mass".equals(param) ? engine.mass(id)
@@ -185,27 +251,14 @@ final class SubsetBook {
     }
 
     private void checkMember(String op, boolean isMat, int id, String param, double value) {
-        if (isMat) {
-            MassKind k = engine.massKind(id);
-            boolean ok = "mass".equals(param) ? k.isInertial()
-                    : ("stiffness".equals(param) || "damping".equals(param)) && k.isOscillator();
-            if (!ok) {
-                throw Check.fail(op, c.dir.massName(id), "a " + k.label() + " has no " + param + " parameter");
-            }
-            if ("mass".equals(param)) {
-                Check.positive(op, c.dir.massName(id), "mass", value);
-            }
-        } else {
-            LinkKind k = engine.linkKind(id);
-            boolean ok = "stiffness".equals(param) ? k.hasStiffness()
-                    : "damping".equals(param) ? k.hasDamping()
-                    : "dist".equals(param) && k.hasLength();
-            if (!ok) {
-                throw Check.fail(op, c.dir.linkName(id), "a " + k.label() + " has no " + param + " parameter");
-            }
-            if ("dist".equals(param)) {
-                ParamEditor.checkLength(op, c.dir.linkName(id), k, value);
-            }
+        String lacks = lacks(isMat, id, param);
+        if (lacks != null) {
+            throw Check.fail(op, isMat ? c.dir.massName(id) : c.dir.linkName(id), lacks);
+        }
+        if (isMat && "mass".equals(param)) {
+            Check.positive(op, c.dir.massName(id), "mass", value);
+        } else if (!isMat && "dist".equals(param)) {
+            ParamEditor.checkLength(op, c.dir.linkName(id), engine.linkKind(id), value);
         }
     }
 

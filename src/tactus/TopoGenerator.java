@@ -268,18 +268,15 @@ public class TopoGenerator {
     }
 
     private void ensureSubset(String name, boolean mats) {
-        if (name.isEmpty()) {
+        if (name.isEmpty() || model.subsetExists(name)) {
+            // An existing subset: the generated modules join it (adding to a subset of the other kind fails below
+            // with the model's own message, and is rolled back).
             return;
         }
-        try {
-            if (mats) {
-                model.createMatSubset(name);
-            } else {
-                model.createLinkSubset(name);
-            }
-        } catch (IllegalArgumentException alreadyThere) {
-            // The subset exists: the generated modules join it (adding to a subset of the
-            // other kind fails below with the model's own message, and is rolled back).
+        if (mats) {
+            model.createMatSubset(name);
+        } else {
+            model.createLinkSubset(name);
         }
     }
 

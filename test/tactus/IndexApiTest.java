@@ -177,8 +177,12 @@ class IndexApiTest {
         assertEquals("Mass2DPlane", m.getMatTypeAt(0).name());
         assertEquals("PosInput3D", m.getMatTypeAt(7).name());
         assertEquals("Bubble3D", m.getLinkTypeAt(3).name());
+        assertEquals("None", m.getMatNameAt(8), "past the end: the paper's engine answered \"None\"");
+        assertEquals("None", m.getLinkNameAt(4));
+        m.setStrict(true);
         assertThrows(IllegalArgumentException.class, () -> m.getMatNameAt(8));
         assertThrows(IllegalArgumentException.class, () -> m.getLinkNameAt(4));
+        m.setStrict(false);
         // index setters now reach the shifted modules
         m.setMatMassAt(0, 11);
         assertEquals(11, m.getMatMass("m2p"), 0.0);

@@ -177,6 +177,8 @@ class PaperApiCompletenessTest {
         assertEquals(3.0, floatArgs.getMatMassAt(1), 0.0);
         assertEquals(3.0, floatArgs.getMatMassAt(2), 0.0);
         assertNotEquals(3.0, doubleArgs.getMatMassAt(1), "the other model is untouched");
+        floatArgs.changeParamOfSubset(1f, "springs", "colour"); // the original printed "unknown" and did nothing
+        floatArgs.setStrict(true);
         assertThrows(IllegalArgumentException.class, () -> floatArgs.changeParamOfSubset(1f, "springs", "colour"));
     }
 

@@ -356,9 +356,14 @@ class SubsetTest {
         m.addMatToSubset("m2", "ms");
         m.changeToFixedPoint("m1");
         assertArrayEquals(new String[] {"m1", "m2"}, m.getSubsetMembers("ms"));
-        // m1 is a Ground3D now: a mass change on the subset is refused as a whole
-        assertThrows(IllegalArgumentException.class, () -> m.changeMassParamOfSubset(3, "ms"));
-        assertEquals(1.0, m.getMatMass("m2"), 0.0);
+        // m1 is a Ground3D now: by default a mass change leaves it alone and changes m2, as the paper's engine did
+        m.changeMassParamOfSubset(3, "ms");
+        assertEquals(3.0, m.getMatMass("m2"), 0.0);
+        assertEquals(matModuleType.Ground3D, m.getMatTypeAt(m.getMatIndex("m1")));
+        // strict: refused as a whole
+        m.setStrict(true);
+        assertThrows(IllegalArgumentException.class, () -> m.changeMassParamOfSubset(5, "ms"));
+        assertEquals(3.0, m.getMatMass("m2"), 0.0);
     }
 
     @Test
@@ -369,6 +374,7 @@ class SubsetTest {
         m.createLinkSubset("ls");
         m.clearModel();
         assertThrows(IllegalArgumentException.class, () -> m.getSubsetMembers("ms"));
+        m.setStrict(true); // by default the paper's call forgives a subset that does not exist (PaperLeniencyTest)
         assertThrows(IllegalArgumentException.class, () -> m.changeStiffnessParamOfSubset(1, "ls"));
         m.createMatSubset("ms");
         m.createLinkSubset("ls");

@@ -405,9 +405,14 @@ class ModelXmlTest {
         // A failure on the last link undoes the masses and links added before it.
         String links = "    <SpringDamper3D>\n"
                 + "      <interaction_0 damping=\"0.1\" drest=\"1\" index=\"0\" m1=\"a\" m2=\"b\" name=\"s1\" stiffness=\"0.1\"/>\n"
-                + "      <interaction_1 damping=\"0.1\" drest=\"1\" index=\"1\" m1=\"a\" m2=\"a\" name=\"s2\" stiffness=\"0.1\"/>\n"
+                + "      <interaction_1 damping=\"0.1\" drest=\"1\" index=\"1\" m1=\"a\" m2=\"nobody\" name=\"s2\" stiffness=\"0.1\"/>\n"
                 + "    </SpringDamper3D>\n";
-        refused(file(TWO_MASSES, links), 17, "interaction_1", "itself");
+        refused(file(TWO_MASSES, links), 17, "interaction_1", "nobody");
+        // a link from a mass to itself is skipped with one warning, as the paper's engine and PhysicalModel do
+        PhysicalModel m = new PhysicalModel(1000, 50);
+        ModelXml.read(new StringReader(file(TWO_MASSES, links.replace("nobody", "a"))), "self.xml", m);
+        assertEquals(1, m.getNumberOfLinks());
+        assertTrue(m.linkExists("s1"));
         refused(file(TWO_MASSES, "    <Damper3D>\n      <interaction_0 damping=\"NaN\" m1=\"a\" m2=\"b\" name=\"z\"/>\n    </Damper3D>\n"),
                 16, "interaction_0", "Z");
     }
