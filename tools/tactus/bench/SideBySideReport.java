@@ -1,0 +1,301 @@
+package tactus.bench;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The side-by-side section of {@code docs/performance.md}: µs per step of each scene on the paper's engine and on
+ * Tactus, the paired ratio per round, the targets of issue #18 as verdicts, and what a reader costs. Pure: it only
+ * formats what it is given (see {@link SideBySide} for the measuring).
+ *
+ * <p>Data: for each engine, a map from "scene/variant" to its rounds, each round the µs per step of the runs that
+ * the round's child measured (the variants of a child are interleaved, so run i of two variants of one round are
+ * paired). The paper engine's map is null when no {@code miPhysics.jar} was given: its column then says
+ * "not compared".
+ */
+final class SideBySideReport {
+    /** First line inside the kept block that holds this section: how the section is found again. */
+    static final String TAG = "<!-- side by side with the paper's engine (gradle bench) -->";
+    /** Cell text of the paper's engine when no jar was given. */
+    static final String NOT_COMPARED = "not compared";
+
+    /** One table row: a label, the paper engine's variant key and Tactus's variant key. */
+    static final class Row {
+        final String label;
+        final String paperKey;
+        final String tactusKey;
+
+        Row(String label, String paperKey, String tactusKey) {
+            this.label = label;
+            this.paperKey = paperKey;
+            this.tactusKey = tactusKey;
+        }
+    }
+
+    /** The rows, in report order. */
+    static final List<Row> ROWS = Arrays.asList(
+            new Row("string, 470 masses, 44.1 kHz: one `computeStep()` and one `getMatPosAt()` per sample",
+                    "string-470/audio", "string-470/audio"),
+            new Row("string, 1,000 masses, `computeNSteps`", "string-1000/computeNSteps", "string-1000/computeNSteps"),
+            new Row("mesh 100×100, gravity, grounded border, `computeStep()`", "mesh-100/plain", "mesh-100/plain"),
+            new Row("mesh 100×100, with a reader at 60 frames per simulated second", "mesh-100/reader",
+                    "mesh-100/reader"),
+            new Row("200 marbles, one `Contact3D` per pair, `computeStep()`", "marbles-200/explicit",
+                    "marbles-200/explicit"),
+            new Row("200 marbles, one `Contact3D` per pair, with a reader at 60 frames per simulated second",
+                    "marbles-200/explicit-reader", "marbles-200/explicit-reader"),
+            new Row("200 marbles, contact group (Tactus only: the paper's engine has none, so its column is its one "
+                    + "`Contact3D` per pair)", "marbles-200/explicit", "marbles-200/group"));
+
+    /** Pairs (plain variant, reader variant) whose cost ratio is reported, with the model's description. */
+    static final String[][] READER_PAIRS = {
+        {"marbles-200/explicit", "marbles-200/explicit-reader", "200 marbles, one Contact3D per pair (1 kHz)"},
+        {"mesh-100/plain", "mesh-100/reader", "mesh 100×100 (1 kHz)"},
+    };
+
+    private final Map<String, List<double[]>> paper;
+    private final Map<String, List<double[]>> tactus;
+    private final Map<String, String> elements;
+    private final Map<String, String> problems;
+
+    /**
+     * @param paper the paper engine's runs (null: not compared)
+     * @param tactus Tactus's runs
+     * @param elements "scene/variant" → element count text (masses + interactions as the engines count them)
+     * @param problems "scene/variant" → a problem to show in the row (a failed child, non-finite positions)
+     */
+    SideBySideReport(Map<String, List<double[]>> paper, Map<String, List<double[]>> tactus, Map<String, String> elements,
+            Map<String, String> problems) {
+        this.paper = paper;
+        this.tactus = tactus;
+        this.elements = elements;
+        this.problems = problems;
+    }
+
+    // ==================================================================================== statistics
+
+    static double median(double[] v) {
+        if (v.length == 0) {
+            return Double.NaN;
+        }
+        double[] s = v.clone();
+        Arrays.sort(s);
+        int n = s.length;
+        return n % 2 == 1 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+    }
+
+    static double min(double[] v) {
+        return Arrays.stream(v).min().orElse(Double.NaN);
+    }
+
+    static double max(double[] v) {
+        return Arrays.stream(v).max().orElse(Double.NaN);
+    }
+
+    /** @return the median of each round's runs (empty when the key is absent) */
+    static double[] roundMedians(Map<String, List<double[]>> engine, String key) {
+        if (engine == null || !engine.containsKey(key)) {
+            return new double[0];
+        }
+        List<double[]> rounds = engine.get(key);
+        double[] m = new double[rounds.size()];
+        for (int r = 0; r < m.length; r++) {
+            m[r] = median(rounds.get(r));
+        }
+        return m;
+    }
+
+    /** @return paper / Tactus per round, over the rounds both engines measured */
+    double[] ratios(Row row) {
+        double[] p = roundMedians(paper, row.paperKey);
+        double[] t = roundMedians(tactus, row.tactusKey);
+        double[] r = new double[Math.min(p.length, t.length)];
+        for (int i = 0; i < r.length; i++) {
+            r[i] = p[i] / t[i];
+        }
+        return r;
+    }
+
+    /** @return with-reader / without-reader of every paired run (run i of each round), or empty */
+    static double[] readerRatios(Map<String, List<double[]>> engine, String plainKey, String readerKey) {
+        if (engine == null || !engine.containsKey(plainKey) || !engine.containsKey(readerKey)) {
+            return new double[0];
+        }
+        List<double[]> plain = engine.get(plainKey);
+        List<double[]> reader = engine.get(readerKey);
+        List<Double> r = new ArrayList<>();
+        for (int k = 0; k < Math.min(plain.size(), reader.size()); k++) {
+            for (int i = 0; i < Math.min(plain.get(k).length, reader.get(k).length); i++) {
+                r.add(reader.get(k)[i] / plain.get(k)[i]);
+            }
+        }
+        return r.stream().mapToDouble(Double::doubleValue).toArray();
+    }
+
+    // ==================================================================================== verdicts
+
+    /** One target of issue #18 and how it came out. */
+    static final class Verdict {
+        final String target;
+        final String measured;
+        final String verdict;
+
+        Verdict(String target, String measured, String verdict) {
+            this.target = target;
+            this.measured = measured;
+            this.verdict = verdict;
+        }
+    }
+
+    private Verdict ratioTarget(String target, double min, Row... rows) {
+        if (paper == null) {
+            return new Verdict(target, NOT_COMPARED + " (no `-PmiPhysicsJar`)", NOT_COMPARED);
+        }
+        StringBuilder measured = new StringBuilder();
+        boolean met = true;
+        for (Row row : rows) {
+            double[] r = ratios(row);
+            if (measured.length() > 0) {
+                measured.append("; ");
+            }
+            String name = row.paperKey.substring(0, row.paperKey.indexOf('/'));
+            if (r.length == 0) {
+                measured.append(name).append(": not measured");
+                return new Verdict(target, measured.toString(), "not measured");
+            }
+            measured.append(name).append(": ").append(f("%.2f×", median(r)));
+            met &= median(r) >= min;
+        }
+        return new Verdict(target, measured.toString(), met ? "met" : "**not met**");
+    }
+
+    /** @return the targets of issue #18, judged on the medians of the paired ratios */
+    List<Verdict> verdicts() {
+        List<Verdict> v = new ArrayList<>();
+        v.add(ratioTarget("200 marbles, one Contact3D per pair: ≥ 3.4× the paper's engine", 3.4, ROWS.get(4)));
+        v.add(ratioTarget("strings: ≥ 4× the paper's engine", 4.0, ROWS.get(0), ROWS.get(1)));
+        v.add(ratioTarget("mesh: ≥ 4× the paper's engine", 4.0, ROWS.get(2)));
+        double[] r = readerRatios(tactus, READER_PAIRS[0][0], READER_PAIRS[0][1]);
+        String target = "a snapshot reader at 60 fps adds ≤ 5 % to a 1 kHz model of 20,000 elements (200 marbles, "
+                + "Tactus with reader / without, paired runs)";
+        if (r.length == 0) {
+            v.add(new Verdict(target, "not measured", "not measured"));
+        } else {
+            v.add(new Verdict(target, f("%+.1f %% (%+.1f to %+.1f %%)", 100 * (median(r) - 1), 100 * (min(r) - 1),
+                    100 * (max(r) - 1)), median(r) <= 1.05 ? "met" : "**not met**"));
+        }
+        return v;
+    }
+
+    // ==================================================================================== markdown
+
+    private static String f(String fmt, Object... a) {
+        return String.format(Locale.ROOT, fmt, a);
+    }
+
+    private static String us(double x) {
+        return x >= 100 ? f("%.0f", x) : x >= 10 ? f("%.1f", x) : f("%.2f", x);
+    }
+
+    static String spreadUs(double[] v) {
+        if (v.length == 0) {
+            return "–";
+        }
+        return us(median(v)) + " (" + us(min(v)) + "–" + us(max(v)) + ")";
+    }
+
+    static String spreadRatio(double[] v) {
+        if (v.length == 0) {
+            return "–";
+        }
+        return f("**%.2f×** (%.2f–%.2f)", median(v), min(v), max(v));
+    }
+
+    /** @return the table of µs per step and ratios */
+    String table() {
+        StringBuilder sb = new StringBuilder();
+        sb.append("| scene | elements | paper's engine, µs per step, median (min–max) | Tactus, µs per step, median "
+                + "(min–max) | ratio paper / Tactus, median (min–max) |\n|---|---|---|---|---|\n");
+        for (Row row : ROWS) {
+            String p = paper == null ? NOT_COMPARED : spreadUs(roundMedians(paper, row.paperKey));
+            String t = spreadUs(roundMedians(tactus, row.tactusKey));
+            String r = paper == null ? NOT_COMPARED : spreadRatio(ratios(row));
+            String problem = problems.getOrDefault(row.tactusKey, "");
+            if (paper != null && problems.containsKey("paper:" + row.paperKey)) {
+                problem += (problem.isEmpty() ? "" : "; ") + "paper's engine: " + problems.get("paper:" + row.paperKey);
+            }
+            sb.append("| ").append(row.label).append(problem.isEmpty() ? "" : " (" + problem + ")").append(" | ")
+                    .append(elements.getOrDefault(row.tactusKey, "–")).append(" | ").append(p).append(" | ").append(t)
+                    .append(" | ").append(r).append(" |\n");
+        }
+        return sb.toString();
+    }
+
+    /** @return the verdict table */
+    String verdictTable() {
+        StringBuilder sb = new StringBuilder("| target (issue #18) | measured (median of the paired ratios) | verdict |\n"
+                + "|---|---|---|\n");
+        for (Verdict v : verdicts()) {
+            sb.append("| ").append(v.target).append(" | ").append(v.measured).append(" | ").append(v.verdict)
+                    .append(" |\n");
+        }
+        return sb.toString();
+    }
+
+    /** @return what a reader adds, per engine */
+    String readerTable() {
+        StringBuilder sb = new StringBuilder("| model | Tactus: with reader / without, paired runs, median (min–max) | "
+                + "paper's engine: with reader / without |\n|---|---|---|\n");
+        for (String[] pair : READER_PAIRS) {
+            double[] t = readerRatios(tactus, pair[0], pair[1]);
+            double[] p = readerRatios(paper, pair[0], pair[1]);
+            sb.append("| ").append(pair[2]).append(" | ").append(t.length == 0 ? "–" : f("%.3f (%.3f–%.3f)", median(t),
+                    min(t), max(t))).append(" | ").append(paper == null ? NOT_COMPARED : p.length == 0 ? "–"
+                    : f("%.3f (%.3f–%.3f)", median(p), min(p), max(p))).append(" |\n");
+        }
+        return sb.toString();
+    }
+
+    /**
+     * @param header the lines above the tables (date, engines, machine, load)
+     * @param method the method bullets
+     * @return the whole section, in a kept block (markers included)
+     */
+    String section(String header, String method) {
+        return Bench.KEPT_BEGIN + "\n" + TAG + "\n## Side by side with the paper's engine (issue #18)\n\n" + header + "\n"
+                + table() + "\n### Targets\n\n" + verdictTable() + "\n### What a reader costs\n\n" + readerTable() + "\n"
+                + method + Bench.KEPT_END + "\n";
+    }
+
+    /**
+     * Puts a section into a report: in place of the previous side-by-side block, else before the first level-2
+     * heading (else at the end).
+     *
+     * @param report the report's current text ("" when it does not exist)
+     * @param section the new section, from {@link #section}
+     * @return the new text
+     */
+    static String replaceSection(String report, String section) {
+        int tag = report.indexOf(TAG);
+        if (tag >= 0) {
+            int begin = report.lastIndexOf(Bench.KEPT_BEGIN, tag);
+            int end = report.indexOf(Bench.KEPT_END, tag);
+            if (begin >= 0 && end >= 0) {
+                int after = end + Bench.KEPT_END.length();
+                if (after < report.length() && report.charAt(after) == '\n') {
+                    after++;
+                }
+                return report.substring(0, begin) + section + report.substring(after);
+            }
+        }
+        int h2 = report.startsWith("## ") ? 0 : report.indexOf("\n## ");
+        if (h2 < 0) {
+            return report + (report.isEmpty() || report.endsWith("\n\n") ? "" : "\n") + section;
+        }
+        int at = h2 == 0 ? 0 : h2 + 1;
+        return report.substring(0, at) + section + "\n" + report.substring(at);
+    }
+}
