@@ -82,8 +82,10 @@ class SideBySideReportTest {
         String table = r.table();
         for (String row : table.split("\n")) {
             if (row.startsWith("| ") && !row.startsWith("| scene")) {
-                assertTrue(row.contains("| " + SideBySideReport.NOT_COMPARED + " |"), row);
-                assertTrue(row.endsWith("| " + SideBySideReport.NOT_COMPARED + " |"), row);
+                String[] cells = row.split(" \\| ");
+                assertEquals(SideBySideReport.NOT_COMPARED, cells[2].trim(), "paper's column: " + row);
+                assertTrue(cells[3].matches("[0-9.]+ \\([0-9.]+–[0-9.]+\\)"), "Tactus's column: " + row);
+                assertEquals(SideBySideReport.NOT_COMPARED + " |", cells[4].trim(), "ratio column: " + row);
             }
         }
         List<SideBySideReport.Verdict> v = r.verdicts();
