@@ -85,7 +85,7 @@ class SideBySideReportTest {
                 String[] cells = row.split(" \\| ");
                 assertEquals(SideBySideReport.NOT_COMPARED, cells[2].trim(), "paper's column: " + row);
                 assertTrue(cells[3].matches("[0-9.]+ \\([0-9.]+–[0-9.]+\\)"), "Tactus's column: " + row);
-                assertEquals(SideBySideReport.NOT_COMPARED + " |", cells[4].trim(), "ratio column: " + row);
+                assertEquals(SideBySideReport.NOT_COMPARED, cells[4].trim(), "ratio column: " + row);
             }
         }
         List<SideBySideReport.Verdict> v = r.verdicts();
@@ -111,6 +111,9 @@ class SideBySideReportTest {
         assertFalse(again.contains("first\n"));
         assertEquals(1, again.split(java.util.regex.Pattern.quote(SideBySideReport.TAG), -1).length - 1);
         assertEquals(one, SideBySideReport.replaceSection("", one));
+        String keptFirst = "# T\n\n" + Bench.KEPT_BEGIN + "\n## How to\n" + Bench.KEPT_END + "\n## Targets\n";
+        assertEquals("# T\n\n" + one + "\n" + keptFirst.substring(5), SideBySideReport.replaceSection(keptFirst, one),
+                "a new section goes before a kept block, never inside it");
     }
 
     @Test

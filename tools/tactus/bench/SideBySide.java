@@ -179,6 +179,7 @@ public final class SideBySide {
         final String expectedClass;
         final List<String> extra;
         final Map<String, List<double[]>> rounds = new LinkedHashMap<>();
+        final Map<String, List<double[]>> cpu = new LinkedHashMap<>();
 
         Engine(String key, String classPath, String expectedClass, String... extra) {
             this.key = key;
@@ -223,7 +224,7 @@ public final class SideBySide {
         String loadEnd = Bench.loadavg();
         long seconds = (System.currentTimeMillis() - started) / 1000;
         SideBySideReport report = new SideBySideReport(paper == null ? null : paper.rounds, tactus.rounds, elements,
-                problems);
+                problems).withCpu(paper == null ? null : paper.cpu, tactus.cpu);
         String section = report.section(header(o, loadStart, loadEnd, seconds), method(o));
         System.out.println();
         System.out.println(report.table());
@@ -297,6 +298,7 @@ public final class SideBySide {
         for (Map<String, String> m : results) {
             String key = scene + "/" + m.get("variant");
             e.rounds.computeIfAbsent(key, k -> new ArrayList<>()).add(Bench.splitArray(m.get("us")));
+            e.cpu.computeIfAbsent(key, k -> new ArrayList<>()).add(Bench.splitArray(m.get("cpu")));
             long n = Long.parseLong(m.get("mats")) + Long.parseLong(m.get("links"));
             if (e.key.equals("Tactus")) {
                 elements.put(key, String.format(Locale.ROOT, "%,d", n));
@@ -389,6 +391,7 @@ public final class SideBySide {
                 + "snapshot, what its `ModelRenderer` copies (every mass position, every link's end positions, "
                 + "elongation and rest length) inside `synchronized (mdl.getLock())`, the stepping thread waiting meanwhile. The contact "
                 + "group row compares Tactus's `addContactGroup` with the paper engine's one `Contact3D` per pair (it "
-                + "has no group). Every scene checks that all positions are finite at the end.\n";
+                + "has no group). CPU/wall below 100 % means that the stepping thread was descheduled (other load on the "
+                + "machine) or, on the paper's engine with a reader, waiting for the lock. Every scene checks that all positions are finite at the end.\n";
     }
 }

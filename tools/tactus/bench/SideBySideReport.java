@@ -60,6 +60,8 @@ final class SideBySideReport {
     private final Map<String, List<double[]>> tactus;
     private final Map<String, String> elements;
     private final Map<String, String> problems;
+    private Map<String, List<double[]>> paperCpu;
+    private Map<String, List<double[]>> tactusCpu;
 
     /**
      * @param paper the paper engine's runs (null: not compared)
@@ -73,6 +75,33 @@ final class SideBySideReport {
         this.tactus = tactus;
         this.elements = elements;
         this.problems = problems;
+    }
+
+    /**
+     * Adds the stepping thread's CPU time / wall time of every run (same layout as the µs per step), shown per row so
+     * that runs disturbed by other load can be told apart.
+     *
+     * @param paperShare the paper engine's shares (null: none)
+     * @param tactusShare Tactus's shares
+     * @return this report
+     */
+    SideBySideReport withCpu(Map<String, List<double[]>> paperShare, Map<String, List<double[]>> tactusShare) {
+        this.paperCpu = paperShare;
+        this.tactusCpu = tactusShare;
+        return this;
+    }
+
+    private static String share(Map<String, List<double[]>> cpu, String key) {
+        if (cpu == null || !cpu.containsKey(key)) {
+            return "–";
+        }
+        List<Double> all = new ArrayList<>();
+        for (double[] round : cpu.get(key)) {
+            for (double x : round) {
+                all.add(x);
+            }
+        }
+        return f("%.0f%%", 100 * median(all.stream().mapToDouble(Double::doubleValue).toArray()));
     }
 
     // ==================================================================================== statistics
@@ -218,7 +247,8 @@ final class SideBySideReport {
     String table() {
         StringBuilder sb = new StringBuilder();
         sb.append("| scene | elements | paper's engine, µs per step, median (min–max) | Tactus, µs per step, median "
-                + "(min–max) | ratio paper / Tactus, median (min–max) |\n|---|---|---|---|---|\n");
+                + "(min–max) | ratio paper / Tactus, median (min–max) | CPU/wall of the stepping thread, median (paper; Tactus) |\n"
+                + "|---|---|---|---|---|---|\n");
         for (Row row : ROWS) {
             String p = paper == null ? NOT_COMPARED : spreadUs(roundMedians(paper, row.paperKey));
             String t = spreadUs(roundMedians(tactus, row.tactusKey));
@@ -229,7 +259,8 @@ final class SideBySideReport {
             }
             sb.append("| ").append(row.label).append(problem.isEmpty() ? "" : " (" + problem + ")").append(" | ")
                     .append(elements.getOrDefault(row.tactusKey, "–")).append(" | ").append(p).append(" | ").append(t)
-                    .append(" | ").append(r).append(" |\n");
+                    .append(" | ").append(r).append(" | ").append(paper == null ? NOT_COMPARED : share(paperCpu, row.paperKey))
+                    .append("; ").append(share(tactusCpu, row.tactusKey)).append(" |\n");
         }
         return sb.toString();
     }
@@ -272,7 +303,7 @@ final class SideBySideReport {
 
     /**
      * Puts a section into a report: in place of the previous side-by-side block, else before the first level-2
-     * heading (else at the end).
+     * heading or kept block, whichever comes first (else at the end).
      *
      * @param report the report's current text ("" when it does not exist)
      * @param section the new section, from {@link #section}
@@ -292,10 +323,12 @@ final class SideBySideReport {
             }
         }
         int h2 = report.startsWith("## ") ? 0 : report.indexOf("\n## ");
-        if (h2 < 0) {
+        h2 = h2 > 0 ? h2 + 1 : h2;
+        int kept = report.indexOf(Bench.KEPT_BEGIN);
+        int at = h2 < 0 ? kept : kept < 0 ? h2 : Math.min(h2, kept);
+        if (at < 0) {
             return report + (report.isEmpty() || report.endsWith("\n\n") ? "" : "\n") + section;
         }
-        int at = h2 == 0 ? 0 : h2 + 1;
         return report.substring(0, at) + section + "\n" + report.substring(at);
     }
 }
