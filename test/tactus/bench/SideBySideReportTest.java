@@ -75,6 +75,45 @@ class SideBySideReportTest {
         assertTrue(missed.verdicts().get(3).measured.startsWith("+6.0 %"), missed.verdicts().get(3).measured);
     }
 
+    /** The same layout as the figures, every run at CPU/wall {@code share}. */
+    private static Map<String, List<double[]>> shares(Map<String, List<double[]>> figures, double share) {
+        Map<String, List<double[]>> m = new LinkedHashMap<>();
+        for (Map.Entry<String, List<double[]>> e : figures.entrySet()) {
+            List<double[]> rounds = new ArrayList<>();
+            for (double[] r : e.getValue()) {
+                double[] s = new double[r.length];
+                Arrays.fill(s, share);
+                rounds.add(s);
+            }
+            m.put(e.getKey(), rounds);
+        }
+        return m;
+    }
+
+    @Test
+    void disturbedRunsAreJudgedOnTheSteppingThreadsCpuTime() {
+        Map<String, List<double[]>> paper = engine(10, 500, 200, 0, 1.2);
+        Map<String, List<double[]>> tactus = engine(2.5, 100, 50, 2, 1.20);
+        // Tactus's plain runs were descheduled half of the time; its reader runs were not: in CPU time the reader
+        // adds 4 % (CPU figures) where the wall figures say +20 %
+        Map<String, List<double[]>> tShare = shares(tactus, 0.5);
+        tShare.put("marbles-200/explicit-reader", shares(tactus, 0.5 * 1.04 / 1.20).get("marbles-200/explicit-reader"));
+        SideBySideReport r = new SideBySideReport(paper, tactus, new LinkedHashMap<>(), new LinkedHashMap<>())
+                .withCpu(shares(paper, 0.95), tShare);
+        SideBySideReport.Verdict reader = r.verdicts().get(3);
+        assertEquals("met", reader.verdict, reader.measured);
+        assertTrue(reader.measured.startsWith("+4.0 %") && reader.measured.contains("CPU time"), reader.measured);
+        // paper at 95 %, Tactus at 50 %: the mesh ratio 5.0 in wall time is 9.5 in CPU time
+        SideBySideReport.Verdict mesh = r.verdicts().get(2);
+        assertTrue(mesh.measured.startsWith("mesh-100: 9.50×"), mesh.measured);
+        // quiet runs: judged on wall time, as measured
+        SideBySideReport quiet = new SideBySideReport(paper, tactus, new LinkedHashMap<>(), new LinkedHashMap<>())
+                .withCpu(shares(paper, 0.95), shares(tactus, 0.99));
+        assertEquals("**not met**", quiet.verdicts().get(3).verdict, "wall time says +20 %");
+        assertTrue(quiet.verdicts().get(2).measured.equals("mesh-100: 5.00×"), quiet.verdicts().get(2).measured);
+        assertTrue(quiet.table().contains("| 95%; 99% | 4.80× (4.80–4.80) |"), quiet.table());
+    }
+
     @Test
     void withoutTheJarThePaperColumnSaysNotCompared() {
         SideBySideReport r = new SideBySideReport(null, engine(2.5, 100, 50, 2, 1.03), new LinkedHashMap<>(),
