@@ -392,6 +392,9 @@ public final class SideBySide {
                 + "elongation and rest length) inside `synchronized (mdl.getLock())`, the stepping thread waiting meanwhile. The contact "
                 + "group row compares Tactus's `addContactGroup` with the paper engine's one `Contact3D` per pair (it "
                 + "has no group). CPU/wall below 100 % means that the stepping thread was descheduled (other load on the "
-                + "machine) or, on the paper's engine with a reader, waiting for the lock. Every scene checks that all positions are finite at the end.\n";
+                + "machine) or, on the paper's engine with a reader, waiting for the lock. The verdicts use wall time when "
+                + "the runs concerned were undisturbed (median CPU/wall at least 90 %), else the stepping thread's CPU "
+                + "time (wall × CPU/wall), which other load hardly moves but which leaves out the paper engine's lock "
+                + "waits (so, on the reader rows, it favours the paper's engine); each verdict says which. Every scene checks that all positions are finite at the end.\n";
     }
 }
