@@ -136,7 +136,7 @@ class SideBySideReportTest {
     }
 
     @Test
-    void theSectionReplacesItselfAndSurvivesAStandardRewrite() {
+    void theSectionReplacesItselfAndSurvivesAStandardRewrite() throws Exception {
         SideBySideReport r = new SideBySideReport(null, engine(2.5, 100, 50, 2, 1.03), new LinkedHashMap<>(),
                 new LinkedHashMap<>());
         String one = r.section("first\n", "method\n");
@@ -150,6 +150,13 @@ class SideBySideReportTest {
         assertFalse(again.contains("first\n"));
         assertEquals(1, again.split(java.util.regex.Pattern.quote(SideBySideReport.TAG), -1).length - 1);
         assertEquals(one, SideBySideReport.replaceSection("", one));
+        java.io.File f = java.io.File.createTempFile("performance", ".md");
+        try {
+            java.nio.file.Files.write(f.toPath(), again.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+            assertEquals("\n" + two.trim() + "\n", Bench.keptSections(f), "the standard bench keeps the section");
+        } finally {
+            f.delete();
+        }
         String keptFirst = "# T\n\n" + Bench.KEPT_BEGIN + "\n## How to\n" + Bench.KEPT_END + "\n## Targets\n";
         assertEquals("# T\n\n" + one + "\n" + keptFirst.substring(5), SideBySideReport.replaceSection(keptFirst, one),
                 "a new section goes before a kept block, never inside it");
