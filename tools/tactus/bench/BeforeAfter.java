@@ -27,7 +27,9 @@ import java.util.Locale;
  * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|string-1000|mesh-100|marbles-200]
  * [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
  * --before=<classes dir or jar> | --before-commit=<rev> [--after=<classes dir or jar>] [--deps=<jar:jar...>]
- * [--scene=...] [--rounds=15] [N ...]}. {@code --before-commit} compiles {@code src/} of that commit
+ * [--scene=...] [--rounds=15] [--forks=N] [N ...]}. {@code --forks=N} repeats the comparison in N fresh JVMs
+ * (alternating which build is constructed first) and prints the median of their ratios: one JVM's ratio carries an
+ * offset of its own (see {@link #forkAndSummarise}). {@code --before-commit} compiles {@code src/} of that commit
  * ({@code git archive}) into {@code build/beforeafter/}; {@code --after} and {@code --deps} default to the library's
  * classes and the jars of this JVM's class path. The other scenes ({@code --scene}) are those of
  * {@link tactus.bench.paper.PaperScenes}, loaded once per build, stepped by {@code computeStep()}.
@@ -35,6 +37,8 @@ import java.util.Locale;
 public final class BeforeAfter {
     private static final int RATE = 44100;
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
+    /** Build the "after" model first (forks alternate it, so that an effect of build order cancels out). */
+    private static boolean AFTER_FIRST;
 
     private BeforeAfter() {
     }
@@ -188,6 +192,8 @@ public final class BeforeAfter {
         String deps = classPathEntries(true, null);
         String scene = "audio";
         int rounds = 15;
+        int forks = 1;
+        boolean afterFirst = false;
         List<Integer> sizes = new ArrayList<>();
         for (String a : args) {
             if (a.startsWith("--before=")) {
@@ -200,6 +206,10 @@ public final class BeforeAfter {
                 after = a.substring(8);
             } else if (a.startsWith("--deps=")) {
                 deps = a.substring(7);
+            } else if (a.startsWith("--forks=")) {
+                forks = Integer.parseInt(a.substring(8));
+            } else if (a.equals("--after-first")) {
+                afterFirst = true;
             } else if (a.startsWith("--rounds=")) {
                 rounds = Integer.parseInt(a.substring(9));
             } else {
@@ -209,6 +219,11 @@ public final class BeforeAfter {
         if (beforeCommit != null) {
             before = compileCommit(beforeCommit, deps);
         }
+        if (forks > 1 && before != null) {
+            forkAndSummarise(forks, before, after, deps, scene, rounds, sizes);
+            return;
+        }
+        AFTER_FIRST = afterFirst;
         if (before == null || after.isEmpty()) {
             throw new IllegalArgumentException("usage: --before=<classes> | --before-commit=<rev>, [--after=<classes>] "
                     + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200] [--rounds=15] [N ...]");
@@ -233,8 +248,9 @@ public final class BeforeAfter {
                 + "| real-time factor before | after |");
         System.out.println("|---|---|---|---|---|---|");
         for (int n : sizes) {
+            Build a0 = AFTER_FIRST ? new Build(la, n) : null;
             Build b = new Build(lb, n);
-            Build a = new Build(la, n);
+            Build a = a0 != null ? a0 : new Build(la, n);
             long samples = Math.max(2000, 40_000_000L / (n + 50));
             for (int w = 0; w < 4; w++) {
                 b.render(samples);
@@ -268,13 +284,63 @@ public final class BeforeAfter {
         System.out.println("load average at end " + Bench.loadavg());
     }
 
+    /**
+     * Runs the comparison in {@code forks} fresh JVMs (same flags), alternating which build is constructed first,
+     * and prints each JVM's ratios and their median per row. One JVM's paired ratio carries an offset of its own
+     * (JIT decisions, memory layout; an A/A run, the same code on both sides, gave 0.88 to 1.05 with tight ranges
+     * in single JVMs), which the median over JVMs averages out.
+     */
+    private static void forkAndSummarise(int forks, String before, String after, String deps, String scene, int rounds,
+            List<Integer> sizes) throws IOException, InterruptedException {
+        java.util.Map<String, List<Double>> ratios = new java.util.LinkedHashMap<>();
+        for (int f = 0; f < forks; f++) {
+            List<String> cmd = new ArrayList<>(Arrays.asList(
+                    java.nio.file.Paths.get(System.getProperty("java.home"), "bin", "java").toString()));
+            cmd.addAll(ManagementFactory.getRuntimeMXBean().getInputArguments());
+            cmd.addAll(Arrays.asList("-cp", System.getProperty("java.class.path"), BeforeAfter.class.getName(),
+                    "--before=" + before, "--after=" + after, "--deps=" + deps, "--scene=" + scene,
+                    "--rounds=" + rounds));
+            if (f % 2 == 1) {
+                cmd.add("--after-first");
+            }
+            for (int n : sizes) {
+                cmd.add(Integer.toString(n));
+            }
+            System.out.println("== JVM " + (f + 1) + "/" + forks + (f % 2 == 1 ? " (after built first)" : ""));
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            try (java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(),
+                    java.nio.charset.StandardCharsets.UTF_8))) {
+                for (String line; (line = in.readLine()) != null;) {
+                    System.out.println("  " + line);
+                    String[] cells = line.split("\\|");
+                    if (line.startsWith("| ") && cells.length > 4 && cells[4].trim().matches("[0-9.]+ \\(.*")) {
+                        ratios.computeIfAbsent(cells[1].trim(), k -> new ArrayList<>())
+                                .add(Double.parseDouble(cells[4].trim().split(" ")[0]));
+                    }
+                }
+            }
+            if (p.waitFor() != 0) {
+                throw new IllegalStateException("JVM " + (f + 1) + " failed (exit " + p.exitValue() + ")");
+            }
+        }
+        System.out.println("| " + (scene.equals("audio") ? "string masses (elements)" : "scene")
+                + " | after/before, median over " + forks + " JVMs (min-max of the JVMs' medians) |");
+        System.out.println("|---|---|");
+        for (java.util.Map.Entry<String, List<Double>> e : ratios.entrySet()) {
+            double[] v = e.getValue().stream().mapToDouble(Double::doubleValue).sorted().toArray();
+            double med = v.length % 2 == 1 ? v[v.length / 2] : 0.5 * (v[v.length / 2 - 1] + v[v.length / 2]);
+            System.out.printf(Locale.ROOT, "| %s | %.3f (%.3f-%.3f) |%n", e.getKey(), med, v[0], v[v.length - 1]);
+        }
+    }
+
     /** A side-by-side scene on both builds: µs per step of CPU time, rounds alternating, ratio per round. */
     private static void compareScene(String scene, ClassLoader lb, ClassLoader la, int rounds) throws Throwable {
         System.out.println("JVM " + System.getProperty("java.vm.name") + " " + System.getProperty("java.version")
                 + "; scene " + scene + " (PaperScenes, one computeStep() per step); load average at start "
                 + Bench.loadavg());
+        Build a0 = AFTER_FIRST ? new SceneBuild(la, scene) : null;
         Build b = new SceneBuild(lb, scene);
-        Build a = new SceneBuild(la, scene);
+        Build a = a0 != null ? a0 : new SceneBuild(la, scene);
         long t = System.nanoTime();
         b.render(200);
         long steps = Math.max(200, (long) (0.3e9 / Math.max(1, (System.nanoTime() - t) / 200)));
