@@ -375,7 +375,17 @@ public final class SideBySide {
     }
 
     static String method(Options o) {
-        return "Method: one source (`PaperScenes.java`) written against the paper's API; `SideBySide` compiles a copy "
+        return "Scenes (ALGO_UNITS, parameters per step): **string**, N Mass3D (M 1) between two Ground3D, N + 1 "
+                + "SpringDamper3D (l0 0.08 at spacing 0.1, K 0.4, Z 0.001), friction 1e-5, plucked; **mesh**, 100×100 "
+                + "nodes, the border Ground3D, a SpringDamper3D (l0 0.09, K 0.2, Z 0.001) to the right and lower "
+                + "neighbours (none between two grounded nodes), gravity 1e-5, friction 1e-5, a Gaussian bump; "
+                + "**marbles**, the authors' EnclosedMarbles without its haptic avatar: 200 Mass3D (M 7–10) at random "
+                + "in [-1, 1]³ (fixed seed), gravity 5e-5, friction 1e-3, a Bubble3D per marble (R 3, K 0.1, Z 0.1) "
+                + "to a Ground3D, a PlaneContact per marble (z = 0, K 0.01, Z 0.01), and one Contact3D per unordered "
+                + "pair (threshold 0.2, K 0.02, Z 0.01; the sketch adds both orders) or one contact group. "
+                + "**Elements** = `getNumberOfMats()` + `getNumberOfLinks()` (Ground3D included; the group row counts "
+                + "the group as none).\n\n"
+                + "Method: one source (`PaperScenes.java`) written against the paper's API; `SideBySide` compiles a copy "
                 + "whose only change is its import line (`" + TACTUS_IMPORT + "` → `" + PAPER_IMPORT + "`) against the "
                 + "paper's jar. Each scene runs in " + o.rounds() + " rounds; a round forks one JVM per engine (same "
                 + "flags), the engine that goes first alternating from round to round. A child builds the scene, warms "
