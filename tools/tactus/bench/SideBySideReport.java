@@ -363,7 +363,7 @@ final class SideBySideReport {
      * @return the whole section, in a kept block (markers included)
      */
     String section(String header, String method) {
-        return Bench.KEPT_BEGIN + "\n" + TAG + "\n## Side by side with the paper's engine (issue #18)\n\n" + header + "\n"
+        return Bench.KEPT_BEGIN + "\n" + TAG + "\n## Side by side with the paper's engine (issue #18)\n\n" + header
                 + table() + "\n### Targets\n\n" + verdictTable() + "\n### What a reader costs\n\n" + readerTable() + "\n"
                 + method + Bench.KEPT_END + "\n";
     }
