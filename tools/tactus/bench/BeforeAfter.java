@@ -1,6 +1,7 @@
 package tactus.bench;
 
 import java.io.File;
+import java.io.IOException;
 import java.lang.invoke.MethodHandle;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.MethodType;
@@ -23,21 +24,34 @@ import java.util.Locale;
  * ratio after/before is taken per round, so that load drift on a shared machine cancels out. Times are this
  * thread's CPU time (time spent descheduled does not count).
  *
- * <p>Usage: {@code java -cp <tools classes>:<dependency jars> tactus.bench.BeforeAfter
- * --before=<classes dir or jar> --after=<classes dir or jar> --deps=<jar:jar...> [--rounds=15] [N ...]}.
- * Not part of {@code gradle bench}: the "before" build has to be compiled by hand from an older commit.
+ * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|string-1000|mesh-100|marbles-200]
+ * [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
+ * --before=<classes dir or jar> | --before-commit=<rev> [--after=<classes dir or jar>] [--deps=<jar:jar...>]
+ * [--scene=...] [--rounds=15] [--forks=N] [N ...]}. {@code --forks=N} repeats the comparison in N fresh JVMs
+ * (alternating which build is constructed first) and prints the median of their ratios: one JVM's ratio carries an
+ * offset of its own (see {@link #forkAndSummarise}). {@code --before-commit} compiles {@code src/} of that commit
+ * ({@code git archive}) into {@code build/beforeafter/}; {@code --after} and {@code --deps} default to the library's
+ * classes and the jars of this JVM's class path. The other scenes ({@code --scene}) are those of
+ * {@link tactus.bench.paper.PaperScenes}, loaded once per build, stepped by {@code computeStep()}.
  */
 public final class BeforeAfter {
     private static final int RATE = 44100;
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
+    /** Build the "after" model first (forks alternate it, so that an effect of build order cancels out). */
+    private static boolean AFTER_FIRST;
 
     private BeforeAfter() {
     }
 
     /** One build's string, ready to render: a bound {@code tick(float[])} handle. */
-    private static final class Build {
+    private static class Build {
         final MethodHandle tick;
         final float[] frame = new float[1];
+
+        /** For subclasses that render something else. */
+        Build() {
+            tick = null;
+        }
 
         Build(ClassLoader loader, int n) throws ReflectiveOperationException {
             Class<?> pm = Class.forName("tactus.PhysicalModel", true, loader);
@@ -77,32 +91,155 @@ public final class BeforeAfter {
         }
     }
 
+    /**
+     * One build's side-by-side scene ({@link tactus.bench.paper.PaperScenes}, the tools' class loaded again in the
+     * build's class loader, so it links against that build), stepped by one {@code computeStep()} per step.
+     */
+    private static final class SceneBuild extends Build {
+        final MethodHandle step;
+
+        SceneBuild(ClassLoader loader, String scene) throws ReflectiveOperationException {
+            super();
+            Class<?> ps = Class.forName("tactus.bench.paper.PaperScenes", true, loader);
+            Object model;
+            switch (scene) {
+                case "marbles-200":
+                    model = ps.getMethod("marbles", int.class, java.util.function.Consumer.class).invoke(null, 200, null);
+                    break;
+                case "mesh-100":
+                    model = ps.getMethod("mesh", int.class).invoke(null, 100);
+                    break;
+                case "string-1000":
+                    model = ps.getMethod("string", int.class, int.class).invoke(null, 1000, RATE);
+                    break;
+                default:
+                    throw new IllegalArgumentException("unknown scene " + scene
+                            + " (audio, string-1000, mesh-100, marbles-200)");
+            }
+            step = MethodHandles.publicLookup().findVirtual(model.getClass(), "computeStep",
+                    MethodType.methodType(void.class)).bindTo(model).asType(MethodType.methodType(void.class));
+        }
+
+        @Override
+        void render(long steps) throws Throwable {
+            for (long i = 0; i < steps; i++) {
+                step.invokeExact();
+            }
+        }
+    }
+
+    /**
+     * Extracts {@code src/} of a commit of this repository ({@code git archive}) and compiles it.
+     *
+     * @param rev a commit (any git revision)
+     * @param deps the jars the library compiles against
+     * @return the class path of that build (its classes and its resources)
+     */
+    static String compileCommit(String rev, String deps) throws IOException, InterruptedException {
+        File dir = new File("build/beforeafter/" + rev.replaceAll("[^A-Za-z0-9._-]", "_"));
+        File src = new File(dir, "src");
+        File classes = new File(dir, "classes");
+        deleteTree(dir);
+        src.mkdirs();
+        classes.mkdirs();
+        Process git = new ProcessBuilder("sh", "-c", "git archive --format=tar \"$0\" src | tar -x -C \"$1\"", rev,
+                dir.getAbsolutePath()).inheritIO().start();
+        if (git.waitFor() != 0) {
+            throw new IllegalStateException("git archive " + rev + " src failed (run from the repository's root)");
+        }
+        List<String> files = new ArrayList<>();
+        try (java.util.stream.Stream<java.nio.file.Path> walk = java.nio.file.Files.walk(src.toPath())) {
+            walk.filter(f -> f.toString().endsWith(".java")).forEach(f -> files.add(f.toString()));
+        }
+        List<String> opts = new ArrayList<>(Arrays.asList("-nowarn", "-proc:none", "-encoding", "UTF-8", "--release",
+                "17", "-cp", deps, "-d", classes.getAbsolutePath()));
+        opts.addAll(files);
+        javax.tools.JavaCompiler javac = javax.tools.ToolProvider.getSystemJavaCompiler();
+        if (javac == null || javac.run(null, null, null, opts.toArray(new String[0])) != 0) {
+            throw new IllegalStateException("could not compile src/ of " + rev + " (a JDK is needed)");
+        }
+        System.out.println("before: " + rev + " compiled into " + classes);
+        return classes.getAbsolutePath() + File.pathSeparator + src.getAbsolutePath();
+    }
+
+    private static void deleteTree(File f) {
+        File[] children = f.listFiles();
+        if (children != null) {
+            for (File c : children) {
+                deleteTree(c);
+            }
+        }
+        f.delete();
+    }
+
+    /** @return the entries of this JVM's class path that are jars (the dependencies) or that hold a given class */
+    static String classPathEntries(boolean jars, String resource) {
+        StringBuilder sb = new StringBuilder();
+        for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            boolean jar = e.endsWith(".jar");
+            boolean holds = !jar && resource != null && new File(e, resource).isFile();
+            if (jars ? jar : holds) {
+                sb.append(sb.length() == 0 ? "" : File.pathSeparator).append(e);
+            }
+        }
+        return sb.toString();
+    }
+
     public static void main(String[] args) throws Throwable {
         String before = null;
-        String after = null;
-        String deps = "";
+        String beforeCommit = null;
+        String after = classPathEntries(false, "tactus/PhysicalModel.class");
+        String deps = classPathEntries(true, null);
+        String scene = "audio";
         int rounds = 15;
+        int forks = 1;
+        boolean afterFirst = false;
         List<Integer> sizes = new ArrayList<>();
         for (String a : args) {
             if (a.startsWith("--before=")) {
                 before = a.substring(9);
+            } else if (a.startsWith("--before-commit=")) {
+                beforeCommit = a.substring(16);
+            } else if (a.startsWith("--scene=")) {
+                scene = a.substring(8);
             } else if (a.startsWith("--after=")) {
                 after = a.substring(8);
             } else if (a.startsWith("--deps=")) {
                 deps = a.substring(7);
+            } else if (a.startsWith("--forks=")) {
+                forks = Integer.parseInt(a.substring(8));
+            } else if (a.equals("--after-first")) {
+                afterFirst = true;
             } else if (a.startsWith("--rounds=")) {
                 rounds = Integer.parseInt(a.substring(9));
             } else {
                 sizes.add(Integer.parseInt(a));
             }
         }
-        if (before == null || after == null) {
-            throw new IllegalArgumentException("usage: --before=<classes> --after=<classes> --deps=<jars> [N ...]");
+        if (beforeCommit != null) {
+            before = compileCommit(beforeCommit, deps);
+        }
+        if (forks > 1 && before != null) {
+            forkAndSummarise(forks, before, after, deps, scene, rounds, sizes);
+            return;
+        }
+        AFTER_FIRST = afterFirst;
+        if (before == null || after.isEmpty()) {
+            throw new IllegalArgumentException("usage: --before=<classes> | --before-commit=<rev>, [--after=<classes>] "
+                    + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200] [--rounds=15] [N ...]");
         }
         if (sizes.isEmpty()) {
             sizes.addAll(Arrays.asList(1000, 3000, 4000, 5000, 6000, 10000));
         }
         ClassLoader shared = new URLClassLoader(urls(deps), ClassLoader.getPlatformClassLoader());
+        if (!scene.equals("audio")) {
+            // The scene's class is loaded again by each build's loader, beside that build, so that it links to it.
+            String tools = classPathEntries(false, "tactus/bench/paper/PaperScenes.class");
+            ClassLoader lb = new URLClassLoader(urls(before + File.pathSeparator + tools), shared);
+            ClassLoader la = new URLClassLoader(urls(after + File.pathSeparator + tools), shared);
+            compareScene(scene, lb, la, rounds);
+            return;
+        }
         ClassLoader lb = new URLClassLoader(urls(before), shared);
         ClassLoader la = new URLClassLoader(urls(after), shared);
         System.out.println("JVM " + System.getProperty("java.vm.name") + " " + System.getProperty("java.version")
@@ -111,8 +248,9 @@ public final class BeforeAfter {
                 + "| real-time factor before | after |");
         System.out.println("|---|---|---|---|---|---|");
         for (int n : sizes) {
+            Build a0 = AFTER_FIRST ? new Build(la, n) : null;
             Build b = new Build(lb, n);
-            Build a = new Build(la, n);
+            Build a = a0 != null ? a0 : new Build(la, n);
             long samples = Math.max(2000, 40_000_000L / (n + 50));
             for (int w = 0; w < 4; w++) {
                 b.render(samples);
@@ -143,6 +281,94 @@ public final class BeforeAfter {
             System.out.printf(Locale.ROOT, "| %,d (%,d) | %,.0f | %,.0f | %.3f (%.3f-%.3f) | %.2fx | %.2fx |%n", n, 2 * n + 1,
                     mb, ma, ratio[rounds / 2], ratio[0], ratio[rounds - 1], 1e9 / RATE / mb, 1e9 / RATE / ma);
         }
+        System.out.println("load average at end " + Bench.loadavg());
+    }
+
+    /**
+     * Runs the comparison in {@code forks} fresh JVMs (same flags), alternating which build is constructed first,
+     * and prints each JVM's ratios and their median per row. One JVM's paired ratio carries an offset of its own
+     * (JIT decisions, memory layout; an A/A run, the same code on both sides, gave 0.88 to 1.05 with tight ranges
+     * in single JVMs), which the median over JVMs averages out.
+     */
+    private static void forkAndSummarise(int forks, String before, String after, String deps, String scene, int rounds,
+            List<Integer> sizes) throws IOException, InterruptedException {
+        java.util.Map<String, List<Double>> ratios = new java.util.LinkedHashMap<>();
+        for (int f = 0; f < forks; f++) {
+            List<String> cmd = new ArrayList<>(Arrays.asList(
+                    java.nio.file.Paths.get(System.getProperty("java.home"), "bin", "java").toString()));
+            cmd.addAll(ManagementFactory.getRuntimeMXBean().getInputArguments());
+            cmd.addAll(Arrays.asList("-cp", System.getProperty("java.class.path"), BeforeAfter.class.getName(),
+                    "--before=" + before, "--after=" + after, "--deps=" + deps, "--scene=" + scene,
+                    "--rounds=" + rounds));
+            if (f % 2 == 1) {
+                cmd.add("--after-first");
+            }
+            for (int n : sizes) {
+                cmd.add(Integer.toString(n));
+            }
+            System.out.println("== JVM " + (f + 1) + "/" + forks + (f % 2 == 1 ? " (after built first)" : ""));
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            try (java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(),
+                    java.nio.charset.StandardCharsets.UTF_8))) {
+                for (String line; (line = in.readLine()) != null;) {
+                    System.out.println("  " + line);
+                    String[] cells = line.split("\\|");
+                    if (line.startsWith("| ") && cells.length > 4 && cells[4].trim().matches("[0-9.]+ \\(.*")) {
+                        ratios.computeIfAbsent(cells[1].trim(), k -> new ArrayList<>())
+                                .add(Double.parseDouble(cells[4].trim().split(" ")[0]));
+                    }
+                }
+            }
+            if (p.waitFor() != 0) {
+                throw new IllegalStateException("JVM " + (f + 1) + " failed (exit " + p.exitValue() + ")");
+            }
+        }
+        System.out.println("| " + (scene.equals("audio") ? "string masses (elements)" : "scene")
+                + " | after/before, median over " + forks + " JVMs (min-max of the JVMs' medians) |");
+        System.out.println("|---|---|");
+        for (java.util.Map.Entry<String, List<Double>> e : ratios.entrySet()) {
+            double[] v = e.getValue().stream().mapToDouble(Double::doubleValue).sorted().toArray();
+            double med = v.length % 2 == 1 ? v[v.length / 2] : 0.5 * (v[v.length / 2 - 1] + v[v.length / 2]);
+            System.out.printf(Locale.ROOT, "| %s | %.3f (%.3f-%.3f) |%n", e.getKey(), med, v[0], v[v.length - 1]);
+        }
+    }
+
+    /** A side-by-side scene on both builds: µs per step of CPU time, rounds alternating, ratio per round. */
+    private static void compareScene(String scene, ClassLoader lb, ClassLoader la, int rounds) throws Throwable {
+        System.out.println("JVM " + System.getProperty("java.vm.name") + " " + System.getProperty("java.version")
+                + "; scene " + scene + " (PaperScenes, one computeStep() per step); load average at start "
+                + Bench.loadavg());
+        Build a0 = AFTER_FIRST ? new SceneBuild(la, scene) : null;
+        Build b = new SceneBuild(lb, scene);
+        Build a = a0 != null ? a0 : new SceneBuild(la, scene);
+        long t = System.nanoTime();
+        b.render(200);
+        long steps = Math.max(200, (long) (0.3e9 / Math.max(1, (System.nanoTime() - t) / 200)));
+        for (int w = 0; w < 4; w++) {
+            b.render(steps);
+            a.render(steps);
+        }
+        double[] tb = new double[rounds];
+        double[] ta = new double[rounds];
+        double[] ratio = new double[rounds];
+        for (int r = 0; r < rounds; r++) {
+            Build first = r % 2 == 0 ? b : a;
+            long t0 = CPU.getCurrentThreadCpuTime();
+            first.render(steps);
+            long t1 = CPU.getCurrentThreadCpuTime();
+            (first == b ? a : b).render(steps);
+            long t2 = CPU.getCurrentThreadCpuTime();
+            tb[r] = (first == b ? t1 - t0 : t2 - t1) / 1e3 / steps;
+            ta[r] = (first == b ? t2 - t1 : t1 - t0) / 1e3 / steps;
+            ratio[r] = ta[r] / tb[r];
+        }
+        Arrays.sort(tb);
+        Arrays.sort(ta);
+        Arrays.sort(ratio);
+        System.out.println("| scene | before µs/step | after µs/step | after/before, median (min-max) |");
+        System.out.println("|---|---|---|---|");
+        System.out.printf(Locale.ROOT, "| %s | %.2f | %.2f | %.3f (%.3f-%.3f) |%n", scene, tb[rounds / 2],
+                ta[rounds / 2], ratio[rounds / 2], ratio[0], ratio[rounds - 1]);
         System.out.println("load average at end " + Bench.loadavg());
     }
 

@@ -27,7 +27,10 @@ import java.util.function.Supplier;
  *   <li>{@code --only=id,id}: run only these scenes (ids: see {@link Scenes#ids()});</li>
  *   <li>{@code --jdk=17|25|both}: which JDKs to run (default both; 17 means the running java);</li>
  *   <li>{@code --jdk25=/path/to/bin/java}: the second JDK (default
- *       {@value #JDK25}).</li>
+ *       {@value #JDK25});</li>
+ *   <li>{@code --scenes=standard,paper,paper/<id>,<id>}: which parts run (see {@link Selection}; default all);</li>
+ *   <li>{@code --paper-source=<PaperScenes.java>}, {@code --paper-miphysics=<jar>}, {@code --paper-work=<dir>},
+ *       {@code --paper-rounds=N}: the side-by-side part against the paper's engine ({@link SideBySide}).</li>
  * </ul>
  *
  * <p>The parent process does no timing. It forks one child JVM per (scene, JDK) with the same classpath and
@@ -56,22 +59,77 @@ public final class Bench {
         List<String> only = null;
         String jdks = "both";
         String jdk25 = JDK25;
+        SideBySide.Options side = new SideBySide.Options();
+        Selection selection = new Selection(null);
         for (String a : args) {
             if (a.equals("--quick")) {
                 quick = true;
+                side.quick = true;
             } else if (a.startsWith("--only=")) {
                 only = Arrays.asList(a.substring(7).split(","));
             } else if (a.startsWith("--jdk=")) {
                 jdks = a.substring(6);
             } else if (a.startsWith("--jdk25=")) {
                 jdk25 = a.substring(8);
+            } else if (a.startsWith("--scenes=")) {
+                selection = new Selection(a.substring(9));
+            } else if (a.startsWith("--paper-")) {
+                side.parse("--" + a.substring(8));
             } else if (a.startsWith("--")) {
                 throw new IllegalArgumentException("unknown option " + a);
             } else {
                 out = a;
             }
         }
-        new Parent(new File(out), quick, only, jdks, jdk25).run();
+        if (selection.standard) {
+            new Parent(new File(out), quick, selection.only != null ? selection.only : only, jdks, jdk25).run();
+        }
+        if (selection.paper != null) {
+            side.scenes = selection.paper;
+            SideBySide.run(new File(out), side);
+        }
+    }
+
+    /**
+     * What {@code --scenes=} selects (Gradle: {@code -Pscenes=}): a comma-separated list of {@code standard} (every
+     * scene of this class), {@code paper} (every side-by-side scene), {@code paper/<id>} (one side-by-side scene, see
+     * {@link tactus.bench.paper.PaperScenes#SCENES}) and standard scene ids. Absent: everything.
+     */
+    static final class Selection {
+        boolean standard;
+        List<String> only;
+        List<String> paper;
+
+        Selection(String spec) {
+            if (spec == null || spec.isEmpty()) {
+                standard = true;
+                paper = new ArrayList<>(Arrays.asList(tactus.bench.paper.PaperScenes.SCENES));
+                return;
+            }
+            for (String t : spec.split(",")) {
+                if (t.equals("standard")) {
+                    standard = true;
+                } else if (t.equals("paper")) {
+                    paper = new ArrayList<>(Arrays.asList(tactus.bench.paper.PaperScenes.SCENES));
+                } else if (t.startsWith("paper/")) {
+                    String id = t.substring(6);
+                    if (!Arrays.asList(tactus.bench.paper.PaperScenes.SCENES).contains(id)) {
+                        throw new IllegalArgumentException("unknown side-by-side scene " + id + "; scenes: "
+                                + Arrays.toString(tactus.bench.paper.PaperScenes.SCENES));
+                    }
+                    if (paper == null) {
+                        paper = new ArrayList<>();
+                    }
+                    paper.add(id);
+                } else {
+                    standard = true;
+                    if (only == null) {
+                        only = new ArrayList<>();
+                    }
+                    only.add(t);
+                }
+            }
+        }
     }
 
     // ================================================================================================ parent

@@ -1055,11 +1055,14 @@ final class Report {
     private void reproduce() {
         line("## Reproducing");
         blank();
-        line("`gradle bench` runs everything (about 10 minutes) and rewrites this file. By hand: "
+        line("`gradle bench` runs everything (the standard scenes, about 10 minutes, then the side-by-side scenes "
+                + "against the paper's engine, see that section) and rewrites this file, keeping its kept sections. "
+                + "`-Pscenes=standard` runs the standard scenes only, `-Pquick` shortens the runs, "
+                + "`-PbenchArgs=\"--only=chain-1000,overhead --jdk=17\"` passes options through. By hand: "
                 + "`java -cp build/classes/java/tools:build/classes/java/main:<processing core jar> tactus.bench.Bench "
-                + "docs/performance.md [--quick] [--only=chain-1000,overhead] [--jdk=17|25|both] [--jdk25=<java>]`. "
-                + "`test/tactus/bench/BenchSmokeTest` checks the harness (a few hundred steps, no timing) as part of "
-                + "`gradle test`.");
+                + "docs/performance.md [--quick] [--scenes=standard] [--only=chain-1000,overhead] [--jdk=17|25|both] "
+                + "[--jdk25=<java>]`. `test/tactus/bench/BenchSmokeTest` checks the harness (a few hundred steps, no "
+                + "timing) as part of `gradle test`.");
         blank();
         if (!hasJdk("25")) {
             line("JDK 25 was not available at `" + Bench.JDK25 + "`: its columns are empty.");
