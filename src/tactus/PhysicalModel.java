@@ -247,6 +247,7 @@ public class PhysicalModel {
         enter();
         try {
             if (core.own == null) {
+                core.snapshots.publishIfDirty(); // from now on only the owner may publish
                 core.setOwnership(new Ownership(core));
             }
         } finally {
@@ -534,7 +535,7 @@ public class PhysicalModel {
             core.engine.compile();
             core.initialized = true;
             core.guard.arm();
-            core.snapshots.publish();
+            core.snapshots.topologyChanged();
         });
     }
 
@@ -566,8 +567,14 @@ public class PhysicalModel {
         enter();
         try {
             int n = frame >= 0 ? frame : core.time.stepsForFrame();
-            runSteps(n);
-            core.snapshots.publish();
+            core.snapshots.beginFrame();
+            try {
+                runSteps(n);
+            } catch (RuntimeException | Error e) {
+                core.snapshots.abandonFrame();
+                throw e;
+            }
+            core.snapshots.endFrame();
             return n;
         } finally {
             exit();
@@ -748,17 +755,42 @@ public class PhysicalModel {
     }
 
     /**
-     * Returns the newest consistent copy of the model's positions, for drawing from a thread that does not step
-     * the model: it never takes the lock, so it never delays an audio or haptic thread, and the copy is never
-     * torn. The model publishes one at {@link #init()}, at the end of every {@link #draw_physics()}, after every
-     * topology edit, and every half display frame of simulated time while it is stepped by {@link #computeStep()}
-     * or {@link #computeNSteps(int)}. Call it from one thread only (the sketch's animation thread); the returned
-     * object stays valid until that thread's next call.
+     * Returns the newest consistent copy of the model's state, for drawing from a thread that does not step the
+     * model: it never waits for the lock, so it never delays an audio or haptic thread, and the copy is never torn.
+     * Call it from one thread only (the sketch's animation thread); the returned object stays valid until that
+     * thread's next call.
+     *
+     * <p>The model copies its state only for a reader: until the first call it copies nothing (a model that is never
+     * drawn pays nothing), and from then on it publishes a copy at most once per display frame of simulated time
+     * ({@link #getDisplayRate()}): at the end of every {@link #draw_physics()}, or after the step that completes a
+     * frame while it is stepped by {@link #computeStep()} or {@link #computeNSteps(int)}, for as long as this method
+     * keeps being called (and a few frames more). What a call returns:
+     * <ul>
+     *   <li>after {@link #init()} or a topology change (modules added or removed, a mass made fixed): a copy of the
+     *       new topology (in locked mode this call publishes it, unless another thread holds the lock, in which case
+     *       the next step or call does);</li>
+     *   <li>while the model is stepped and read every frame: a copy at most one display frame of simulated time
+     *       old;</li>
+     *   <li>after a pause in reading of more than a few frames: in locked mode a fresh copy (this call publishes it
+     *       when the lock is free); in realtime mode the last copy published, and the owner's next stepping call
+     *       publishes, so the next call is fresh.</li>
+     * </ul>
+     * Interactions are copied unless the reader declines them ({@link ModelSnapshot#requestLinks}).
      *
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        return core.snapshots.exchange.latest();
+        SnapshotWriter w = core.snapshots;
+        if (w.request() && core.own == null && lock.tryLock()) {
+            try {
+                if (core.own == null) {
+                    w.publishForReader(); // locked mode: this thread may write, holding the lock
+                }
+            } finally {
+                lock.unlock();
+            }
+        }
+        return w.exchange.latest();
     }
 
     // =================================================================== global medium

@@ -56,6 +56,8 @@ public final class ModelDrawer {
     private boolean showArrows = true;
     private boolean disposed;
     private boolean motionRequested;
+    /** What this drawer last asked the model for: interactions (the model's default) or masses only. */
+    private boolean linksRequested = true;
 
     /**
      * Creates a drawer with the default styles, scale 1, zoom (1, 1, 1), colours by type, and force arrows of
@@ -284,10 +286,15 @@ public final class ModelDrawer {
             s.requestMotion(false);
             motionRequested = false;
         }
+        // The model copies its interactions only for a reader that draws them.
+        if (showLinks != linksRequested) {
+            s.requestLinks(showLinks);
+            linksRequested = showLinks;
+        }
         g.pushStyle();
         try {
             g.colorMode(PConstants.RGB, 255);
-            if (showLinks) {
+            if (showLinks && s.hasLinks()) {
                 drawLinks(s, g);
             }
             if (showMasses) {
