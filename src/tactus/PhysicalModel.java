@@ -755,39 +755,50 @@ public class PhysicalModel {
     }
 
     /**
-     * Returns the newest consistent copy of the model's state, for drawing from a thread that does not step the
-     * model: it never waits for the lock, so it never delays an audio or haptic thread, and the copy is never torn.
-     * Call it from one thread only (the sketch's animation thread); the returned object stays valid until that
-     * thread's next call.
+     * Returns a consistent copy of the model's state, for drawing from a thread that does not step the model. The
+     * copy is never torn, and this call never delays an audio or haptic thread. Call it from one thread only (the
+     * sketch's animation thread); the returned object stays valid until that thread's next call.
      *
      * <p>The model copies its state only for a reader: until the first call it copies nothing (a model that is never
-     * drawn pays nothing), and from then on it publishes a copy at most once per display frame of simulated time
-     * ({@link #getDisplayRate()}): at the end of every {@link #draw_physics()}, or after the step that completes a
-     * frame while it is stepped by {@link #computeStep()} or {@link #computeNSteps(int)}, for as long as this method
-     * keeps being called (and a few frames more). What a call returns:
+     * drawn pays nothing). Interactions are copied unless the reader declines them
+     * ({@link ModelSnapshot#requestLinks}). What a call returns:
      * <ul>
-     *   <li>after {@link #init()} or a topology change (modules added or removed, a mass made fixed): a copy of the
-     *       new topology (in locked mode this call publishes it, unless another thread holds the lock, in which case
-     *       the next step or call does);</li>
-     *   <li>while the model is stepped and read every frame: a copy at most one display frame of simulated time
-     *       old;</li>
-     *   <li>after a pause in reading of more than a few frames: in locked mode a fresh copy (this call publishes it
-     *       when the lock is free); in realtime mode the last copy published, and the owner's next stepping call
-     *       publishes, so the next call is fresh.</li>
+     *   <li>Locked mode (no realtime stepping): when the lock is free, the current state (this call copies it,
+     *       unless the newest copy already shows the current step); when another thread holds the lock, the newest
+     *       copy, and that thread publishes a fresh one after the step that ends the current display frame of
+     *       simulated time. After {@link #init()} or a topology change that no call has seen yet, this call waits
+     *       for the lock (at most one slice of a stepping batch) and copies the new topology.</li>
+     *   <li>Realtime mode ({@link #beginRealtimeStepping()}): the newest copy published by the stepping thread, which
+     *       publishes at most once per display frame of simulated time ({@link #getDisplayRate()}) while this method
+     *       is called, and for a few frames after the last call; a topology change is published before the call
+     *       that made it returns. After a pause in reading of more than a few frames, the first call returns the
+     *       last copy published (from the start of the pause) and the stepping thread publishes at its next
+     *       stepping call, so the next call is fresh.</li>
      * </ul>
-     * Interactions are copied unless the reader declines them ({@link ModelSnapshot#requestLinks}).
      *
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
         SnapshotWriter w = core.snapshots;
-        if (w.request() && core.own == null && lock.tryLock()) {
-            try {
-                if (core.own == null) {
-                    w.publishForReader(); // locked mode: this thread may write, holding the lock
+        w.request();
+        if (core.own == null) {
+            // locked mode: this thread may publish, holding the lock; it waits for it only to publish a topology
+            // change nobody has read yet, else it leaves a busy lock alone (the writer's next frame publishes)
+            boolean locked;
+            if (w.dirty()) {
+                lock.lock();
+                locked = true;
+            } else {
+                locked = lock.tryLock();
+            }
+            if (locked) {
+                try {
+                    if (core.own == null) {
+                        w.publishForReader();
+                    }
+                } finally {
+                    lock.unlock();
                 }
-            } finally {
-                lock.unlock();
             }
         }
         return w.exchange.latest();

@@ -9,12 +9,13 @@ import tactus.engine.MassKind;
  * lock (locked mode) or the realtime owner's gate, which makes it the single writer of the exchange.
  *
  * <p>When: nothing is copied until a reader has called {@link PhysicalModel#getSnapshot()} ({@link #request()}).
- * From then on the model publishes at most once per display frame of simulated time (at the end of a
- * {@link PhysicalModel#draw_physics()} frame, or after the step that completes a frame of simulated time), for as
- * long as the reader keeps calling, plus {@link #KEEP_FRAMES} frames; then it stops until the next call, and the
- * step after that call publishes at once. A topology change (and {@code init()}) is published at once when a
- * reader has ever read or the model is stepped in realtime; otherwise it marks the copy dirty, and the next
- * {@code getSnapshot()} publishes it (see {@link #readerMayPublish()}).
+ * In locked mode the reader publishes itself, holding the lock ({@link #publishForReader()}), when it finds the lock
+ * free; a read that finds it busy is served by the stepping thread after the step that ends the current display
+ * frame of simulated time. In realtime mode the owner publishes at most once per display frame of simulated time
+ * (at the end of a frame of steps) while the reader keeps calling, and {@link #KEEP_FRAMES} frames more; then it
+ * stops until the next call, and its next stepping call publishes. A topology change (and {@code init()}) is
+ * published at once when a reader has ever read or the model is stepped in realtime; otherwise it marks the copy
+ * dirty, and the next read publishes it.
  *
  * <p>What: every mass's position every time; velocities and forces on request; interactions only while the reader
  * asks for them ({@link ModelSnapshot#requestLinks}), and then only their length parameters each time: their ends,
@@ -39,13 +40,13 @@ final class SnapshotWriter {
     // ---- the writer's side (written under the model's lock or the owner's gate)
     /** A topology change (or init) is not published yet, and nobody has read since: the reader publishes it. */
     private volatile boolean dirty;
-    /** The writer has stopped publishing (no read for {@link #KEEP_FRAMES} frames): the reader may publish. */
-    private volatile boolean idle = true;
     private long seenReads;
     private int quietFrames = KEEP_FRAMES;
     private long stepsSince;
     private boolean frameDeferred;
     private long lastStep = -1;
+    private boolean lastMotion;
+    private boolean lastLinks;
     /** Topology version: bumped by every published topology change; the caches below follow it. */
     private int version;
     private int massCacheVersion = -1;
@@ -81,31 +82,30 @@ final class SnapshotWriter {
 
     // ================================================================ the reader's side
 
-    /**
-     * The reader's call (from {@link PhysicalModel#getSnapshot()}): asks the writer to keep publishing.
-     *
-     * @return true when the reader should publish itself if it can take the lock without waiting (locked mode):
-     *     a topology change is not published yet, or the writer has stopped publishing for want of a reader
-     */
-    boolean request() {
+    /** The reader's call (from {@link PhysicalModel#getSnapshot()}): asks the writer to keep publishing. */
+    void request() {
         reads = reads + 1; // one reading thread by contract; a lost increment still changes the value
-        return dirty || idle;
+    }
+
+    /** @return true when a topology change is not published yet: the reader waits for the lock to publish it. */
+    boolean dirty() {
+        return dirty;
     }
 
     /**
-     * The reader, holding the lock in locked mode, publishes what the writer has not: the pending topology change,
-     * or the current state when the writer stopped publishing and steps have run since.
+     * The reader, holding the lock in locked mode, publishes the current state unless the newest copy already shows
+     * it (same step, same topology, same requests); the writer then stays quiet until a read finds the lock busy.
      */
     void publishForReader() {
         if (!c.initialized) {
             return;
         }
-        if (dirty || (idle && engine.stepCount() != lastStep)) {
+        if (dirty || engine.stepCount() != lastStep || lastMotion != exchange.motion
+                || lastLinks != exchange.links) {
             publish();
         }
         seenReads = reads;
-        quietFrames = 0;
-        idle = false;
+        quietFrames = KEEP_FRAMES;
     }
 
     // ================================================================ the writer's side
@@ -154,12 +154,9 @@ final class SnapshotWriter {
         if (r != seenReads) {
             seenReads = r;
             quietFrames = 0;
-            idle = false;
             publish();
         } else if (quietFrames < KEEP_FRAMES) {
-            if (++quietFrames == KEEP_FRAMES) {
-                idle = true;
-            }
+            quietFrames++;
             publish();
         }
         // else nobody reads: no copy; the step after the next read publishes (stepsSince has kept counting)
@@ -238,6 +235,8 @@ final class SnapshotWriter {
         s.links = nl;
         s.hasLinks = withLinks;
         s.motion = exchange.motion;
+        lastMotion = s.motion;
+        lastLinks = withLinks;
         s.step = step;
         lastStep = step;
         exchange.publish();
@@ -285,7 +284,12 @@ final class SnapshotWriter {
             double per = 1;
             if (kind == MassKind.HAPTIC_INPUT3D) {
                 long taken = engine.stepsSinceTake(id);
-                if (since > 0 && taken > since && lastId[i] == id) {
+                long before;
+                if (taken == 0 && (before = engine.lastTakenForce(id, tmp)) > 0) {
+                    // taken at this very step (a reader publishing between a haptic loop's step and its take):
+                    // the buffer is empty, the sum just taken holds this step's force
+                    per = 1.0 / before;
+                } else if (since > 0 && taken > since && lastId[i] == id) {
                     tmp[0] = fx - lastSum[q];
                     tmp[1] = fy - lastSum[q + 1];
                     tmp[2] = fz - lastSum[q + 2];

@@ -1032,6 +1032,29 @@ public final class Engine implements AutoCloseable {
         }
         long n = steps - masses.lastTake[id];
         masses.lastTake[id] = steps;
+        int q = 3 * id;
+        masses.lastTaken[q] = out[0];
+        masses.lastTaken[q + 1] = out[1];
+        masses.lastTaken[q + 2] = out[2];
+        masses.lastTakenSteps[id] = n;
+        return n;
+    }
+
+    /**
+     * Writes the sum that {@link #takeForce} last took from a mass into {@code out[0..2]} (a reader's query: a
+     * snapshot taken just after a take shows it).
+     *
+     * @return the number of steps that sum covered; 0 when nothing was taken yet (out is then untouched)
+     */
+    public long lastTakenForce(int id, double[] out) {
+        checkMass(id);
+        long n = masses.lastTakenSteps[id];
+        if (n > 0) {
+            int q = 3 * id;
+            out[0] = masses.lastTaken[q];
+            out[1] = masses.lastTaken[q + 1];
+            out[2] = masses.lastTaken[q + 2];
+        }
         return n;
     }
 
