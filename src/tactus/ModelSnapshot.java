@@ -29,6 +29,9 @@ public final class ModelSnapshot {
     /** The topology version whose mass types, and interaction ends, types and shapes, this buffer holds. */
     int massVersion = -1;
     int linkVersion = -1;
+    /** The link cache stamp and the engine's count of link parameter edits when the lengths were copied. */
+    int lengthsCopied = -1;
+    long lengthEdits = -1;
     boolean hasLinks;
 
     final SnapshotExchange owner;
@@ -241,6 +244,7 @@ public final class ModelSnapshot {
             plane = new double[cap];
             linkTypes = new linkModuleType[cap];
             linkVersion = -1;
+            lengthsCopied = -1;
         }
     }
 }

@@ -18,9 +18,10 @@ import tactus.engine.MassKind;
  * dirty, and the next read publishes it.
  *
  * <p>What: every mass's position every time; velocities and forces on request; interactions only while the reader
- * asks for them ({@link ModelSnapshot#requestLinks}), and then only their length parameters each time: their ends,
- * types and shapes are computed once per topology version and copied, and the elongation is computed by the reader
- * from the copied positions.
+ * asks for them ({@link ModelSnapshot#requestLinks}), and then nothing per interaction unless something changed:
+ * their ends, types and shapes are computed once per topology version and copied into each buffer once, their
+ * length parameters (and plane positions) are copied into a buffer only when one was set since it last copied them
+ * ({@link Engine#linkParameterEdits()}), and the elongation is computed by the reader from the copied positions.
  */
 final class SnapshotWriter {
     /** Frames of simulated time that the model keeps publishing after the reader's last call. */
@@ -47,6 +48,7 @@ final class SnapshotWriter {
     private long lastStep = -1;
     private boolean lastMotion;
     private boolean lastLinks;
+    private long lastEdits = -1;
     /** Topology version: bumped by every published topology change; the caches below follow it. */
     private int version;
     private int massCacheVersion = -1;
@@ -94,14 +96,15 @@ final class SnapshotWriter {
 
     /**
      * The reader, holding the lock in locked mode, publishes the current state unless the newest copy already shows
-     * it (same step, same topology, same requests); the writer then stays quiet until a read finds the lock busy.
+     * it (same step, topology, link length parameters and requests; a position set without a step since shows at
+     * the next step, as it always did); the writer then stays quiet until a read finds the lock busy.
      */
     void publishForReader() {
         if (!c.initialized) {
             return;
         }
         if (dirty || engine.stepCount() != lastStep || lastMotion != exchange.motion
-                || lastLinks != exchange.links) {
+                || lastLinks != exchange.links || (lastLinks && engine.linkParameterEdits() != lastEdits)) {
             publish();
         }
         seenReads = reads;
@@ -219,16 +222,23 @@ final class SnapshotWriter {
                 System.arraycopy(linkTypes, 0, s.linkTypes, 0, nl);
                 s.linkVersion = linkStamp;
             }
-            double[] len = s.length;
-            int[] ids = linkIds;
-            for (int l = 0; l < nl; l++) {
-                len[l] = engine.linkLength(ids[l]);
+            long edits = engine.linkParameterEdits();
+            if (s.lengthsCopied != linkStamp || s.lengthEdits != edits) {
+                // lengths and plane positions: only when they were set since this buffer last copied them
+                double[] len = s.length;
+                int[] ids = linkIds;
+                for (int l = 0; l < nl; l++) {
+                    len[l] = engine.linkLength(ids[l]);
+                }
+                for (int k = 0; k < planeCount; k++) {
+                    int l = planeLinks[k];
+                    s.plane[l] = engine.planePosition(ids[l]);
+                }
+                s.lengthsCopied = linkStamp;
+                s.lengthEdits = edits;
+                linksCopied += nl;
             }
-            for (int k = 0; k < planeCount; k++) {
-                int l = planeLinks[k];
-                s.plane[l] = engine.planePosition(ids[l]);
-            }
-            linksCopied += nl;
+            lastEdits = edits;
         }
         long step = engine.stepCount();
         s.masses = nm;

@@ -93,6 +93,13 @@ class SnapshotContentTest {
         assertSameAsModel(m, m.getSnapshot());
         m.changeToFixedPoint("m3");
         assertSameAsModel(m, m.getSnapshot());
+        for (int frame = 0; frame < 4; frame++) {   // every buffer sees the new length parameters and plane
+            m.setLinkDRest("s4", 1.1 + 0.1 * frame);
+            ((PlaneContact3D) m.getInteraction("plane1")).setPlanePosition(0.3 + 0.01 * frame);
+            assertSameAsModel(m, m.getSnapshot());
+            m.computeStep();
+            assertSameAsModel(m, m.getSnapshot());
+        }
         m.computeStep();
         assertSameAsModel(m, m.getSnapshot());
     }

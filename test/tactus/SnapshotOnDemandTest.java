@@ -137,6 +137,8 @@ class SnapshotOnDemandTest {
             SnapshotContentTest.assertSameAsModel(m, m.getSnapshot());
         }
         assertEquals(1, w.linkWalks, "ends and types come from the cache while the topology stays");
+        assertTrue(w.linksCopied <= 3L * m.getNumberOfLinks(),
+                "unchanged length parameters are copied once per buffer at most: " + w.linksCopied);
         m.removeLink("s4");
         m.draw_physics();
         SnapshotContentTest.assertSameAsModel(m, m.getSnapshot());

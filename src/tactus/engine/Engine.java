@@ -29,6 +29,7 @@ public final class Engine implements AutoCloseable {
     private long installs;
     private boolean effectsDirty;
     private long steps;
+    private long linkParameterEdits;
     private boolean stencils = true;
     private boolean sweeps = true;
     private ParallelStepper stepper;
@@ -746,6 +747,14 @@ public final class Engine implements AutoCloseable {
         countdown = Math.min(countdown, steps);
     }
 
+    /**
+     * @return how many times a link's length or plane position was set since this engine was created (a reader that
+     *     copies them skips the copy while this count stays)
+     */
+    public long linkParameterEdits() {
+        return linkParameterEdits;
+    }
+
     /** @return the number of steps run since this engine was created. */
     public long stepCount() {
         return steps;
@@ -867,6 +876,7 @@ public final class Engine implements AutoCloseable {
         links.stiffness[id] = stiffness;
         links.damping[id] = damping;
         links.length[id] = length;
+        linkParameterEdits++;
         refreshLink(id);
     }
 
@@ -874,6 +884,7 @@ public final class Engine implements AutoCloseable {
     public void setPlanePosition(int id, double position) {
         checkLink(id, LinkKind.PLANE_CONTACT3D);
         links.planePosition[id] = position;
+        linkParameterEdits++;
         refreshLink(id);
     }
 
