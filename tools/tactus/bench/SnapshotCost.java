@@ -61,6 +61,7 @@ public final class SnapshotCost {
         final MethodHandle links;
         final MethodHandle x;
         final MethodHandle elongation;
+        final MethodHandle setLength;
 
         Model(Object pm) throws ReflectiveOperationException {
             this.pm = pm;
@@ -68,6 +69,8 @@ public final class SnapshotCost {
             Class<?> c = pm.getClass();
             Class<?> s = Class.forName("tactus.ModelSnapshot", false, c.getClassLoader());
             step = l.findVirtual(c, "computeStep", MethodType.methodType(void.class)).bindTo(pm);
+            setLength = l.findVirtual(c, "setLinkDRestAt", MethodType.methodType(void.class, int.class, double.class))
+                    .bindTo(pm);
             snapshot = l.findVirtual(c, "getSnapshot", MethodType.methodType(s)).bindTo(pm)
                     .asType(MethodType.methodType(Object.class));
             realtime = l.findVirtual(c, "beginRealtimeStepping", MethodType.methodType(void.class)).bindTo(pm);
@@ -237,10 +240,17 @@ public final class SnapshotCost {
         return (CPU.getCurrentThreadCpuTime() - t0) / (double) steps;
     }
 
-    /** Steps and calls getSnapshot after every step (locked mode: this thread publishes). ns per step. */
-    static double everyStep(Model m, int steps, boolean read) throws Throwable {
+    /**
+     * Steps and calls getSnapshot after every step (locked mode: this thread publishes); with {@code edit}, sets the
+     * length parameter of the first interaction before every step (so that every publication copies the lengths).
+     * ns per step.
+     */
+    static double everyStep(Model m, int steps, boolean read, boolean edit) throws Throwable {
         long t0 = CPU.getCurrentThreadCpuTime();
         for (int i = 0; i < steps; i++) {
+            if (edit) {
+                m.setLength.invokeExact(0, (i & 1) == 0 ? 0.2 : 0.2000001);
+            }
             m.step();
             if (read) {
                 m.snapshot();
@@ -328,32 +338,40 @@ public final class SnapshotCost {
 
     /** The "publish" mode: the cost of one publication, masses only and with interactions (current build). */
     static void publishMode(String scene, Builder builder, int rounds, int steps) throws Throwable {
-        Model m = new Model(builder.scene(scene));
+        Object pm = builder.scene(scene);
+        // no stability analysis after each length edit of the third variant (it would dwarf the publication)
+        Class<?> policy = Class.forName("tactus.StabilityPolicy", true, pm.getClass().getClassLoader());
+        pm.getClass().getMethod("setStabilityPolicy", policy).invoke(pm, policy.getField("OFF").get(null));
+        Model m = new Model(pm);
         Object s = m.snapshot();
         int nm = (int) m.masses.invokeExact(s);
         int nl = (int) m.links.invokeExact(s);
-        for (boolean links : new boolean[] {false, true}) {
+        for (int variant = 0; variant < 3; variant++) {
+            boolean links = variant > 0;
+            boolean edit = variant == 2;
             m.requestLinks(links);
-            everyStep(m, steps / 4, true);
-            everyStep(m, steps / 4, false);
+            everyStep(m, steps / 4, true, edit);
+            everyStep(m, steps / 4, false, edit);
             double[] diff = new double[rounds];
             double[] bare = new double[rounds];
             for (int r = 0; r < rounds; r++) {
                 double a;
                 double b;
                 if (r % 2 == 0) {
-                    a = everyStep(m, steps, false);
-                    b = everyStep(m, steps, true);
+                    a = everyStep(m, steps, false, edit);
+                    b = everyStep(m, steps, true, edit);
                 } else {
-                    b = everyStep(m, steps, true);
-                    a = everyStep(m, steps, false);
+                    b = everyStep(m, steps, true, edit);
+                    a = everyStep(m, steps, false, edit);
                 }
                 bare[r] = a;
                 diff[r] = b - a;
             }
             double d = median(diff);
             System.out.printf(Locale.ROOT, "publish %-7s %s: %.1f us per publication (step alone %.1f us); %d masses"
-                    + "%s%n", scene, links ? "masses + links" : "masses only   ", d / 1e3, median(bare) / 1e3, nm,
+                    + "%s%n", scene, variant == 0 ? "masses only                   "
+                    : variant == 1 ? "masses + links                "
+                    : "masses + links, lengths copied", d / 1e3, median(bare) / 1e3, nm,
                     links ? ", " + nl + " links" : "");
         }
         m.requestLinks(true);
