@@ -29,6 +29,8 @@ public final class ModelSnapshot {
     /** The topology version whose mass types, and interaction ends, types and shapes, this buffer holds. */
     int massVersion = -1;
     int linkVersion = -1;
+    /** The mass cache stamp for which the velocities and forces of every mass but the avatars are zero. */
+    int zeroStamp = -1;
     /** The link cache stamp and the engine's count of link parameter edits when the lengths were copied. */
     int lengthsCopied = -1;
     long lengthEdits = -1;
@@ -235,6 +237,7 @@ public final class ModelSnapshot {
             force = new double[3 * cap];
             massTypes = new matModuleType[cap];
             massVersion = -1;
+            zeroStamp = -1;
         }
         if (linkTypes.length < nLink) {
             int cap = Math.max(nLink, linkTypes.length * 3 / 2 + 8);

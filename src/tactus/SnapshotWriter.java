@@ -61,6 +61,9 @@ final class SnapshotWriter {
     private int[] massIds = new int[0];
     private MassKind[] massKinds = new MassKind[0];
     private matModuleType[] massTypes = new matModuleType[0];
+    /** Mass indices of the haptic avatars (their force is copied even without a request for motion). */
+    private int[] avatars = new int[0];
+    private int avatarCount;
     private int[] linkIds = new int[0];
     private int[] ends = new int[0];
     private int[] shapes = new int[0];
@@ -257,68 +260,72 @@ final class SnapshotWriter {
             lastId = java.util.Arrays.copyOf(lastId, s.massTypes.length);
             lastSum = java.util.Arrays.copyOf(lastSum, 3 * s.massTypes.length);
         }
-        boolean motion = exchange.motion;
         long step = engine.stepCount();
         long since = lastStep < 0 ? 0 : step - lastStep;
         UnitScale u = c.units();
-        int[] ids = massIds;
-        for (int i = 0; i < nm; i++) {
-            int id = ids[i];
-            int q = 3 * i;
-            engine.position(id, tmp);
-            s.pos[q] = tmp[0];
-            s.pos[q + 1] = tmp[1];
-            s.pos[q + 2] = tmp[2];
-            MassKind kind = massKinds[i];
-            if (!motion && kind != MassKind.HAPTIC_INPUT3D) {
-                // velocities and forces only on request: they cost about as much again as the positions
-                s.vel[q] = 0;
-                s.vel[q + 1] = 0;
-                s.vel[q + 2] = 0;
-                s.force[q] = 0;
-                s.force[q + 1] = 0;
-                s.force[q + 2] = 0;
-                continue;
+        engine.copyPositions(massIds, nm, s.pos);
+        if (exchange.motion) {
+            for (int i = 0; i < nm; i++) {
+                copyMotion(s, i, since, u);
             }
-            engine.displacement(id, tmp);
-            s.vel[q] = u.velocityOut(tmp[0]);
-            s.vel[q + 1] = u.velocityOut(tmp[1]);
-            s.vel[q + 2] = u.velocityOut(tmp[2]);
-            // After a step the buffer holds the interaction forces for the next one. An avatar's buffer sums them
-            // until someone takes it: the mean per step is taken over the steps since the last publication when
-            // nobody took it in between, else over the steps since it was taken.
-            engine.force(id, tmp);
-            double fx = tmp[0];
-            double fy = tmp[1];
-            double fz = tmp[2];
-            double per = 1;
-            if (kind == MassKind.HAPTIC_INPUT3D) {
-                long taken = engine.stepsSinceTake(id);
-                long before;
-                if (taken == 0 && (before = engine.lastTakenForce(id, tmp)) > 0) {
-                    // taken at this very step (a reader publishing between a haptic loop's step and its take):
-                    // the buffer is empty, the sum just taken holds this step's force
-                    per = 1.0 / before;
-                } else if (since > 0 && taken > since && lastId[i] == id) {
-                    tmp[0] = fx - lastSum[q];
-                    tmp[1] = fy - lastSum[q + 1];
-                    tmp[2] = fz - lastSum[q + 2];
-                    per = 1.0 / since;
-                } else {
-                    per = taken > 1 ? 1.0 / taken : 1;
-                }
-            } else if (kind.isFixed() || kind == MassKind.POS_INPUT3D) {
-                per = 0;
+            s.zeroStamp = -1;
+        } else {
+            // velocities and forces only on request (they cost about as much again as the positions): zero, once
+            // per buffer and topology, except the haptic avatars' forces, copied every time
+            if (s.zeroStamp != massStamp) {
+                java.util.Arrays.fill(s.vel, 0, 3 * nm, 0.0);
+                java.util.Arrays.fill(s.force, 0, 3 * nm, 0.0);
+                s.zeroStamp = massStamp;
             }
-            lastId[i] = id;
-            lastSum[q] = fx;
-            lastSum[q + 1] = fy;
-            lastSum[q + 2] = fz;
-            s.force[q] = per * u.forceOut(tmp[0]);
-            s.force[q + 1] = per * u.forceOut(tmp[1]);
-            s.force[q + 2] = per * u.forceOut(tmp[2]);
+            for (int k = 0; k < avatarCount; k++) {
+                copyMotion(s, avatars[k], since, u);
+            }
         }
         massesCopied += nm;
+    }
+
+    /** Copies the velocity and force of mass index {@code i}. */
+    private void copyMotion(ModelSnapshot s, int i, long since, UnitScale u) {
+        int id = massIds[i];
+        int q = 3 * i;
+        MassKind kind = massKinds[i];
+        engine.displacement(id, tmp);
+        s.vel[q] = u.velocityOut(tmp[0]);
+        s.vel[q + 1] = u.velocityOut(tmp[1]);
+        s.vel[q + 2] = u.velocityOut(tmp[2]);
+        // After a step the buffer holds the interaction forces for the next one. An avatar's buffer sums them
+        // until someone takes it: the mean per step is taken over the steps since the last publication when
+        // nobody took it in between, else over the steps since it was taken.
+        engine.force(id, tmp);
+        double fx = tmp[0];
+        double fy = tmp[1];
+        double fz = tmp[2];
+        double per = 1;
+        if (kind == MassKind.HAPTIC_INPUT3D) {
+            long taken = engine.stepsSinceTake(id);
+            long before;
+            if (taken == 0 && (before = engine.lastTakenForce(id, tmp)) > 0) {
+                // taken at this very step (a reader publishing between a haptic loop's step and its take):
+                // the buffer is empty, the sum just taken holds this step's force
+                per = 1.0 / before;
+            } else if (since > 0 && taken > since && lastId[i] == id) {
+                tmp[0] = fx - lastSum[q];
+                tmp[1] = fy - lastSum[q + 1];
+                tmp[2] = fz - lastSum[q + 2];
+                per = 1.0 / since;
+            } else {
+                per = taken > 1 ? 1.0 / taken : 1;
+            }
+        } else if (kind.isFixed() || kind == MassKind.POS_INPUT3D) {
+            per = 0;
+        }
+        lastId[i] = id;
+        lastSum[q] = fx;
+        lastSum[q + 1] = fy;
+        lastSum[q + 2] = fz;
+        s.force[q] = per * u.forceOut(tmp[0]);
+        s.force[q + 1] = per * u.forceOut(tmp[1]);
+        s.force[q + 2] = per * u.forceOut(tmp[2]);
     }
 
     /** Once per topology version: each mass's id, kind and type. */
@@ -328,13 +335,18 @@ final class SnapshotWriter {
             massIds = new int[cap];
             massKinds = new MassKind[cap];
             massTypes = new matModuleType[cap];
+            avatars = new int[cap];
         }
+        avatarCount = 0;
         for (int i = 0; i < nm; i++) {
             int id = dir.mats.idAt(i);
             massIds[i] = id;
             MassKind kind = engine.massKind(id);
             massKinds[i] = kind;
             massTypes[i] = ModuleTypes.of(kind);
+            if (kind == MassKind.HAPTIC_INPUT3D) {
+                avatars[avatarCount++] = i;
+            }
         }
         massCount = nm;
         massStamp++;

@@ -913,6 +913,31 @@ public final class Engine implements AutoCloseable {
         }
     }
 
+    /**
+     * Copies the positions of {@code n} masses into {@code out}: mass {@code ids[i]} to {@code out[3i..3i+2]} (a
+     * reader's bulk query; the ids must be live, which the caller checked when it collected them).
+     */
+    public void copyPositions(int[] ids, int n, double[] out) {
+        StepPlan p = plan;
+        int[] slots = masses.slot;
+        double[] pending = masses.pending;
+        for (int i = 0; i < n; i++) {
+            int id = ids[i];
+            int s = p == null ? -1 : slots[id];
+            int q = 3 * i;
+            if (s >= 0) {
+                out[q] = p.x[s];
+                out[q + 1] = p.y[s];
+                out[q + 2] = p.z[s];
+            } else {
+                int r = 6 * id;
+                out[q] = pending[r];
+                out[q + 1] = pending[r + 1];
+                out[q + 2] = pending[r + 2];
+            }
+        }
+    }
+
     /** Writes the displacement of a mass over the last step, X(n) - X(n-1), into {@code out[0..2]}. */
     public void displacement(int id, double[] out) {
         checkMass(id);
