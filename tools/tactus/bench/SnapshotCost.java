@@ -39,12 +39,15 @@ import java.util.concurrent.locks.LockSupport;
  *       reading thread publishes).</li>
  * </ul>
  * Usage: {@code java -cp <tools classes>:<main classes>:<Processing core jar> tactus.bench.SnapshotCost [--before=<classes dir>
- * --after=<classes dir>] [--rounds=7] [--steps=3000] [--paced-seconds=4] [--only=frames,paced,publish]}.
+ * --after=<classes dir>] [--rounds=7] [--steps=3000] [--paced-seconds=4] [--paced-no-consume]
+ * [--only=frames,paced,publish] [--scenes=marbles,mesh]}.
  */
 public final class SnapshotCost {
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
     private static final int RATE = 1000;
     private static final int FPS = 60;
+    /** Whether the paced reader thread reads every position and elongation of its copies (or only takes them). */
+    private static boolean consume = true;
 
     private SnapshotCost() {
     }
@@ -432,7 +435,10 @@ public final class SnapshotCost {
                 long next = System.nanoTime();
                 try {
                     while (!stop.get()) {
-                        sink += m.consume(m.snapshot());
+                        Object snap = m.snapshot();
+                        if (consume) {
+                            sink += m.consume(snap);
+                        }
                         reads++;
                         next += 1_000_000_000L / FPS;
                         long wait = next - System.nanoTime();
@@ -490,6 +496,8 @@ public final class SnapshotCost {
                 pacedSeconds = Double.parseDouble(a.substring(16));
             } else if (a.startsWith("--only=")) {
                 only = a.substring(7);
+            } else if (a.equals("--paced-no-consume")) {
+                consume = false;
             } else if (a.startsWith("--scenes=")) {
                 scenes = a.substring(9);
             } else {
