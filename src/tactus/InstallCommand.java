@@ -4,8 +4,8 @@ import tactus.engine.Engine;
 
 /**
  * The second half of a structural change of an audio-owned model: swaps in the step plan that the calling thread
- * compiled while the owner kept stepping the old one ({@link Engine#install}), then publishes a snapshot of the new
- * topology. Runs on the stepping thread between two steps; costs O(masses + links) copies, not a compile.
+ * compiled while the owner kept stepping the old one ({@link Engine#install}), then has the snapshot writer publish the
+ * new topology ({@link SnapshotWriter#topologyChanged()}). Runs on the stepping thread between two steps; costs O(masses + links) copies, not a compile.
  */
 final class InstallCommand extends Command {
     private final Engine.PreparedPlan prepared;
@@ -18,7 +18,7 @@ final class InstallCommand extends Command {
     boolean apply(ModelCore core) {
         core.engine.install(prepared);
         if (core.initialized) {
-            core.snapshots.publish();
+            core.snapshots.topologyChanged();
         }
         return true;
     }

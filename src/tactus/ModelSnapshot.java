@@ -2,10 +2,10 @@ package tactus;
 
 /**
  * A consistent copy of a model's state at one step, for drawing: every mass's position, type and name index
- * (and, on request, velocity and force: {@link #requestMotion}), and every interaction's two mass indices, type
- * and elongation, all taken at the same step. Read it with
- * {@link PhysicalModel#getSnapshot()} from the drawing thread: it never blocks the thread that steps the model
- * (audio or haptics) and is never torn.
+ * (and, on request, velocity and force: {@link #requestMotion}), and, unless the reader declined them
+ * ({@link #requestLinks}), every interaction's two mass indices, type and elongation, all taken at the same step.
+ * Read it with {@link PhysicalModel#getSnapshot()} from the drawing thread: it never blocks the thread that steps
+ * the model (audio or haptics) and is never torn.
  *
  * <p>A snapshot object belongs to the reading thread until its next call to {@code getSnapshot()}; it is then
  * recycled. Copy what you need to keep. Indices are insertion-order indices as in
@@ -20,8 +20,21 @@ public final class ModelSnapshot {
     double[] force = new double[0];
     matModuleType[] massTypes = new matModuleType[0];
     int[] ends = new int[0];
-    double[] elongation = new double[0];
+    /** Per interaction: how its distance is measured ({@link SnapshotWriter#SHAPE_3D} and so on). */
+    int[] shapes = new int[0];
+    /** Per interaction: its length parameter, and for a plane contact its plane coordinate. */
+    double[] length = new double[0];
+    double[] plane = new double[0];
     linkModuleType[] linkTypes = new linkModuleType[0];
+    /** The topology version whose mass types, and interaction ends, types and shapes, this buffer holds. */
+    int massVersion = -1;
+    int linkVersion = -1;
+    /** The mass cache stamp for which the velocities and forces of every mass but the avatars are zero. */
+    int zeroStamp = -1;
+    /** The link cache stamp and the engine's count of link parameter edits when the lengths were copied. */
+    int lengthsCopied = -1;
+    long lengthEdits = -1;
+    boolean hasLinks;
 
     final SnapshotExchange owner;
     boolean motion;
@@ -42,6 +55,25 @@ public final class ModelSnapshot {
     }
 
     /**
+     * Asks the model to copy its interactions (ends, types, elongations) into its snapshots from the next
+     * publication on (the default), or not (false: masses only, which spares the thread that steps the model a walk
+     * over every interaction each display frame). The renderer asks for them while it draws links. Any thread.
+     *
+     * @param on true to include the interactions
+     */
+    public void requestLinks(boolean on) {
+        owner.links = on;
+    }
+
+    /**
+     * @return true if this copy carries the interactions; false if the reader asked for masses only
+     *     ({@link #requestLinks}), and {@link #getNumberOfLinks()} is then 0
+     */
+    public boolean hasLinks() {
+        return hasLinks;
+    }
+
+    /**
      * @return true if this copy carries the velocity and force of every mass; false if only the haptic avatars'
      *         forces (the other masses then read 0)
      */
@@ -59,7 +91,7 @@ public final class ModelSnapshot {
         return masses;
     }
 
-    /** @return the number of interactions in the copy. */
+    /** @return the number of interactions in the copy (0 when it carries none: {@link #hasLinks()}). */
     public int getNumberOfLinks() {
         return links;
     }
@@ -146,9 +178,31 @@ public final class ModelSnapshot {
         return ends[2 * checkLink(l) + 1];
     }
 
-    /** @return the elongation of interaction {@code l}: its distance minus its length parameter. */
+    /**
+     * @return the elongation of interaction {@code l}: its distance minus its length parameter, in model length
+     *     units (for a plane contact its gap to the plane minus its offset; for a 1D spring its z distance), as
+     *     the model's own {@code getLinkElongationAt} gives at the copy's step. Computed from the copied positions
+     *     on the reading thread.
+     */
     public double getLinkElongation(int l) {
-        return elongation[checkLink(l)];
+        int k = checkLink(l);
+        int a = 3 * ends[2 * k];
+        int shape = shapes[k];
+        double d;
+        if (shape >= SnapshotWriter.SHAPE_PLANE) {
+            d = pos[a + shape - SnapshotWriter.SHAPE_PLANE] - plane[k];
+        } else {
+            int b = 3 * ends[2 * k + 1];
+            if (shape == SnapshotWriter.SHAPE_1D) {
+                d = pos[a + 2] - pos[b + 2];
+            } else {
+                double dx = pos[a] - pos[b];
+                double dy = pos[a + 1] - pos[b + 1];
+                double dz = pos[a + 2] - pos[b + 2];
+                d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            }
+        }
+        return d - length[k];
     }
 
     /** @return the type of interaction {@code l}. */
@@ -164,6 +218,10 @@ public final class ModelSnapshot {
     }
 
     private int checkLink(int l) {
+        if (!hasLinks && step >= 0) {
+            throw new IllegalStateException("snapshot link " + l + ": this copy carries no interactions (the "
+                    + "reader asked for masses only with requestLinks(false); call requestLinks(true))");
+        }
         if (l < 0 || l >= links) {
             throw new IndexOutOfBoundsException("snapshot link index " + l + " out of range 0.." + (links - 1));
         }
@@ -178,12 +236,18 @@ public final class ModelSnapshot {
             vel = new double[3 * cap];
             force = new double[3 * cap];
             massTypes = new matModuleType[cap];
+            massVersion = -1;
+            zeroStamp = -1;
         }
         if (linkTypes.length < nLink) {
             int cap = Math.max(nLink, linkTypes.length * 3 / 2 + 8);
             ends = new int[2 * cap];
-            elongation = new double[cap];
+            shapes = new int[cap];
+            length = new double[cap];
+            plane = new double[cap];
             linkTypes = new linkModuleType[cap];
+            linkVersion = -1;
+            lengthsCopied = -1;
         }
     }
 }

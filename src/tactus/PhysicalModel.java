@@ -249,6 +249,7 @@ public class PhysicalModel {
         enter();
         try {
             if (core.own == null) {
+                core.snapshots.publishIfDirty(); // from now on only the owner may publish
                 core.setOwnership(new Ownership(core));
             }
         } finally {
@@ -536,7 +537,7 @@ public class PhysicalModel {
             core.engine.compile();
             core.initialized = true;
             core.guard.arm();
-            core.snapshots.publish();
+            core.snapshots.topologyChanged();
         });
     }
 
@@ -571,8 +572,14 @@ public class PhysicalModel {
         enter();
         try {
             int n = frame >= 0 ? frame : core.time.stepsForFrame();
-            runSteps(n);
-            core.snapshots.publish();
+            core.snapshots.beginFrame();
+            try {
+                runSteps(n);
+            } catch (RuntimeException | Error e) {
+                core.snapshots.abandonFrame();
+                throw e;
+            }
+            core.snapshots.endFrame();
             return n;
         } finally {
             exit();
@@ -753,17 +760,53 @@ public class PhysicalModel {
     }
 
     /**
-     * Returns the newest consistent copy of the model's positions, for drawing from a thread that does not step
-     * the model: it never takes the lock, so it never delays an audio or haptic thread, and the copy is never
-     * torn. The model publishes one at {@link #init()}, at the end of every {@link #draw_physics()}, after every
-     * topology edit, and every half display frame of simulated time while it is stepped by {@link #computeStep()}
-     * or {@link #computeNSteps(int)}. Call it from one thread only (the sketch's animation thread); the returned
-     * object stays valid until that thread's next call.
+     * Returns a consistent copy of the model's state, for drawing from a thread that does not step the model. The
+     * copy is never torn, and this call never delays an audio or haptic thread. Call it from one thread only (the
+     * sketch's animation thread); the returned object stays valid until that thread's next call.
+     *
+     * <p>The model copies its state only for a reader: until the first call it copies nothing (a model that is never
+     * drawn pays nothing). Interactions are copied unless the reader declines them
+     * ({@link ModelSnapshot#requestLinks}). What a call returns:
+     * <ul>
+     *   <li>Locked mode (no realtime stepping): when the lock is free, the current state (this call copies it,
+     *       unless the newest copy already shows the current step); when another thread holds the lock, the newest
+     *       copy, and that thread publishes a fresh one after the step that ends the current display frame of
+     *       simulated time. After {@link #init()} or a topology change that no call has seen yet, this call waits
+     *       for the lock (at most one slice of a stepping batch) and copies the new topology.</li>
+     *   <li>Realtime mode ({@link #beginRealtimeStepping()}): the newest copy published by the stepping thread, which
+     *       publishes at most once per display frame of simulated time ({@link #getDisplayRate()}) while this method
+     *       is called, and for a few frames after the last call; a topology change is published before the call
+     *       that made it returns. After a pause in reading of more than a few frames, the first call returns the
+     *       last copy published (from the start of the pause) and the stepping thread publishes at its next
+     *       stepping call, so the next call is fresh.</li>
+     * </ul>
      *
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        return core.snapshots.exchange.latest();
+        SnapshotWriter w = core.snapshots;
+        w.request();
+        if (core.own == null) {
+            // locked mode: this thread may publish, holding the lock; it waits for it only to publish a topology
+            // change nobody has read yet, else it leaves a busy lock alone (the writer's next frame publishes)
+            boolean locked;
+            if (w.dirty()) {
+                lock.lock();
+                locked = true;
+            } else {
+                locked = lock.tryLock();
+            }
+            if (locked) {
+                try {
+                    if (core.own == null) {
+                        w.publishForReader();
+                    }
+                } finally {
+                    lock.unlock();
+                }
+            }
+        }
+        return w.exchange.latest();
     }
 
     // =================================================================== global medium

@@ -14,6 +14,8 @@ final class SnapshotExchange {
     private final ModelSnapshot[] buffers = {new ModelSnapshot(this), new ModelSnapshot(this), new ModelSnapshot(this)};
     /** Set by the reader ({@link ModelSnapshot#requestMotion}): copy every mass's velocity and force too. */
     volatile boolean motion;
+    /** Set by the reader ({@link ModelSnapshot#requestLinks}): copy the interactions too (the default). */
+    volatile boolean links = true;
     /** Index of the middle buffer, plus FRESH when the writer has published into it since the reader last took it. */
     private final AtomicInteger middle = new AtomicInteger(1);
     private int back = 0;

@@ -19,15 +19,18 @@ final class TopologyEditor {
     }
 
     /**
-     * Compiles the step plan now if the model is initialised, and publishes a snapshot of the new topology (the
-     * edit is paid for by its caller). While the engine holds topology changes for a plan prepared by an editor
-     * thread (realtime stepping), both wait for the install ({@link InstallCommand}).
+     * Compiles the step plan now if the model is initialised, and tells the snapshot writer that the topology
+     * changed (it publishes at once when someone reads, else on the next read). While the engine holds topology
+     * changes for a plan prepared by an editor thread (realtime stepping), both wait for the install
+     * ({@link InstallCommand}).
      */
     void compileIfRunning() {
         if (c.initialized) {
             engine.compile();
-            if (!engine.isHoldingTopology()) {
-                c.snapshots.publish(); // else the install publishes the new topology
+            if (engine.isHoldingTopology()) {
+                c.snapshots.topologyEdited(); // the install publishes the new topology
+            } else {
+                c.snapshots.topologyChanged();
             }
         }
     }

@@ -48,11 +48,13 @@ class RampSlicesTest {
             }
         }, "stepper");
         stepper.start();
-        // the snapshot is read without the lock: wait until the batch has published progress
-        while (m.getSnapshot().getStep() <= 0 && !batchDone.get()) {
+        // wait until the batch is under way: the step count is read between two of its slices (the snapshot is no
+        // longer a progress signal: inside one draw_physics frame it is published at the end of the frame)
+        while (m.getStepCount() <= 0 && !batchDone.get()) {
             Thread.sleep(1);
         }
-        assertFalse(batchDone.get(), "the batch ended before any change could be made (make it longer)");
+        assertFalse(batchDone.get(), "the batch ended before any change could be made (make it longer, or the "
+                + "batch kept the lock throughout)");
         long[] stepsWhenReturned = new long[changes];
         for (int c = 0; c < changes; c++) {
             m.setLinkStiffness("extra", 0.05 + 0.01 * c);

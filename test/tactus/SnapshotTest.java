@@ -60,16 +60,15 @@ class SnapshotTest {
     }
 
     @Test
-    void stepByStepLoopsPublishEveryHalfFrame() {
-        PhysicalModel m = drifting(2);   // 1024 Hz, 64 fps: a half frame is 8 steps
-        for (int i = 0; i < 7; i++) {
+    void inLockedModeAReadWithTheLockFreeIsTheCurrentStep() {
+        PhysicalModel m = drifting(2);   // 1024 Hz, 64 fps: a frame is 16 steps
+        for (int i = 1; i <= 7; i++) {
             m.computeStep();
+            assertEquals(i, m.getSnapshot().getStep());
         }
-        assertEquals(0, m.getSnapshot().getStep());
-        m.computeStep();
-        assertEquals(8, m.getSnapshot().getStep());
         m.computeNSteps(20);
-        assertEquals(28, m.getSnapshot().getStep(), "published at the end of the batch");
+        assertEquals(27, m.getSnapshot().getStep());
+        assertEquals(m.getMatPosAt(1).x, m.getSnapshot().x(1), 0.0);
     }
 
     /**

@@ -29,6 +29,7 @@ public final class Engine implements AutoCloseable {
     private long installs;
     private boolean effectsDirty;
     private long steps;
+    private long linkParameterEdits;
     private boolean stencils = true;
     private boolean sweeps = true;
     private ParallelStepper stepper;
@@ -746,6 +747,14 @@ public final class Engine implements AutoCloseable {
         countdown = Math.min(countdown, steps);
     }
 
+    /**
+     * @return how many times a link's length or plane position was set since this engine was created (a reader that
+     *     copies them skips the copy while this count stays)
+     */
+    public long linkParameterEdits() {
+        return linkParameterEdits;
+    }
+
     /** @return the number of steps run since this engine was created. */
     public long stepCount() {
         return steps;
@@ -867,6 +876,7 @@ public final class Engine implements AutoCloseable {
         links.stiffness[id] = stiffness;
         links.damping[id] = damping;
         links.length[id] = length;
+        linkParameterEdits++;
         refreshLink(id);
     }
 
@@ -874,6 +884,7 @@ public final class Engine implements AutoCloseable {
     public void setPlanePosition(int id, double position) {
         checkLink(id, LinkKind.PLANE_CONTACT3D);
         links.planePosition[id] = position;
+        linkParameterEdits++;
         refreshLink(id);
     }
 
@@ -899,6 +910,31 @@ public final class Engine implements AutoCloseable {
             out[0] = masses.pending[q];
             out[1] = masses.pending[q + 1];
             out[2] = masses.pending[q + 2];
+        }
+    }
+
+    /**
+     * Copies the positions of {@code n} masses into {@code out}: mass {@code ids[i]} to {@code out[3i..3i+2]} (a
+     * reader's bulk query; the ids must be live, which the caller checked when it collected them).
+     */
+    public void copyPositions(int[] ids, int n, double[] out) {
+        StepPlan p = plan;
+        int[] slots = masses.slot;
+        double[] pending = masses.pending;
+        for (int i = 0; i < n; i++) {
+            int id = ids[i];
+            int s = p == null ? -1 : slots[id];
+            int q = 3 * i;
+            if (s >= 0) {
+                out[q] = p.x[s];
+                out[q + 1] = p.y[s];
+                out[q + 2] = p.z[s];
+            } else {
+                int r = 6 * id;
+                out[q] = pending[r];
+                out[q + 1] = pending[r + 1];
+                out[q + 2] = pending[r + 2];
+            }
         }
     }
 
@@ -1048,6 +1084,29 @@ public final class Engine implements AutoCloseable {
         }
         long n = steps - masses.lastTake[id];
         masses.lastTake[id] = steps;
+        int q = 3 * id;
+        masses.lastTaken[q] = out[0];
+        masses.lastTaken[q + 1] = out[1];
+        masses.lastTaken[q + 2] = out[2];
+        masses.lastTakenSteps[id] = n;
+        return n;
+    }
+
+    /**
+     * Writes the sum that {@link #takeForce} last took from a mass into {@code out[0..2]} (a reader's query: a
+     * snapshot taken just after a take shows it).
+     *
+     * @return the number of steps that sum covered; 0 when nothing was taken yet (out is then untouched)
+     */
+    public long lastTakenForce(int id, double[] out) {
+        checkMass(id);
+        long n = masses.lastTakenSteps[id];
+        if (n > 0) {
+            int q = 3 * id;
+            out[0] = masses.lastTaken[q];
+            out[1] = masses.lastTaken[q + 1];
+            out[2] = masses.lastTaken[q + 2];
+        }
         return n;
     }
 

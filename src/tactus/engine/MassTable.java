@@ -23,6 +23,9 @@ final class MassTable {
     /** Input targets set before a mass has a plan slot (3 per id); NaN when none was set. */
     double[] pendingTarget = new double[48];
     long[] lastTake = new long[16];
+    /** The sum that {@code takeForce} last took (3 per id), and over how many steps it was summed (0: none yet). */
+    double[] lastTaken = new double[48];
+    long[] lastTakenSteps = new long[16];
     /** The user-facing kind of a mass under velocity control (its layout kind is then DRIVEN3D); null otherwise. */
     MassKind[] drivenFrom = new MassKind[16];
     /** The displacement per step imposed on a mass under velocity control (3 per id). */
@@ -38,6 +41,7 @@ final class MassTable {
         drivenFrom[id] = null;
         int q = 3 * id;
         pendingForce[q] = 0;
+        lastTakenSteps[id] = 0;
         pendingForce[q + 1] = 0;
         pendingForce[q + 2] = 0;
         pendingTarget[q] = Double.NaN;
@@ -83,6 +87,8 @@ final class MassTable {
         pendingForce = Arrays.copyOf(pendingForce, 3 * c);
         pendingTarget = Arrays.copyOf(pendingTarget, 3 * c);
         lastTake = Arrays.copyOf(lastTake, c);
+        lastTaken = Arrays.copyOf(lastTaken, 3 * c);
+        lastTakenSteps = Arrays.copyOf(lastTakenSteps, c);
         drivenFrom = Arrays.copyOf(drivenFrom, c);
         drive = Arrays.copyOf(drive, 3 * c);
     }

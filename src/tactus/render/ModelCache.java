@@ -19,6 +19,7 @@ final class ModelCache {
     private boolean dirty = true;
     private int masses = -1;
     private int links = -1;
+    private boolean hasLinks;
     private matModuleType[] massTypes = new matModuleType[0];
     private linkModuleType[] linkTypes = new linkModuleType[0];
     private int[] ends = new int[0];
@@ -58,10 +59,12 @@ final class ModelCache {
         Lock lock = m.getLock();
         lock.lock();
         try {
-            // Under the lock the newest snapshot matches the live topology: every edit publishes one before it
-            // lets go of the lock. (Before init() the snapshot is empty; nothing is read then.)
+            // Under the lock (locked mode) the newest snapshot matches the live topology: an edit publishes it, or
+            // this call does. In realtime mode the owner publishes every edit before the editor's call returns.
+            // (Before init() the snapshot is empty; nothing is read then.)
             s = m.getSnapshot();
-            boolean live = s.getNumberOfMats() == m.getNumberOfMats() && s.getNumberOfLinks() == m.getNumberOfLinks();
+            boolean live = s.getNumberOfMats() == m.getNumberOfMats()
+                    && (!s.hasLinks() || s.getNumberOfLinks() == m.getNumberOfLinks());
             read(m, s, live);
             model = m;
             dirty = !live;
@@ -74,7 +77,7 @@ final class ModelCache {
     private boolean sameTopology(ModelSnapshot s) {
         int nm = s.getNumberOfMats();
         int nl = s.getNumberOfLinks();
-        if (nm != masses || nl != links) {
+        if (nm != masses || nl != links || s.hasLinks() != hasLinks) {
             return false;
         }
         for (int i = 0; i < nm; i++) {
@@ -127,6 +130,7 @@ final class ModelCache {
         }
         masses = nm;
         links = nl;
+        hasLinks = s.hasLinks();
     }
 
     /**

@@ -58,6 +58,8 @@ public final class ModelDrawer {
     private boolean motionRequested;
     /** What the paper engine's renderer would have left set after the last draw (see {@link #leaveStyleAsPaperEngine}). */
     private final Leftovers leftovers = new Leftovers();
+    /** What this drawer last asked the model for: interactions (the model's default) or masses only. */
+    private boolean linksRequested = true;
 
     /**
      * Creates a drawer with the default styles, scale 1, zoom (1, 1, 1), colours by type, and force arrows of
@@ -287,10 +289,15 @@ public final class ModelDrawer {
             s.requestMotion(false);
             motionRequested = false;
         }
+        // The model copies its interactions only for a reader that draws them.
+        if (showLinks != linksRequested) {
+            s.requestLinks(showLinks);
+            linksRequested = showLinks;
+        }
         g.pushStyle();
         try {
             g.colorMode(PConstants.RGB, 255);
-            if (showLinks) {
+            if (showLinks && s.hasLinks()) {
                 drawLinks(s, g);
             }
             if (showMasses) {
