@@ -303,4 +303,51 @@ class FaustAgreementTest {
         String dsp = check("collision", collision1D(), ref, pts, List.of(), null);
         assertTrue(dsp.contains("mi.collision("), "1-D contacts are written as mi.collision");
     }
+
+    /**
+     * Faust's default single precision: the same exported string and plate, compiled without -double, over one
+     * second. Prints how far they drift and after how many samples the difference first exceeds 1e-3 of the
+     * signal's largest magnitude (figures in docs/faust.md). Asserts only what single precision must show: a
+     * difference far above double's rounding, yet a sound that still follows the model over the first 4,096 samples.
+     */
+    @Test
+    void singlePrecisionDrift() throws IOException {
+        int n = 44100;
+        List<Strike> st = List.of(new Strike("m7", 2, 1.0));
+        List<Point> pts = List.of(new Point("m20", 2, 100));
+        drift("string-float", string1D(30), string1D(30), pts, st, n);
+        drift("plate-float", plate(8), plate(8), List.of(new Point("p3_5", 2, 3)),
+                List.of(new Strike("p1_1", 2, 0.3)), n);
+    }
+
+    private static void drift(String name, PhysicalModel exported, PhysicalModel reference, List<Point> pts,
+                              List<Strike> st, int n) throws IOException {
+        String dsp = FaustExporter.toDsp(exported, options(pts, st));
+        FaustToolchain.Program p = FaustToolchain.compile(dsp, dir, name, false, "-O1", 120);
+        double[][] faust = FaustToolchain.render(p, n, strikeArgs(st), 60);
+        double[][] ours = tactus(reference, pts, st, n);
+        double mag = 0;
+        for (double v : ours[0]) {
+            mag = Math.max(mag, Math.abs(v));
+        }
+        int firstOver = -1;
+        double at4096 = 0;
+        double atEnd = 0;
+        for (int k = 0; k < n; k++) {
+            double d = Math.abs(ours[0][k] - faust[0][k]) / mag;
+            atEnd = Math.max(atEnd, d);
+            if (k < N) {
+                at4096 = atEnd;
+            }
+            if (firstOver < 0 && d > 1e-3) {
+                firstOver = k;
+            }
+        }
+        System.out.printf("%s (single precision): relative difference %.3g over %d samples, %.3g over %d; first above"
+                + " 1e-3 at sample %d%n", name, at4096, N, atEnd, n, firstOver);
+        assertTrue(at4096 > 1e3 * TOLERANCE, name + ": single precision should differ well above double's rounding, "
+                + "got " + at4096);
+        assertTrue(at4096 < 0.5, name + ": single precision should still follow the model over " + N + " samples, "
+                + "got " + at4096);
+    }
 }
