@@ -84,8 +84,7 @@ final class ExplicitWriter {
         }
         for (FaustExportOptions.Listen li : o.listens()) {
             int i = s.mass(li.mass);
-            net.addOutput(FaustExporter.listenExpression(Network.pos(pos[i] + li.axis), s.masses[i].x0[li.axis],
-                    li.gain));
+            net.addOutput(pos[i] + li.axis, s.masses[i].x0[li.axis], li.gain);
         }
         for (FaustExportOptions.Input in : o.inputs()) {
             int i = s.mass(in.mass);

@@ -1,7 +1,5 @@
 package tactus.export;
 
-import static tactus.export.FaustNumbers.lit;
-
 import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -104,12 +102,6 @@ public final class FaustExporter {
         String dsp = toDsp(model, options);
         Files.write(file.toPath(), dsp.getBytes(StandardCharsets.UTF_8));
         return file;
-    }
-
-    /** @return the Faust expression of a listening point: gain times (position minus origin) */
-    static String listenExpression(String position, double origin, double gain) {
-        String e = origin == 0 ? position : "(" + position + " - " + lit(origin) + ")";
-        return gain == 1 ? e : e + "*" + lit(gain);
     }
 
     private static void requireMass(Scene s, String op, String name) {

@@ -93,9 +93,9 @@ final class MiLibWriter {
         for (FaustExportOptions.Listen li : o.listens()) {
             int i = s.mass(li.mass);
             if (li.axis != 2) {
-                net.addOutput("0.0");
+                net.addOutput(-1, 0, li.gain);
             } else {
-                net.addOutput(FaustExporter.listenExpression(Network.pos(pos[i]), s.masses[i].x0[2], li.gain));
+                net.addOutput(pos[i], s.masses[i].x0[2], li.gain);
             }
         }
         for (FaustExportOptions.Input in : o.inputs()) {

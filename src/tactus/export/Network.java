@@ -4,26 +4,34 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The signal graph of an exported model, written the way mass-interaction models are written in Faust (as MIMS
- * does): the masses turn forces into positions, a routing function hands positions to the interactions (and to
- * the outputs), the interactions turn them into forces, and a second routing function sums the forces of each
- * mass (with the external inputs) and feeds them back through Faust's one-sample recursion {@code ~}, which is
- * the scheme's one-step force delay.
+ * The signal graph of an exported model, written the way mass-interaction models are written in Faust: the
+ * masses turn forces into positions, a routing hands positions to the interactions (and to the outputs), the
+ * interactions turn them into forces, and a second routing sums the forces of each mass (with the external
+ * inputs) and feeds them back through Faust's one-sample recursion {@code ~}, which is the scheme's one-step
+ * force delay.
  *
  * <pre>
  * model = (toMasses : masses : toLinks : (links, si.bus(outputs))) ~ si.bus(linkForces)
  *       : (si.block(linkForces), si.bus(outputs));
  * </pre>
+ *
+ * Both routings are one Faust {@code route} primitive each (route sums the inputs that go to the same output).
+ * Routing functions with one named parameter per signal, as MIMS writes them, make {@code faust} itself slow and
+ * hungry: 18 s and 1.4 GB for a 1-D string of 200 masses, 85 s and 9.3 GB for 400 (measured, docs/faust.md).
  */
 final class Network {
     private final List<String> massBlocks = new ArrayList<>();
     private int positions;
-    private final List<List<String>> portTerms = new ArrayList<>();
+    /** Per force port: link outputs (index) and inputs (-1 - index) that add to it. */
+    private final List<List<Integer>> portSources = new ArrayList<>();
+    private final List<Double> pending = new ArrayList<>();
     private final List<String> linkBlocks = new ArrayList<>();
     private final List<Integer> linkInputs = new ArrayList<>();
     private int linkOutputs;
-    private final List<String> outputs = new ArrayList<>();
-    private int inputs;
+    /** Per output: its position signal (-1: a constant 0), origin and gain. */
+    private final List<Integer> outPosition = new ArrayList<>();
+    private final List<double[]> outScale = new ArrayList<>();
+    private final List<Double> inputScale = new ArrayList<>();
 
     /** Adds a mass block with the given number of position outputs; @return the index of its first position. */
     int addMass(String block, int outputsOfBlock) {
@@ -35,8 +43,9 @@ final class Network {
 
     /** Adds a force port: one input of the mass blocks, in order; @return its index. */
     int addPort() {
-        portTerms.add(new ArrayList<>());
-        return portTerms.size() - 1;
+        portSources.add(new ArrayList<>());
+        pending.add(0.0);
+        return portSources.size() - 1;
     }
 
     /**
@@ -52,105 +61,128 @@ final class Network {
         }
         for (int port : out) {
             if (port >= 0) {
-                portTerms.get(port).add("l" + linkOutputs);
+                portSources.get(port).add(linkOutputs);
             }
             linkOutputs++;
         }
     }
 
-    /** Adds an output of the program: an expression of position names {@link #pos(int)}. */
-    void addOutput(String expression) {
-        outputs.add(expression);
+    /** Adds an output of the program: gain times (position signal minus origin); position -1 gives 0. */
+    void addOutput(int position, double origin, double gain) {
+        outPosition.add(position);
+        outScale.add(new double[] {origin, gain});
     }
 
     /** Adds an input of the program, scaled, to a force port (-1: an input that acts on nothing). */
     void addInput(int port, double scale) {
-        String in = "in" + inputs++;
-        if (port < 0) {
-            return;
+        inputScale.add(scale);
+        if (port >= 0) {
+            portSources.get(port).add(-inputScale.size());
         }
-        portTerms.get(port).add(scale == 1 ? in : in + "*" + FaustNumbers.lit(scale));
     }
 
     /** Adds a force that acts at the first sample only (a force pending in the model at export). */
     void addPending(int port, double force) {
-        if (force != 0) {
-            portTerms.get(port).add(FaustNumbers.lit(force) + "*i0");
-        }
-    }
-
-    /** @return the name of a position signal inside {@code toLinks} */
-    static String pos(int p) {
-        return "p" + p;
+        pending.set(port, pending.get(port) + force);
     }
 
     int outputCount() {
-        return outputs.size();
+        return outPosition.size();
     }
 
     /** Writes the definitions of masses, links, routings and {@code model}. */
     void write(StringBuilder out) {
+        int outputs = outPosition.size();
+        int inputs = inputScale.size();
         out.append("// ").append(massBlocks.size()).append(" masses: forces in, positions out\n");
-        out.append("masses = ").append(par(massBlocks, "\n  ")).append(";\n\n");
+        out.append("masses = ").append(String.join(",\n  ", massBlocks)).append(";\n\n");
         if (!linkBlocks.isEmpty()) {
             out.append("// ").append(linkBlocks.size()).append(" interactions: positions in, forces out\n");
-            out.append("links = ").append(par(linkBlocks, "\n  ")).append(";\n\n");
+            out.append("links = ").append(String.join(",\n  ", linkBlocks)).append(";\n\n");
         }
-        out.append("// positions to interactions, then the outputs\n");
-        List<String> toLinks = new ArrayList<>();
+        out.append("// positions to interactions, then the outputs (route(ins, outs, (from, to), ...), from 1)\n");
+        StringBuilder pairs = new StringBuilder();
+        int k = 0;
         for (int p : linkInputs) {
-            toLinks.add(pos(p));
+            pair(pairs, p + 1, ++k);
         }
-        toLinks.addAll(outputs);
-        out.append("toLinks(");
-        for (int p = 0; p < positions; p++) {
-            out.append(p == 0 ? "" : ", ").append(pos(p));
-            if (p % 16 == 15) {
-                out.append("\n  ");
+        List<String> taps = new ArrayList<>();
+        for (int o = 0; o < outputs; o++) {
+            k++;
+            int p = outPosition.get(o);
+            double origin = outScale.get(o)[0];
+            double gain = outScale.get(o)[1];
+            if (p >= 0) {
+                pair(pairs, p + 1, k);
             }
+            String tap = origin == 0 || p < 0 ? "_" : "-(" + FaustNumbers.lit(origin) + ")";
+            if (gain != 1 && p >= 0) {
+                tap = tap.equals("_") ? "*(" + FaustNumbers.lit(gain) + ")" : tap + " : *(" + FaustNumbers.lit(gain)
+                        + ")";
+            }
+            taps.add(tap.contains(":") ? "(" + tap + ")" : tap);
         }
-        out.append(") = ").append(lines(toLinks)).append(";\n\n");
-        boolean ported = !portTerms.isEmpty();
+        out.append("toLinks = route(").append(positions).append(", ").append(k).append(pairs).append(")");
+        if (taps.stream().anyMatch(t -> !t.equals("_"))) {
+            out.append("\n  : (").append(linkInputs.isEmpty() ? "" : "si.bus(" + linkInputs.size() + "), ")
+                    .append(String.join(", ", taps)).append(")");
+        }
+        out.append(";\n\n");
+        boolean ported = !portSources.isEmpty();
         if (ported) {
-            out.append("// forces of the interactions (and inputs) to the masses\n");
-            List<String> params = new ArrayList<>();
-            for (int l = 0; l < linkOutputs; l++) {
-                params.add("l" + l);
+            out.append("// forces of the interactions (then the inputs) to the masses: route sums them\n");
+            StringBuilder fp = new StringBuilder();
+            List<String> first = new ArrayList<>();
+            boolean anyPending = false;
+            for (int port = 0; port < portSources.size(); port++) {
+                for (int src : portSources.get(port)) {
+                    pair(fp, src >= 0 ? src + 1 : linkOutputs - src, port + 1);
+                }
+                double f = pending.get(port);
+                first.add(f == 0 ? "_" : "+(" + FaustNumbers.lit(f) + "*i0)");
+                anyPending |= f != 0;
             }
-            for (int i = 0; i < inputs; i++) {
-                params.add("in" + i);
+            out.append("toMasses = ");
+            if (inputs > 0 && inputScale.stream().anyMatch(x -> x != 1)) {
+                List<String> scales = new ArrayList<>();
+                for (double x : inputScale) {
+                    scales.add(x == 1 ? "_" : "*(" + FaustNumbers.lit(x) + ")");
+                }
+                out.append("(").append(linkOutputs > 0 ? "si.bus(" + linkOutputs + "), " : "")
+                        .append(String.join(", ", scales)).append(") : ");
             }
-            List<String> sums = new ArrayList<>();
-            for (List<String> terms : portTerms) {
-                sums.add(terms.isEmpty() ? "0.0" : String.join(" + ", terms));
+            out.append("route(").append(linkOutputs + inputs).append(", ").append(portSources.size()).append(fp)
+                    .append(")");
+            if (anyPending) {
+                out.append("\n  // forces pending in the model at export act on the first sample\n  : (")
+                        .append(lines(first)).append(")");
             }
-            out.append("toMasses");
-            if (!params.isEmpty()) {
-                out.append('(').append(lines(params)).append(')');
-            }
-            out.append(" = ").append(lines(sums)).append(";\n\n");
+            out.append(";\n\n");
         }
         String chain = (ported ? "toMasses : " : "") + "masses : toLinks";
         if (linkBlocks.isEmpty()) {
             out.append("model = ").append(chain).append(";\n");
         } else if (!ported) {
-            out.append("model = ").append(chain).append(" : (links, si.bus(").append(outputs.size())
-                    .append(")) : (si.block(").append(linkOutputs).append("), si.bus(").append(outputs.size())
+            out.append("model = ").append(chain).append(" : (links, si.bus(").append(outputs)
+                    .append(")) : (si.block(").append(linkOutputs).append("), si.bus(").append(outputs)
                     .append("));\n");
         } else {
-            out.append("model = (").append(chain).append(" : (links, si.bus(").append(outputs.size()).append(")))")
+            out.append("model = (").append(chain).append(" : (links, si.bus(").append(outputs).append(")))")
                     .append(" ~ si.bus(").append(linkOutputs).append(")\n  : (si.block(").append(linkOutputs)
-                    .append("), si.bus(").append(outputs.size()).append("));\n");
+                    .append("), si.bus(").append(outputs).append("));\n");
+        }
+    }
+
+    private static void pair(StringBuilder b, int from, int to) {
+        b.append(", (").append(from).append(", ").append(to).append(')');
+        if (b.length() % 2000 < 12) {
+            b.append("\n  ");
         }
     }
 
     /** @return the block in brackets when it is a composition, so that a parallel list of blocks parses right */
     private static String wrapped(String block) {
         return block.indexOf(':') >= 0 || block.indexOf('~') >= 0 ? "(" + block + ")" : block;
-    }
-
-    private static String par(List<String> blocks, String sep) {
-        return String.join("," + sep, blocks);
     }
 
     private static String lines(List<String> items) {
