@@ -34,46 +34,64 @@ public final class FaustCost {
     public static void main(String[] args) throws IOException {
         int timeout = args.length > 0 ? Integer.parseInt(args[0]) : 600;
         FaustToolchain.requireTools();
+        long memoryKb = args.length > 1 ? Long.parseLong(args[1]) : 8_000_000;
+        FaustToolchain.limitFaustMemory(memoryKb);
         Path dir = Files.createTempDirectory("tactus-faust-cost");
-        System.out.println("Cost per sample (faust -double, g++ -O3 -march=native off; Tactus on this JVM)");
-        System.out.println("| model | Faust program | Tactus computeStep | Tactus PhyUGen (offline) |");
-        System.out.println("|---|---|---|---|");
-        for (int n : new int[] {100, 1000}) {
-            for (boolean threeD : new boolean[] {false, true}) {
-                PhysicalModel m = string(n, threeD);
-                String dsp = FaustExporter.toDsp(m, options(n, threeD));
-                FaustToolchain.Program p = FaustToolchain.compile(dsp, dir, "cost" + n + (threeD ? "3d" : "1d"), true,
-                        "-O3", timeout);
-                int samples = n <= 100 ? 2_000_000 : 200_000;
-                FaustToolchain.nanosPerSample(p, samples / 10, timeout);        // warm the caches
-                double faust = FaustToolchain.nanosPerSample(p, samples, timeout);
-                double step = stepNanos(string(n, threeD), samples);
-                double ugen = ugenNanos(string(n, threeD), threeD, samples);
-                System.out.printf(Locale.ROOT, "| %s string, %d masses | %.0f ns | %.0f ns | %.0f ns |%n",
-                        threeD ? "3-D" : "1-D", n, faust, step, ugen);
+        System.out.println("Compile times (strings between two fixed points; elements = masses + interactions; faust"
+                + " limited to " + timeout + " s and " + memoryKb / 1000 + " MB)");
+        System.out.println("| model | elements | faust -double | g++ -O1 | g++ -O3 |");
+        System.out.println("|---|---|---|---|---|");
+        for (boolean threeD : new boolean[] {false, true}) {
+            for (int elements : new int[] {100, 1000, 10000}) {
+                int n = elements / 2 - 1;
+                String dsp = FaustExporter.toDsp(string(n, threeD), options(n, threeD));
+                String name = "size" + elements + (threeD ? "3d" : "1d");
+                String faust;
+                String o1 = "-";
+                String o3 = "-";
+                boolean failed = false;
+                try {
+                    FaustToolchain.Program p1 = FaustToolchain.compile(dsp, dir, name, true, "-O1", timeout);
+                    faust = p1.faustMillis + " ms";
+                    o1 = p1.gccMillis + " ms";
+                    FaustToolchain.Program p3 = FaustToolchain.compile(dsp, dir, name + "o3", true, "-O3", timeout);
+                    o3 = p3.gccMillis + " ms";
+                } catch (IllegalStateException e) {
+                    faust = "failed: " + e.getMessage().split("\n")[0];
+                    failed = true;
+                }
+                System.out.printf(Locale.ROOT, "| %s string | %d | %s | %s | %s |%n", threeD ? "3-D" : "1-D (mi.lib)",
+                        elements, faust, o1, o3);
+                if (failed) {
+                    break;
+                }
             }
         }
         System.out.println();
-        System.out.println("Compile times (1-D string of mi.lib primitives; elements = masses + interactions)");
-        System.out.println("| elements | faust -double | g++ -O1 | g++ -O3 |");
+        System.out.println("Cost per sample (faust -double, g++ -O3; Tactus on this JVM, one thread)");
+        System.out.println("| model | Faust program | Tactus computeStep | Tactus PhyUGen (offline) |");
         System.out.println("|---|---|---|---|");
-        for (int elements : new int[] {100, 1000, 10000}) {
-            int n = elements / 2 - 1;
-            String dsp = FaustExporter.toDsp(string(n, false), options(n, false));
-            String name = "size" + elements;
-            String o1;
-            String o3;
-            String faust;
+        int[][] sizes = {{100, 0}, {300, 0}, {100, 1}, {1000, 1}};
+        for (int[] size : sizes) {
+            int n = size[0];
+            boolean threeD = size[1] == 1;
+            PhysicalModel m = string(n, threeD);
+            String dsp = FaustExporter.toDsp(m, options(n, threeD));
+            FaustToolchain.Program p;
             try {
-                FaustToolchain.Program p1 = FaustToolchain.compile(dsp, dir, name, true, "-O1", timeout);
-                faust = p1.faustMillis + " ms";
-                o1 = p1.gccMillis + " ms";
-                FaustToolchain.Program p3 = FaustToolchain.compile(dsp, dir, name + "o3", true, "-O3", timeout);
-                o3 = p3.gccMillis + " ms";
+                p = FaustToolchain.compile(dsp, dir, "cost" + n + (threeD ? "3d" : "1d"), true, "-O3", timeout);
             } catch (IllegalStateException e) {
-                faust = o1 = o3 = "failed: " + e.getMessage().split("\n")[0];
+                System.out.printf(Locale.ROOT, "| %s string, %d masses | does not compile: %s | | |%n",
+                        threeD ? "3-D" : "1-D", n, e.getMessage().split("\n")[0]);
+                continue;
             }
-            System.out.printf(Locale.ROOT, "| %d | %s | %s | %s |%n", elements, faust, o1, o3);
+            int samples = n <= 100 ? 2_000_000 : 200_000;
+            FaustToolchain.nanosPerSample(p, samples / 10, timeout);        // warm the caches
+            double faust = FaustToolchain.nanosPerSample(p, samples, timeout);
+            double step = stepNanos(string(n, threeD), samples);
+            double ugen = ugenNanos(string(n, threeD), threeD, samples);
+            System.out.printf(Locale.ROOT, "| %s string, %d masses | %.0f ns | %.0f ns | %.0f ns |%n",
+                    threeD ? "3-D" : "1-D", n, faust, step, ugen);
         }
     }
 

@@ -34,7 +34,15 @@ public final class FaustToolchain {
         }
     }
 
+    /** When above 0, faust runs with its address space limited to this many kilobytes (ulimit -v). */
+    private static volatile long faustMemoryKb;
+
     private FaustToolchain() {
+    }
+
+    /** Limits the memory of later faust runs (kilobytes of address space, 0 for no limit): large models need tens of GB. */
+    public static void limitFaustMemory(long kilobytes) {
+        faustMemoryKb = kilobytes;
     }
 
     /** Fails, naming the packages to install, unless {@code faust} and {@code g++} run. */
@@ -80,6 +88,16 @@ public final class FaustToolchain {
             faust.add("-double");
         }
         faust.addAll(List.of("-a", arch.toString(), src.toString(), "-o", cpp.toString()));
+        faust.addAll(1, List.of("-t", Integer.toString(timeoutSeconds)));   // faust's own timeout is 120 s
+        if (faustMemoryKb > 0) {
+            faust = List.of("bash", "-c", "ulimit -v " + faustMemoryKb + " && exec \"$0\" \"$@\"", "faust");
+            faust = new ArrayList<>(faust);
+            faust.addAll(List.of("-t", Integer.toString(timeoutSeconds)));
+            if (doublePrecision) {
+                faust.add("-double");
+            }
+            faust.addAll(List.of("-a", arch.toString(), src.toString(), "-o", cpp.toString()));
+        }
         long t0 = System.nanoTime();
         run(faust, dir, timeoutSeconds, null);
         long t1 = System.nanoTime();
