@@ -275,6 +275,54 @@ class FaustAgreementTest {
     }
 
     /**
+     * Every form the explicit writer has: each mass kind and each interaction kind, with gravity and friction,
+     * vibrating a little around its rest state. The conditional interactions (rope, bubble, contact, plane) stay
+     * engaged throughout, with a margin of 0.05 against vibrations of about 1e-3: engaging and letting go again
+     * and again, or moving far enough for the distance-based springs to be nonlinear, makes such a coupled model
+     * chaotic, and rounding differences then grow tenfold every ~120 steps (measured on a first version: 1e-16
+     * at step 5, 1e-9 at step 1,100, 0.5 at 4,096), between any two implementations.
+     */
+    static PhysicalModel everyKind() {
+        PhysicalModel m = new PhysicalModel(44100);
+        m.addGround3D("g", new Vect3D(0, 0, 0));
+        m.addGround3D("gp", new Vect3D(4, 0, 0.5));
+        m.addMass3D("a", 1, new Vect3D(1, 0, 0), new Vect3D(0, 5, 3));
+        m.addOsc3D("o", 1, 0.02, 0.0002, new Vect3D(2, 0.1, 0), new Vect3D(0, 0, 5));
+        m.addMass2DPlane("p", 0.5, new Vect3D(3, 0, 0.5), new Vect3D(2, 0, 0));
+        m.addMass1D("q", 0.7, new Vect3D(3, 1, 0), new Vect3D());
+        m.addMass3DSimple("s", 1, new Vect3D(0, 2, 0), new Vect3D(0, 0, 3));
+        double ao = Math.sqrt(1 + 0.01);
+        double op = Math.sqrt(1 + 0.01 + 0.25);
+        double pq = Math.sqrt(1 + 0.25);
+        m.addSpring3D("spring", 1, 0.05, "g", "a");
+        m.addDamper3D("damper", 0.001, "g", "a");
+        m.addSpringDamper3D("sd", ao, 0.03, 0.0003, "a", "o");
+        m.addRope3D("rope", op - 0.05, 0.01, 0.0002, "o", "p");
+        m.addSpringDamper3D("anchor", 1, 0.05, 0.0002, "p", "gp");
+        m.addSpringDamper1D("sd1", 0.5, 0.02, 0.0001, "p", "q");
+        m.addBubble3D("bubble", 0.95, 0.05, 0.0005, "a", "g");
+        m.addAttractor3D("attractor", 0.1, 1e-5, "o", "q");
+        m.addPlaneContact("plane", 0, 0.05, 0.001, 0, 1.05, "a");
+        m.addContact3D("contact", pq + 0.05, 0.005, 0.0003, "p", "q");
+        m.addSpring3D("hold", 2, 0.02, "s", "g");
+        m.setGravity(1e-7);
+        m.setFriction(0.00001);
+        m.init();
+        return m;
+    }
+
+    @Test
+    void everyExplicitForm() throws IOException {
+        List<Point> pts = List.of(new Point("a", 1, 1), new Point("o", 0, 1), new Point("p", 0, 1),
+                new Point("q", 2, 1), new Point("s", 2, 1), new Point("a", 2, 1));
+        String dsp = check("every", everyKind(), everyKind(), pts, List.of(new Strike("o", 1, 0.01)), null);
+        for (String form : new String[] {"spring(", "damper(", "springDamper(", "stretched(", "sd1(", "attractor(",
+            "plane(", "contact(", "osc("}) {
+            assertTrue(dsp.substring(dsp.indexOf("\nmasses = ")).contains(form), "the program uses " + form);
+        }
+    }
+
+    /**
      * A bar (an oscillator held by a spring of rest length 1) struck from above by a hammer and from below by a
      * second one, swinging against a stop (a plane contact): every contact of mi.lib's kind, with gravity and air
      * friction. Each hammer strikes once and flies off, so the model is not chaotic (a ball trapped between two
