@@ -19,7 +19,9 @@ import tactus.matModuleType;
  * <li>{@code Contact3D} between two masses on the same vertical line: {@code mi.collision(K, Z, r, ...)} with the
  * lower mass first; {@code PlaneContact3D} across z: {@code mi.collision} against the plane's coordinate.</li>
  * </ul>
- * mi.lib's gravity is a force subtracted from the input, Tactus's an acceleration: grav = -g_z M.
+ * mi.lib's gravity is a force subtracted from the input, Tactus's an acceleration: grav = -g_z M. Its dampers
+ * compute {@code (x1 - x1') : initState(x1r0)}, so the "initial delayed position" x1r0 is added to the first
+ * sample's velocity: to start a damper from rest it is minus the current position.
  */
 final class MiLibWriter {
     private MiLibWriter() {

@@ -47,7 +47,12 @@ public final class FaustToolchain {
 
     /** Fails, naming the packages to install, unless {@code faust} and {@code g++} run. */
     public static void requireTools() {
-        for (String tool : new String[] {"faust", "g++"}) {
+        requireTools("faust", "g++");
+    }
+
+    /** Fails, naming the packages to install, unless every one of these commands runs with {@code --version}. */
+    static void requireTools(String... tools) {
+        for (String tool : tools) {
             try {
                 run(List.of(tool, "--version"), null, 20, null);
             } catch (IOException | IllegalStateException e) {
