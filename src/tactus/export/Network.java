@@ -95,13 +95,13 @@ final class Network {
         int outputs = outPosition.size();
         int inputs = inputScale.size();
         out.append("// ").append(massBlocks.size()).append(" masses: forces in, positions out\n");
-        out.append("masses = ").append(String.join(",\n  ", massBlocks)).append(";\n\n");
+        out.append("masses = ").append(balanced(massBlocks, 0, massBlocks.size())).append(";\n\n");
         if (!linkBlocks.isEmpty()) {
             out.append("// ").append(linkBlocks.size()).append(" interactions: positions in, forces out\n");
-            out.append("links = ").append(String.join(",\n  ", linkBlocks)).append(";\n\n");
+            out.append("links = ").append(balanced(linkBlocks, 0, linkBlocks.size())).append(";\n\n");
         }
         out.append("// positions to interactions, then the outputs (route(ins, outs, (from, to), ...), from 1)\n");
-        StringBuilder pairs = new StringBuilder();
+        List<String> pairs = new ArrayList<>();
         int k = 0;
         for (int p : linkInputs) {
             pair(pairs, p + 1, ++k);
@@ -122,7 +122,7 @@ final class Network {
             }
             taps.add(tap.contains(":") ? "(" + tap + ")" : tap);
         }
-        out.append("toLinks = route(").append(positions).append(", ").append(k).append(pairs).append(")");
+        out.append("toLinks = ").append(route(positions, k, pairs));
         if (taps.stream().anyMatch(t -> !t.equals("_"))) {
             out.append("\n  : (").append(linkInputs.isEmpty() ? "" : "si.bus(" + linkInputs.size() + "), ")
                     .append(String.join(", ", taps)).append(")");
@@ -131,7 +131,7 @@ final class Network {
         boolean ported = !portSources.isEmpty();
         if (ported) {
             out.append("// forces of the interactions (then the inputs) to the masses: route sums them\n");
-            StringBuilder fp = new StringBuilder();
+            List<String> fp = new ArrayList<>();
             List<String> first = new ArrayList<>();
             boolean anyPending = false;
             for (int port = 0; port < portSources.size(); port++) {
@@ -151,8 +151,7 @@ final class Network {
                 out.append("(").append(linkOutputs > 0 ? "si.bus(" + linkOutputs + "), " : "")
                         .append(String.join(", ", scales)).append(") : ");
             }
-            out.append("route(").append(linkOutputs + inputs).append(", ").append(portSources.size()).append(fp)
-                    .append(")");
+            out.append(route(linkOutputs + inputs, portSources.size(), fp));
             if (anyPending) {
                 out.append("\n  // forces pending in the model at export act on the first sample\n  : (")
                         .append(lines(first)).append(")");
@@ -173,11 +172,31 @@ final class Network {
         }
     }
 
-    private static void pair(StringBuilder b, int from, int to) {
-        b.append(", (").append(from).append(", ").append(to).append(')');
-        if (b.length() % 2000 < 12) {
-            b.append("\n  ");
+    /**
+     * @return the blocks [from, to) in parallel, bracketed as a balanced tree of groups of at most 64: faust reads
+     *     {@code a, b, c, ...} as a chain nested one level per block, and its evaluator overflows its stack at a
+     *     few thousand
+     */
+    private static String balanced(List<String> blocks, int from, int to) {
+        return balanced(blocks, from, to, ",\n  ");
+    }
+
+    private static String balanced(List<String> blocks, int from, int to, String sep) {
+        if (to - from <= 64) {
+            return String.join(sep, blocks.subList(from, to));
         }
+        int mid = (from + to) >>> 1;
+        return "(" + balanced(blocks, from, mid, sep) + ")" + sep + "(" + balanced(blocks, mid, to, sep) + ")";
+    }
+
+    /** @return {@code route(ins, outs, pairs)} with the pairs as a balanced tree (a flat list of 30,000 overflows faust) */
+    private static String route(int ins, int outs, List<String> pairs) {
+        return "route(" + ins + ", " + outs + (pairs.isEmpty() ? "" : ", " + balanced(pairs, 0, pairs.size(), ", "))
+                + ")";
+    }
+
+    private static void pair(List<String> pairs, int from, int to) {
+        pairs.add("(" + from + ", " + to + ")");
     }
 
     /** @return the block in brackets when it is a composition, so that a parallel list of blocks parses right */
