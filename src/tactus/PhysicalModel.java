@@ -1739,6 +1739,45 @@ public class PhysicalModel {
         }
     }
 
+    // ------------------------------------------------------------- read-only queries for exporters (tactus.export)
+
+    /**
+     * @return the rest point of an oscillator ({@code Osc3D} or {@code Osc1D}), in length units (a copy): the
+     *     point its internal spring pulls it toward
+     * @throws IllegalArgumentException if the name is unknown or the mass is not an oscillator
+     */
+    public Vect3D getOscRestPosition(String name) {
+        enter();
+        try {
+            int id = core.dir.massId("getOscRestPosition", name);
+            core.params.requireOsc("getOscRestPosition", id);
+            return new Vect3D(core.engine.restPosition(id, 0), core.engine.restPosition(id, 1),
+                    core.engine.restPosition(id, 2));
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return true while the mass is under velocity control ({@link #triggerVelocityControl}) */
+    public boolean isVelocityControlled(String name) {
+        enter();
+        try {
+            return core.engine.isDriven(core.dir.massId("isVelocityControlled", name));
+        } finally {
+            exit();
+        }
+    }
+
+    /** @return the names of the mass subsets that have a contact group, in creation order (a new array) */
+    public String[] getContactGroupSubsets() {
+        enter();
+        try {
+            return core.subsets.contactGroupSubsets();
+        } finally {
+            exit();
+        }
+    }
+
     /**
      * Replaces the content of {@code out} with the positions of every mass of one type, in index order, as float
      * {@code PVector}s (new objects).

@@ -346,6 +346,11 @@ final class SubsetBook {
         return groups.containsKey(subset);
     }
 
+    /** @return the names of the subsets that have a contact group, in creation order. */
+    String[] contactGroupSubsets() {
+        return groups.keySet().toArray(new String[0]);
+    }
+
     /** @return the engine ids of the live contact groups, in creation order. */
     int[] groupIds() {
         return groups.values().stream().mapToInt(Integer::intValue).toArray();
