@@ -206,7 +206,7 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * Sets the largest joint torque in N m (0 < limit <= 0.123; default 0.123, the firmware's clip); when a
+     * Sets the largest joint torque in N m (0 &lt; limit &lt;= 0.123; default 0.123, the firmware's clip); when a
      * joint torque is larger, both are scaled down by the same factor, so the force keeps its direction. A
      * limit above the firmware's clip is refused: the firmware would clip each motor alone and turn the force.
      */
