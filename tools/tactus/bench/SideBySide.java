@@ -340,10 +340,13 @@ public final class SideBySide {
         }
     }
 
-    /** @return true when the 1-minute load average in a {@link Bench#loadavg()} text is at least 1 */
+    /**
+     * @return true when the 1-minute load average in a {@link Bench#loadavg()} text is at least 1.5: the bench's own
+     *         stepping thread accounts for about 1, so more means another program competed for the cores
+     */
     static boolean busy(String load) {
         try {
-            return Double.parseDouble(load.split(" ")[0]) >= 1.0;
+            return Double.parseDouble(load.split(" ")[0]) >= 1.5;
         } catch (RuntimeException e) {
             return true;
         }
