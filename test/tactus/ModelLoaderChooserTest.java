@@ -6,10 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -59,25 +56,13 @@ class ModelLoaderChooserTest {
         return f;
     }
 
-    static String stderrOf(Runnable r) {
-        PrintStream err = System.err;
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        System.setErr(new PrintStream(out, true));
-        try {
-            r.run();
-        } finally {
-            System.setErr(err);
-        }
-        return new String(out.toByteArray(), StandardCharsets.UTF_8);
-    }
-
     @Test
     void theSketchsOwnLoadIsCalledWithTheChosenFileAndTheModelIsLoadedOnce(@TempDir Path dir) {
         PaperSketch sketch = new PaperSketch();
         ModelLoader loader = new ModelLoader(sketch);
         sketch.loader = loader;
         File f = saved(dir);
-        String printed = stderrOf(() -> loader.modelFileSelected(f));
+        String printed = GravityNoteTest.stderrOf(() -> loader.modelFileSelected(f));
         assertEquals(1, sketch.calls.size(), "load(File) is called once");
         assertSame(f, sketch.calls.get(0));
         assertEquals(2, sketch.mdl.getNumberOfMats(), "loaded once, by the sketch (twice would refuse the names)");
@@ -100,7 +85,7 @@ class ModelLoaderChooserTest {
     void whatTheSketchsLoadThrowsIsPrintedNotPassedOn(@TempDir Path dir) {
         ModelLoader loader = new ModelLoader(new FailingSketch());
         File f = saved(dir);
-        String printed = stderrOf(() -> loader.modelFileSelected(f));
+        String printed = GravityNoteTest.stderrOf(() -> loader.modelFileSelected(f));
         assertTrue(printed.contains("load(File) threw") && printed.contains("the sketch's own failure"), printed);
     }
 
@@ -110,7 +95,7 @@ class ModelLoaderChooserTest {
         File f = saved(dir);
         PhysicalModel m = new PhysicalModel(1050, 50);
         PhysicalModel other = new PhysicalModel(1050, 50);
-        String printed = stderrOf(() -> {
+        String printed = GravityNoteTest.stderrOf(() -> {
             loader.deliver(f, m);
             loader.deliver(f, other);
         });
@@ -127,7 +112,7 @@ class ModelLoaderChooserTest {
         HiddenLoadSketch sketch = new HiddenLoadSketch();
         ModelLoader loader = new ModelLoader(sketch);
         PhysicalModel m = new PhysicalModel(1050, 50);
-        String printed = stderrOf(() -> loader.deliver(saved(dir), m));
+        String printed = GravityNoteTest.stderrOf(() -> loader.deliver(saved(dir), m));
         assertEquals(0, sketch.calls, "Processing calls only a public method");
         assertTrue(printed.contains("load(File) method is not public"), printed);
         assertEquals(2, m.getNumberOfMats());

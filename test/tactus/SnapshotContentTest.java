@@ -127,17 +127,6 @@ class SnapshotContentTest {
         assertSameAsModel(m, m.getSnapshot());
     }
 
-    /** n free masses at x = i, all moving at 1 unit/s along x, one link to a fixed point: x_i = i + step * 2^-10. */
-    private static PhysicalModel drifting(int n) {
-        PhysicalModel m = new PhysicalModel(RATE, 64);
-        for (int i = 0; i < n; i++) {
-            m.addMass3D("m" + i, 1, new Vect3D(i, -i, 0), new Vect3D(1, 0, 0));
-        }
-        m.addGround3D("g", new Vect3D(0, 5, 0));
-        m.addSpringDamper3D("s", 1, 0.0, 0.0, "m0", "g");   // K = Z = 0: a link that exerts no force
-        m.init();
-        return m;
-    }
 
     /** Checks one copy of the drifting model: one step's state, exactly, with the link's elongation of that step. */
     private static void checkDrifting(ModelSnapshot s, int n) {
@@ -170,7 +159,7 @@ class SnapshotContentTest {
             "true, 333, 3000"})
     void aConcurrentReaderSeesWholeFreshCopies(boolean realtime, int batch, long pauseMicros) throws Exception {
         int n = 48;
-        PhysicalModel m = drifting(n);
+        PhysicalModel m = SnapshotTest.drifting(n);
         if (realtime) {
             m.beginRealtimeStepping();
         }

@@ -15,7 +15,7 @@ class SnapshotTest {
     private static final double V = 1.0 / RATE;   // one unit per second: 2^-10 per step, exact in binary
 
     /** n free masses at x = i, all moving at 1 unit/s along x: at step s every x_i is exactly i + s * 2^-10. */
-    private static PhysicalModel drifting(int n) {
+    static PhysicalModel drifting(int n) {
         PhysicalModel m = new PhysicalModel(RATE, 64);
         for (int i = 0; i < n; i++) {
             m.addMass3D("m" + i, 1, new Vect3D(i, -i, 0), new Vect3D(1, 0, 0));
