@@ -62,6 +62,13 @@ final class Ownership {
     private volatile long handOvers;
     /** The owner's nesting of gate-holding calls (stepping calls and facade calls); touched under the gate. */
     private int ownerDepth;
+    /**
+     * The thread holding the gate for a stepping or facade call of the owner, or null; written only by that thread
+     * while it holds the gate. A nested call asks "do I hold the gate?" with it, never with {@link #ownerDepth}
+     * alone: a thread that has just lost the role would otherwise read the new owner's depth as its own and step
+     * beside it (and their unsynchronised counts could leave the gate held for good).
+     */
+    private volatile Thread gateHolder;
     /** System.nanoTime() of the owner's latest stepping call (refreshed every 64 calls or every call of 64 steps). */
     private volatile long lastStep;
     private long callsSinceClock;
@@ -113,7 +120,7 @@ final class Ownership {
 
     /** @return true when the current thread is the owner inside a stepping or facade call (it holds the gate). */
     boolean ownerInCall() {
-        return owner == Thread.currentThread() && ownerDepth > 0;
+        return gateHolder == Thread.currentThread();
     }
 
     /** @return true when the current thread is applying queued commands. */
@@ -185,7 +192,7 @@ final class Ownership {
      */
     int beginStep(int n) {
         Thread me = Thread.currentThread();
-        if (owner == me && ownerDepth > 0) {
+        if (gateHolder == me) {
             ownerDepth++; // a stepping call from inside one (a listener): the gate is already held
             return STEP;
         }
@@ -261,7 +268,7 @@ final class Ownership {
      * @return false when the current thread lost the role (it then acts as any other thread)
      */
     boolean enterAsOwner() {
-        if (ownerDepth > 0) {
+        if (gateHolder == Thread.currentThread()) {
             ownerDepth++;
             return true;
         }
@@ -308,6 +315,7 @@ final class Ownership {
                     takeRole(me);
                 }
                 ownerDepth = 1;
+                gateHolder = me;
                 return STEP;
             }
             // a thread is applying commands (no owner, or taking the role from an idle one): wait for it
@@ -326,6 +334,7 @@ final class Ownership {
                 finishRole();
             }
         } finally {
+            gateHolder = null;
             gate.set(FREE);
         }
         if (endRequested) {
@@ -682,6 +691,7 @@ final class Ownership {
             freeRole();
         } finally {
             ownerDepth = 0;
+            gateHolder = null;
             gate.set(FREE);
         }
     }
