@@ -720,26 +720,31 @@ public class Board implements AutoCloseable {
                 continue;
             }
             long since = System.nanoTime() - lastTorqueWriteNanos;
+            long trippedAfter = -1;
             if (since > limit && lock.tryLock()) {
                 try {
                     since = System.nanoTime() - lastTorqueWriteNanos;
                     if (!closed && torqueArmed && since > limit) {
                         torqueArmed = false;
                         torqueWatchdogTrips++;
+                        trippedAfter = since;
                         for (Device d : devices) {
                             d.writeZeros();
                         }
-                        notices.once(ConsoleNotices.Kind.WATCHDOG, "tactus: no torque was written to the Haply board on "
-                                + transport.describe() + " for " + since / 1_000_000 + " ms: the motors were set to "
-                                + "zero. Did the haptic thread stop? An exception in a ScheduledExecutorService task "
-                                + "ends the task without a message: catch and print it there. (Board."
-                                + "setTorqueWatchdogMillis sets this time, 0 turns it off.)");
                     }
                 } catch (RuntimeException ignored) {
                     // the link failed while zeroing: lost() has said why
                 } finally {
                     lock.unlock();
                 }
+            }
+            if (trippedAfter >= 0) {
+                // printed after the lock is let go: a slow console must not hold up a haptic thread that resumes
+                notices.once(ConsoleNotices.Kind.WATCHDOG, "tactus: no torque was written to the Haply board on "
+                        + transport.describe() + " for " + trippedAfter / 1_000_000 + " ms: the motors were set to "
+                        + "zero. Did the haptic thread stop? An exception in a ScheduledExecutorService task "
+                        + "ends the task without a message: catch and print it there. (Board."
+                        + "setTorqueWatchdogMillis sets this time, 0 turns it off.)");
             }
         }
     }
