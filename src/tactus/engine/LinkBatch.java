@@ -8,6 +8,11 @@ package tactus.engine;
  * slot, with {@code a < b}). The damper's previous distance of an irregular link is {@code dp[j]}; that of a
  * run link lives in its run, indexed by slot: read and write it with {@link #prev} and {@link #setPrev}. A
  * negative previous distance marks a conditional link that was inactive on the previous step.
+ *
+ * <p>Contact3D batches mark activity by step instead, so that a step touches only the contacts that act:
+ * {@code dp[j]} holds the previous distance only while {@code engagedAt[j]} equals {@link #contactSteps} (the
+ * contact acted on the last step); any other stamp reads as inactive. {@link #prev} and {@link #setPrev} hide
+ * the difference.
  */
 final class LinkBatch {
     private static final double[] NONE = new double[0];
@@ -32,6 +37,14 @@ final class LinkBatch {
     StencilRun[] runs = new StencilRun[0];
     /** For each link, the index of its run, or -1 when it is irregular. */
     final int[] runOf;
+    /** Contact3D only (else null): the step count at which each contact last acted; see the class comment. */
+    final long[] engagedAt;
+    /** Contact3D only: the number of steps the batch's kernel has run. */
+    long contactSteps;
+    /** Changed by every {@link #setParams} call, so that kernels can notice new parameters. */
+    int paramsVersion;
+    /** Contact3D only: the broad phase of the batch's kernel, built with its first kernel, or null. */
+    ContactIndex contactIndex;
 
     LinkBatch(LinkKind kind, int n) {
         this.kind = kind;
@@ -48,16 +61,30 @@ final class LinkBatch {
         runOf = new int[n];
         java.util.Arrays.fill(runOf, -1);
         nIrregular = n;
+        if (kind == LinkKind.CONTACT3D) {
+            engagedAt = new long[n];
+            java.util.Arrays.fill(engagedAt, -1L);
+        } else {
+            engagedAt = null;
+        }
     }
 
     /** @return the damper's previous distance of link j (a negative value marks an inactive conditional link). */
     double prev(int j) {
+        if (engagedAt != null) {
+            return engagedAt[j] == contactSteps ? dp[j] : -1.0;
+        }
         int r = runOf[j];
         return r < 0 ? dp[j] : runs[r].dp[a[j]];
     }
 
     /** Sets the damper's previous distance of link j. */
     void setPrev(int j, double v) {
+        if (engagedAt != null) {
+            dp[j] = v;
+            engagedAt[j] = v < 0 ? contactSteps - 1 : contactSteps;
+            return;
+        }
         int r = runOf[j];
         if (r < 0) {
             dp[j] = v;
@@ -68,6 +95,7 @@ final class LinkBatch {
 
     /** Sets the parameters of link j, in the batch and in its run if it has one. */
     void setParams(int j, double kk, double zz, double length, double plane, double attract) {
+        paramsVersion++;
         k[j] = kk;
         z[j] = zz;
         len[j] = length;

@@ -174,33 +174,51 @@ final class LinkKernels {
 
     /**
      * Contact3D: the spring-damper force with the threshold as rest length, only while
-     * {@code d < threshold}. The force is not clamped, as in the reference scheme.
+     * {@code d < threshold}. The force is not clamped, as in the reference scheme. A contact that acts stamps
+     * the step in {@link LinkBatch#engagedAt}; one that does not is left untouched, so a step writes nothing for
+     * the contacts that are apart. When the batch has a {@link ContactIndex}, only its candidates are tested;
+     * they are every contact that can act, in batch order, so the sums are those of a test of every contact.
      */
     static final class Proximity extends BatchKernel {
         Proximity(LinkBatch b, StepPlan p) {
             super(b, p);
+            if (b.contactIndex == null || b.contactIndex.plan() != p) {
+                b.contactIndex = ContactIndex.forBatch(b, p);
+            }
         }
 
         @Override
         public void run() {
-            final double[] x = p.x, y = p.y, z = p.z, fx = p.fx, fy = p.fy, fz = p.fz;
-            final int[] ia = b.a, ib = b.b;
-            final double[] k = b.k, zz = b.z, thr = b.len, dp = b.dp;
-            for (int j = 0, n = b.n; j < n; j++) {
-                int a = ia[j], c = ib[j];
-                double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
-                double d2 = dx * dx + dy * dy + dz * dz;
-                double t = thr[j];
-                if (d2 >= t * t) {
-                    dp[j] = -1.0;
-                    continue;
+            long step = ++b.contactSteps;
+            ContactIndex index = b.contactIndex;
+            if (index != null && index.refresh()) {
+                final int[] cand = index.candidate;
+                for (int q = 0, m = index.candidates; q < m; q++) {
+                    contact(cand[q], step);
                 }
-                double d = Math.sqrt(d2);
-                double prev = dp[j] < 0 ? previousDistance(p, a, c) : dp[j];
-                dp[j] = d;
-                if (d > 0) {
-                    push(fx, fy, fz, a, c, springDamperOverDistance(k[j], zz[j], t, d, prev), dx, dy, dz);
+            } else {
+                for (int j = 0, n = b.n; j < n; j++) {
+                    contact(j, step);
                 }
+            }
+        }
+
+        /** Tests contact j and, while it is engaged, applies its force and stamps the step. */
+        private void contact(int j, long step) {
+            final double[] x = p.x, y = p.y, z = p.z;
+            int a = b.a[j], c = b.b[j];
+            double dx = x[a] - x[c], dy = y[a] - y[c], dz = z[a] - z[c];
+            double d2 = dx * dx + dy * dy + dz * dz;
+            double t = b.len[j];
+            if (d2 >= t * t) {
+                return;
+            }
+            double d = Math.sqrt(d2);
+            double prev = b.engagedAt[j] == step - 1 ? b.dp[j] : previousDistance(p, a, c);
+            b.dp[j] = d;
+            b.engagedAt[j] = step;
+            if (d > 0) {
+                push(p.fx, p.fy, p.fz, a, c, springDamperOverDistance(b.k[j], b.z[j], t, d, prev), dx, dy, dz);
             }
         }
     }
