@@ -63,6 +63,22 @@ class ContactIndexTest {
         e.plan().batch(LinkKind.CONTACT3D).contactIndex = null;
     }
 
+    /** The pile stepped both ways: {with the index, every contact tested}, one thread. */
+    private static Engine[] twins(long seed) {
+        Engine ref = marbles(seed, 1);
+        testEveryContact(ref);
+        return new Engine[] {marbles(seed, 1), ref};
+    }
+
+    /** Calls {@code action} with the id of every Contact3D among ids 0, stride, 2 stride, ... */
+    private static void everyContact(Engine e, int stride, java.util.function.IntConsumer action) {
+        for (int id = 0; id < e.linkIdCount(); id += stride) {
+            if (e.isLink(id) && e.linkKind(id) == LinkKind.CONTACT3D) {
+                action.accept(id);
+            }
+        }
+    }
+
     private static ContactIndex indexOf(Engine e) {
         e.compile();
         return e.plan().batch(LinkKind.CONTACT3D).contactIndex;
@@ -125,24 +141,21 @@ class ContactIndexTest {
 
     @Test
     void handMovesParameterChangesAndANewStepDurationKeepBothEqual() {
-        Engine fast = marbles(11, 1);
-        Engine ref = marbles(11, 1);
-        testEveryContact(ref);
+        Engine[] both = twins(11);
+        Engine fast = both[0];
+        Engine ref = both[1];
         stepBoth(fast, ref, 5, 40, "before");
-        for (Engine e : new Engine[] {fast, ref}) {
+        for (Engine e : both) {
             e.setPosition(3, 1, 1, 0.2);                // into the pile, forgetting its links' history
             e.setPositionKeepingLinkHistory(7, 1.05, 1, 0.2);
         }
         stepBoth(fast, ref, 5, 40, "after the hand moves");
-        for (Engine e : new Engine[] {fast, ref}) {
-            for (int id = 0; id < e.linkIdCount(); id += 97) {
-                if (e.isLink(id) && e.linkKind(id) == LinkKind.CONTACT3D) {
-                    e.setLinkParams(id, 0.05, 0.003, 0.9);    // one threshold larger than all others
-                }
-            }
+        for (Engine e : both) {
+            // some thresholds larger than all others
+            everyContact(e, 97, id -> e.setLinkParams(id, 0.05, 0.003, 0.9));
         }
         stepBoth(fast, ref, 5, 40, "after the parameter changes");
-        for (Engine e : new Engine[] {fast, ref}) {
+        for (Engine e : both) {
             e.rescaleTime(0.5);
         }
         stepBoth(fast, ref, 5, 40, "after the change of step duration");
@@ -152,16 +165,12 @@ class ContactIndexTest {
 
     @Test
     void topologyChangesCarryTheHistoryOverEqually() {
-        Engine fast = marbles(21, 1);
-        Engine ref = marbles(21, 1);
-        testEveryContact(ref);
+        Engine[] both = twins(21);
+        Engine fast = both[0];
+        Engine ref = both[1];
         stepBoth(fast, ref, 5, 40, "before");
-        for (Engine e : new Engine[] {fast, ref}) {
-            for (int id = 0; id < e.linkIdCount(); id += 13) {
-                if (e.isLink(id) && e.linkKind(id) == LinkKind.CONTACT3D) {
-                    e.removeLink(id);
-                }
-            }
+        for (Engine e : both) {
+            everyContact(e, 13, e::removeLink);
             int extra = e.addMass(MassKind.MASS3D, 1.5, 1, 1, 0.5, 0, 0, 0);
             for (int id = 0; id < MARBLES; id += 2) {
                 e.addLink(LinkKind.CONTACT3D, extra, id, 0.02, 0.001, 0.3);
@@ -176,13 +185,13 @@ class ContactIndexTest {
 
     @Test
     void aNonFinitePositionFallsBackToTestingEveryContact() {
-        Engine fast = marbles(31, 1);
-        Engine ref = marbles(31, 1);
-        testEveryContact(ref);
+        Engine[] both = twins(31);
+        Engine fast = both[0];
+        Engine ref = both[1];
         fast.guard().setInterval(1 << 30); // no scan: the NaN stays in the state
         ref.guard().setInterval(1 << 30);
         stepBoth(fast, ref, 3, 40, "before");
-        for (Engine e : new Engine[] {fast, ref}) {
+        for (Engine e : both) {
             e.setPositionKeepingLinkHistory(5, Double.NaN, 1, 0.2);
         }
         ContactIndex index = indexOf(fast);
