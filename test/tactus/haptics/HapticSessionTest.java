@@ -23,11 +23,26 @@ class HapticSessionTest {
     }
 
     private static void await(java.util.function.BooleanSupplier done, String what) {
+        await(done, () -> what);
+    }
+
+    /** Waits up to 10 s for {@code done}; the message is made when the wait fails (it shows the state then). */
+    private static void await(java.util.function.BooleanSupplier done, java.util.function.Supplier<String> what) {
         long deadline = System.nanoTime() + 10_000_000_000L;
         while (!done.getAsBoolean() && System.nanoTime() < deadline) {
             LockSupport.parkNanos(2_000_000);
         }
         assertTrue(done.getAsBoolean(), what);
+    }
+
+    /** The loop's state and the handle's, for a failure message. */
+    private static String state(HapticSession s) {
+        HapticLoop l = s.loop();
+        double[] d = new double[2];
+        l.devicePosition(d);
+        return "loop running " + l.isRunning() + ", " + l.ticks() + " ticks, failure " + l.failure()
+                + ", loop's handle (" + d[0] + ", " + d[1] + "), emulator's handle (" + s.emulator().x() + ", "
+                + s.emulator().y() + ")";
     }
 
     @Test
@@ -94,19 +109,20 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - py) < 2;
-            }, "the avatar did not reach the pixel: " + pm.getMatPosition("avatar") + " vs " + px + ", " + py);
+            }, () -> "the avatar did not reach the pixel: " + pm.getMatPosition("avatar") + " vs " + px + ", " + py
+                    + "; " + state(s));
             assertTrue(s.emulator().x() > 0.5 * HaplyPreset.HAPLY_2018.d(), "x mirrored: " + s.emulator().x());
             // a pixel outside the workspace is kept at its edge
             s.handTowardsPixel(-10_000, py);
             await(() -> Math.abs(pm.getMatPosition("avatar").x - ws[0]) < 2,
-                    "clamped to the left edge: " + pm.getMatPosition("avatar"));
+                    () -> "clamped to the left edge: " + pm.getMatPosition("avatar") + "; " + state(s));
             // with a view, the pixel goes through it: model = (pixel - offset) / scale
             s.setView(2, 100, 50);
             s.handTowardsPixel(100 + 2 * px, 50 + 2 * py);
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - py) < 2;
-            }, "through the view: " + pm.getMatPosition("avatar"));
+            }, () -> "through the view: " + pm.getMatPosition("avatar") + "; " + state(s));
             assertThrows(IllegalArgumentException.class, () -> s.setView(0, 0, 0));
             assertThrows(IllegalArgumentException.class, () -> s.setView(1, Double.NaN, 0));
         }
@@ -123,7 +139,7 @@ class HapticSessionTest {
             assertFalse(first.isRunning());
             second.setRate(200);
             second.start();
-            await(() -> second.ticks() > 20, "second loop ticks: " + second.failure());
+            await(() -> second.ticks() > 20, () -> "second loop ticks: " + second.failure());
             assertTrue(second.isRunning(), () -> "second loop: " + second.failure());
             assertEquals(second, s.loop());
             assertTrue(second.scheduling().startsWith("real-time") || second.scheduling().startsWith("normal"),
@@ -396,7 +412,8 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - mx) < 2 && Math.abs(p.y - my) < 2;
-            }, "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my);
+            }, () -> "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my + "; "
+                    + state(s));
             LockSupport.parkNanos(500_000_000L);     // let the hand's spring settle from the tour's speed
             app.runPre();
             long still = System.nanoTime() + 1_000_000_000L;
