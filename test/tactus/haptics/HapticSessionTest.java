@@ -42,7 +42,22 @@ class HapticSessionTest {
         l.devicePosition(d);
         return "loop running " + l.isRunning() + ", " + l.ticks() + " ticks, failure " + l.failure()
                 + ", loop's handle (" + d[0] + ", " + d[1] + "), emulator's handle (" + s.emulator().x() + ", "
-                + s.emulator().y() + ")";
+                + s.emulator().y() + "), " + l.telemetry() + ", " + l.scheduling() + loopThreads();
+    }
+
+    /** The state and top frames of every haptic loop thread alive, for a failure message. */
+    private static String loopThreads() {
+        StringBuilder b = new StringBuilder();
+        for (java.util.Map.Entry<Thread, StackTraceElement[]> e : Thread.getAllStackTraces().entrySet()) {
+            if (e.getKey().getName().startsWith("tactus-haptic")) {
+                b.append("; ").append(e.getKey().getName()).append(' ').append(e.getKey().getState());
+                StackTraceElement[] st = e.getValue();
+                for (int i = 0; i < Math.min(8, st.length); i++) {
+                    b.append(" <- ").append(st[i]);
+                }
+            }
+        }
+        return b.toString();
     }
 
     @Test
@@ -234,7 +249,7 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - my) < 2;
-            }, "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my);
+            }, () -> "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my + "; " + state(s));
         }
     }
 
