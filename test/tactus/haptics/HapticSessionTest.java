@@ -57,6 +57,24 @@ class HapticSessionTest {
                 }
             }
         }
+        // what Linux says of those threads (state R/S/D, policy, priority, last CPU): a Java state is only what
+        // the thread last set itself, so a runnable thread that gets no CPU still reads TIMED_WAITING
+        java.io.File[] tasks = new java.io.File("/proc/self/task").listFiles();
+        for (java.io.File t : tasks == null ? new java.io.File[0] : tasks) {
+            try {
+                String comm = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "comm").toPath())).trim();
+                if (comm.startsWith("tactus-haptic")) {
+                    String[] f = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "stat").toPath()))
+                            .replaceFirst("^.*\\) ", "").split(" ");
+                    b.append("; linux ").append(comm).append(" state ").append(f[0]).append(" cpu ").append(f[36])
+                            .append(" rt_priority ").append(f[37]).append(" policy ").append(f[38])
+                            .append(" wchan ").append(new String(java.nio.file.Files.readAllBytes(
+                                    new java.io.File(t, "wchan").toPath())).trim());
+                }
+            } catch (java.io.IOException | RuntimeException e) {
+                b.append("; ").append(t.getName()).append(": ").append(e);
+            }
+        }
         return b.toString();
     }
 
