@@ -23,11 +23,59 @@ class HapticSessionTest {
     }
 
     private static void await(java.util.function.BooleanSupplier done, String what) {
+        await(done, () -> what);
+    }
+
+    /** Waits up to 10 s for {@code done}; the message is made when the wait fails (it shows the state then). */
+    private static void await(java.util.function.BooleanSupplier done, java.util.function.Supplier<String> what) {
         long deadline = System.nanoTime() + 10_000_000_000L;
         while (!done.getAsBoolean() && System.nanoTime() < deadline) {
             LockSupport.parkNanos(2_000_000);
         }
         assertTrue(done.getAsBoolean(), what);
+    }
+
+    /** The loop's state and the handle's, for a failure message. */
+    private static String state(HapticSession s) {
+        HapticLoop l = s.loop();
+        double[] d = new double[2];
+        l.devicePosition(d);
+        return "loop running " + l.isRunning() + ", " + l.ticks() + " ticks, failure " + l.failure()
+                + ", loop's handle (" + d[0] + ", " + d[1] + "), emulator's handle (" + s.emulator().x() + ", "
+                + s.emulator().y() + "), " + l.telemetry() + ", " + l.scheduling() + loopThreads();
+    }
+
+    /** The state and top frames of every haptic loop thread alive, for a failure message. */
+    private static String loopThreads() {
+        StringBuilder b = new StringBuilder();
+        for (java.util.Map.Entry<Thread, StackTraceElement[]> e : Thread.getAllStackTraces().entrySet()) {
+            if (e.getKey().getName().startsWith("tactus-haptic")) {
+                b.append("; ").append(e.getKey().getName()).append(' ').append(e.getKey().getState());
+                StackTraceElement[] st = e.getValue();
+                for (int i = 0; i < Math.min(8, st.length); i++) {
+                    b.append(" <- ").append(st[i]);
+                }
+            }
+        }
+        // what Linux says of those threads (state R/S/D, policy, priority, last CPU): a Java state is only what
+        // the thread last set itself, so a runnable thread that gets no CPU still reads TIMED_WAITING
+        java.io.File[] tasks = new java.io.File("/proc/self/task").listFiles();
+        for (java.io.File t : tasks == null ? new java.io.File[0] : tasks) {
+            try {
+                String comm = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "comm").toPath())).trim();
+                if (comm.startsWith("tactus-haptic")) {
+                    String[] f = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "stat").toPath()))
+                            .replaceFirst("^.*\\) ", "").split(" ");
+                    b.append("; linux ").append(comm).append(" state ").append(f[0]).append(" cpu ").append(f[36])
+                            .append(" rt_priority ").append(f[37]).append(" policy ").append(f[38])
+                            .append(" wchan ").append(new String(java.nio.file.Files.readAllBytes(
+                                    new java.io.File(t, "wchan").toPath())).trim());
+                }
+            } catch (java.io.IOException | RuntimeException e) {
+                b.append("; ").append(t.getName()).append(": ").append(e);
+            }
+        }
+        return b.toString();
     }
 
     @Test
@@ -94,19 +142,20 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - py) < 2;
-            }, "the avatar did not reach the pixel: " + pm.getMatPosition("avatar") + " vs " + px + ", " + py);
+            }, () -> "the avatar did not reach the pixel: " + pm.getMatPosition("avatar") + " vs " + px + ", " + py
+                    + "; " + state(s));
             assertTrue(s.emulator().x() > 0.5 * HaplyPreset.HAPLY_2018.d(), "x mirrored: " + s.emulator().x());
             // a pixel outside the workspace is kept at its edge
             s.handTowardsPixel(-10_000, py);
             await(() -> Math.abs(pm.getMatPosition("avatar").x - ws[0]) < 2,
-                    "clamped to the left edge: " + pm.getMatPosition("avatar"));
+                    () -> "clamped to the left edge: " + pm.getMatPosition("avatar") + "; " + state(s));
             // with a view, the pixel goes through it: model = (pixel - offset) / scale
             s.setView(2, 100, 50);
             s.handTowardsPixel(100 + 2 * px, 50 + 2 * py);
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - py) < 2;
-            }, "through the view: " + pm.getMatPosition("avatar"));
+            }, () -> "through the view: " + pm.getMatPosition("avatar") + "; " + state(s));
             assertThrows(IllegalArgumentException.class, () -> s.setView(0, 0, 0));
             assertThrows(IllegalArgumentException.class, () -> s.setView(1, Double.NaN, 0));
         }
@@ -123,7 +172,7 @@ class HapticSessionTest {
             assertFalse(first.isRunning());
             second.setRate(200);
             second.start();
-            await(() -> second.ticks() > 20, "second loop ticks: " + second.failure());
+            await(() -> second.ticks() > 20, () -> "second loop ticks: " + second.failure());
             assertTrue(second.isRunning(), () -> "second loop: " + second.failure());
             assertEquals(second, s.loop());
             assertTrue(second.scheduling().startsWith("real-time") || second.scheduling().startsWith("normal"),
@@ -218,7 +267,7 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - px) < 2 && Math.abs(p.y - my) < 2;
-            }, "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my);
+            }, () -> "y up: " + pm.getMatPosition("avatar") + " vs " + px + ", " + my + "; " + state(s));
         }
     }
 
@@ -396,7 +445,8 @@ class HapticSessionTest {
             await(() -> {
                 Vect3D p = pm.getMatPosition("avatar");
                 return Math.abs(p.x - mx) < 2 && Math.abs(p.y - my) < 2;
-            }, "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my);
+            }, () -> "the avatar follows the mouse: " + pm.getMatPosition("avatar") + " vs " + mx + ", " + my + "; "
+                    + state(s));
             LockSupport.parkNanos(500_000_000L);     // let the hand's spring settle from the tour's speed
             app.runPre();
             long still = System.nanoTime() + 1_000_000_000L;
