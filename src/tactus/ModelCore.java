@@ -1,6 +1,8 @@
 package tactus;
 
+import java.util.function.Predicate;
 import tactus.engine.Engine;
+import tactus.engine.MassKind;
 
 /**
  * The package-private rooms behind one {@link PhysicalModel}, wired together: the engine, the directory of
@@ -113,5 +115,27 @@ final class ModelCore {
 
     UnitScale units() {
         return time.units;
+    }
+
+    /**
+     * For a call of the paper's API on a mass that must be of certain kinds.
+     *
+     * @param wanted the kinds the call works on
+     * @param kind the kind of problem forgiven otherwise
+     * @param op the call's name
+     * @param id the mass
+     * @param problem what is wrong, before ", this is a " and the mass's kind
+     * @param skipped what the call did instead
+     * @return true when the mass is of a wanted kind; otherwise false after one warning per kind of problem (the
+     *     paper's engine answered 0 or did nothing), or the exception in strict mode
+     */
+    boolean paperMassIs(Predicate<MassKind> wanted, PaperLeniency.Kind kind, String op, int id, String problem,
+                        String skipped) {
+        MassKind k = dir.massKind(id);
+        if (wanted.test(k)) {
+            return true;
+        }
+        lenient.forgive(kind, op, dir.massName(id), problem + ", this is a " + k.label(), skipped);
+        return false;
     }
 }

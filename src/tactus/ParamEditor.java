@@ -78,13 +78,8 @@ final class ParamEditor {
      *     (the paper's engine answered 0 or did nothing), or the exception in strict mode
      */
     boolean paperIsOsc(String op, int id, String skipped) {
-        MassKind k = engine.massKind(id);
-        if (k.isOscillator()) {
-            return true;
-        }
-        c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_PARAMETER, op, c.dir.massName(id),
-                "only Osc3D and Osc1D have stiffness and damping, this is a " + k.label(), skipped);
-        return false;
+        return c.paperMassIs(MassKind::isOscillator, PaperLeniency.Kind.NO_SUCH_PARAMETER, op, id,
+                "only Osc3D and Osc1D have stiffness and damping", skipped);
     }
 
     /** @return true when the link is a plane contact; otherwise as {@link #paperIsOsc}. */

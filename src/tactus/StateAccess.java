@@ -105,13 +105,8 @@ final class StateAccess {
      *     (the paper's engine printed a line and did nothing), or the exception of {@link #requireInput} in strict mode
      */
     boolean paperIsInput(String op, int id, String skipped) {
-        MassKind k = engine.massKind(id);
-        if (k.isInput()) {
-            return true;
-        }
-        c.lenient.forgive(PaperLeniency.Kind.NOT_AN_INPUT, op, c.dir.massName(id),
-                "not an input module, this is a " + k.label(), skipped);
-        return false;
+        return c.paperMassIs(MassKind::isInput, PaperLeniency.Kind.NOT_AN_INPUT, op, id, "not an input module",
+                skipped);
     }
 
     /** Sets the target that an input module follows through its EWMA. */
