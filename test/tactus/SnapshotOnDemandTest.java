@@ -40,6 +40,25 @@ class SnapshotOnDemandTest {
         return m.core.snapshots;
     }
 
+    /**
+     * Runs {@code body} on a new thread of that name (a thread that becomes the model's owner), waits for it (at most
+     * 50 s) and fails with its exception, if it threw one.
+     */
+    private static void onThread(String name, Runnable body) throws InterruptedException {
+        AtomicReference<Throwable> error = new AtomicReference<>();
+        Thread t = new Thread(() -> {
+            try {
+                body.run();
+            } catch (Throwable e) {
+                error.set(e);
+            }
+        }, name);
+        t.start();
+        t.join(50_000);
+        assertFalse(t.isAlive(), name + " still runs after 50 s");
+        assertEquals(null, error.get());
+    }
+
     @Test
     void aModelNobodyReadsCopiesNothingWhateverSteppingAndEditingItSees() {
         PhysicalModel m = chain(40);
@@ -73,22 +92,14 @@ class SnapshotOnDemandTest {
         m.beginRealtimeStepping();
         SnapshotWriter w = writer(m);
         long before = w.publishes;
-        AtomicReference<Throwable> error = new AtomicReference<>();
-        Thread owner = new Thread(() -> {
-            try {
-                for (int i = 0; i < 200; i++) {
-                    m.computeNSteps(64);
-                }
-                for (int i = 0; i < 1000; i++) {
-                    m.computeStep();
-                }
-            } catch (Throwable t) {
-                error.set(t);
+        onThread("owner", () -> {
+            for (int i = 0; i < 200; i++) {
+                m.computeNSteps(64);
             }
-        }, "owner");
-        owner.start();
-        owner.join();
-        assertEquals(null, error.get());
+            for (int i = 0; i < 1000; i++) {
+                m.computeStep();
+            }
+        });
         assertEquals(before, w.publishes, "publications while nobody reads");
         m.endRealtimeStepping();
     }
@@ -163,20 +174,12 @@ class SnapshotOnDemandTest {
         SnapshotWriter w = writer(m);
         long before = w.publishes;
         int frames = 100;
-        AtomicReference<Throwable> error = new AtomicReference<>();
-        Thread owner = new Thread(() -> {
-            try {
-                for (int i = 0; i < frames * RATE / FPS; i++) {
-                    m.computeStep();
-                    m.getSnapshot();
-                }
-            } catch (Throwable t) {
-                error.set(t);
+        onThread("owner", () -> {
+            for (int i = 0; i < frames * RATE / FPS; i++) {
+                m.computeStep();
+                m.getSnapshot();
             }
-        }, "owner");
-        owner.start();
-        owner.join();
-        assertEquals(null, error.get());
+        });
         long published = w.publishes - before;
         assertTrue(published <= frames, published + " publications in " + frames + " display frames");
         assertTrue(published >= frames - 1, "a reader reading every step gets every frame: " + published);
@@ -214,33 +217,25 @@ class SnapshotOnDemandTest {
             }
             long[] bytes = new long[6];
             double[] sink = new double[1];
-            AtomicReference<Throwable> error = new AtomicReference<>();
-            Thread t = new Thread(() -> {
-                try {
-                    long id = Thread.currentThread().getId();
-                    for (int round = 0; round < bytes.length; round++) {
-                        long a0 = mx.getThreadAllocatedBytes(id);
-                        for (int k = 1; k <= 20_000; k++) {
-                            m.computeStep();
-                            if (k % (RATE / FPS) == 0) {
-                                ModelSnapshot s = m.getSnapshot();
-                                for (int i = 0; i < s.getNumberOfMats(); i++) {
-                                    sink[0] += s.x(i);
-                                }
-                                for (int l = 0; l < s.getNumberOfLinks(); l++) {
-                                    sink[0] += s.getLinkElongation(l);
-                                }
+            onThread("stepper and reader", () -> {
+                long id = Thread.currentThread().getId();
+                for (int round = 0; round < bytes.length; round++) {
+                    long a0 = mx.getThreadAllocatedBytes(id);
+                    for (int k = 1; k <= 20_000; k++) {
+                        m.computeStep();
+                        if (k % (RATE / FPS) == 0) {
+                            ModelSnapshot s = m.getSnapshot();
+                            for (int i = 0; i < s.getNumberOfMats(); i++) {
+                                sink[0] += s.x(i);
+                            }
+                            for (int l = 0; l < s.getNumberOfLinks(); l++) {
+                                sink[0] += s.getLinkElongation(l);
                             }
                         }
-                        bytes[round] = mx.getThreadAllocatedBytes(id) - a0;
                     }
-                } catch (Throwable e) {
-                    error.set(e);
+                    bytes[round] = mx.getThreadAllocatedBytes(id) - a0;
                 }
-            }, "stepper and reader");
-            t.start();
-            t.join(50_000);
-            assertEquals(null, error.get());
+            });
             assertTrue(writer(m).publishes >= 4000 / (RATE / FPS), "it did publish: " + writer(m).publishes);
             boolean someRoundClean = false;
             for (int round = 2; round < bytes.length; round++) {
