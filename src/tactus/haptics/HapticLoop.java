@@ -76,8 +76,8 @@ public final class HapticLoop implements AutoCloseable {
     private volatile boolean warmingUp;   // before the first tick: the real-time request and the first read
 
     // written by the loop thread, read by anyone (plain longs: statistics)
-    private final long[] periods = new long[WINDOW];
-    private final long[] computes = new long[WINDOW];
+    private final WindowHistogram jitters = new WindowHistogram(WINDOW);
+    private final WindowHistogram computes = new WindowHistogram(WINDOW);
     private volatile long ticks;
     private long startNanos;
     private volatile long lastNanos;
@@ -440,13 +440,11 @@ public final class HapticLoop implements AutoCloseable {
     /** A snapshot of the telemetry. */
     public HapticTelemetry telemetry() {
         long n = ticks;
-        int k = (int) Math.min(Math.max(0, n - 1), WINDOW);
-        long[] p = periods.clone();
-        long[] c = computes.clone();
-        long nominal = Math.round(1e9 / rateHz);
-        // the first tick has no period; the window holds ticks 1..n-1 (periods) and 0..n-1 (computes)
+        // read from the histograms in place: no copy of the windows (a telemetry read allocates only its result)
         return new HapticTelemetry(rateHz, n, (lastNanos - startNanos) / 1e9, missed,
-                p, c, k, nominal, jitterMax, computeMax, stale, faults, clamped, watchdogTrips);
+                jitters.percentile(0.50), jitters.percentile(0.99), jitterMax,
+                computes.percentile(0.50), computes.percentile(0.99), computeMax,
+                stale, faults, clamped, watchdogTrips);
     }
 
     /** Prints the telemetry and the scheduling to standard output. */
@@ -497,7 +495,7 @@ public final class HapticLoop implements AutoCloseable {
                 if (j > jitterMax) {
                     jitterMax = j;
                 }
-                periods[(int) ((ticks - 1) & (WINDOW - 1))] = p;
+                jitters.record(j);
             }
             prevStart = start;
             if (!tick(period)) {
@@ -505,7 +503,7 @@ public final class HapticLoop implements AutoCloseable {
             }
             long end = System.nanoTime();
             long c = end - start;
-            computes[(int) (ticks & (WINDOW - 1))] = c;
+            computes.record(c);
             if (c > computeMax) {
                 computeMax = c;
             }

@@ -446,8 +446,7 @@ public final class HapticSession implements AutoCloseable {
 
     /**
      * A short line of telemetry for the screen ("1000 Hz, 0.02 % missed, jitter p99 40 us, real-time"),
-     * refreshed at most once a second (a telemetry snapshot copies the loop's window of 65,536 ticks, too
-     * much to do every frame).
+     * refreshed at most once a second, so that the figures stay readable (the string is made only then).
      */
     public String telemetryLine() {
         HapticLoop l = loop;

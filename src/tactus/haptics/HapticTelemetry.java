@@ -1,11 +1,11 @@
 package tactus.haptics;
 
-import java.util.Arrays;
 import java.util.Locale;
 
 /**
  * A snapshot of a {@link HapticLoop}'s timing and safety counters. Jitter is |period - nominal| between the
- * starts of consecutive ticks; percentiles are over the last {@link HapticLoop#WINDOW} ticks.
+ * starts of consecutive ticks; percentiles are over the last {@link HapticLoop#WINDOW} ticks, read from
+ * log-linear histograms (each percentile is the lower edge of its bucket: at most 1.6 % below the sample).
  */
 public final class HapticTelemetry {
     /** Nominal rate in Hz. */
@@ -39,40 +39,24 @@ public final class HapticTelemetry {
     /** Times the watchdog zeroed the torque because no tick ran for too long. */
     public final long watchdogTrips;
 
-    HapticTelemetry(double nominalHz, long ticks, double seconds, long missed, long[] periods, long[] computes,
-                    int n, long nominalNanos, long jitterMax, long computeMax, long stale, long faults,
+    HapticTelemetry(double nominalHz, long ticks, double seconds, long missed, long jitterP50, long jitterP99,
+                    long jitterMax, long computeP50, long computeP99, long computeMax, long stale, long faults,
                     long clamped, long watchdog) {
         this.nominalHz = nominalHz;
         this.ticks = ticks;
         this.seconds = seconds;
         this.achievedHz = seconds > 0 ? ticks / seconds : 0;
         this.missedSteps = missed;
-        long[] j = new long[n];
-        long[] c = new long[n];
-        for (int i = 0; i < n; i++) {
-            j[i] = Math.abs(periods[i] - nominalNanos);
-            c[i] = computes[i];
-        }
-        Arrays.sort(j);
-        Arrays.sort(c);
-        this.jitterP50Us = percentile(j, 0.50) / 1e3;
-        this.jitterP99Us = percentile(j, 0.99) / 1e3;
+        this.jitterP50Us = jitterP50 / 1e3;
+        this.jitterP99Us = jitterP99 / 1e3;
         this.jitterMaxUs = jitterMax / 1e3;
-        this.computeP50Us = percentile(c, 0.50) / 1e3;
-        this.computeP99Us = percentile(c, 0.99) / 1e3;
+        this.computeP50Us = computeP50 / 1e3;
+        this.computeP99Us = computeP99 / 1e3;
         this.computeMaxUs = computeMax / 1e3;
         this.staleTicks = stale;
         this.faultTicks = faults;
         this.clampedTicks = clamped;
         this.watchdogTrips = watchdog;
-    }
-
-    private static double percentile(long[] sorted, double q) {
-        if (sorted.length == 0) {
-            return 0;
-        }
-        int i = (int) Math.ceil(q * sorted.length) - 1;
-        return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
     }
 
     /** Missed steps as a fraction of ticks. */
