@@ -572,6 +572,11 @@ public class Board implements AutoCloseable {
         } finally {
             lock.unlock();
         }
+        // Started here, from the thread that sets the device up, rather than at the first torque: that write often
+        // comes from a real-time haptic thread, and a thread inherits its creator's scheduling policy on Linux.
+        if (torqueWatchdogMs > 0) {
+            startTorqueWatchdog();
+        }
     }
 
     /**

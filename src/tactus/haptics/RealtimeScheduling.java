@@ -1,20 +1,35 @@
 package tactus.haptics;
 
+import java.io.File;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
 
 /**
- * Asks Linux to run the calling thread under the real-time policy SCHED_FIFO, through the {@code chrt}
- * program of util-linux (Java has no call for it). Used once, before the first tick, by the haptic loop when
- * {@link HapticLoop#setRealtimePriority(int)} asks for it. It works where the user may raise priorities
- * (root, {@code CAP_SYS_NICE}, or an {@code rtprio} limit in {@code /etc/security/limits.conf}, as audio
- * users often have); elsewhere, and on other systems, it changes nothing and says why.
+ * Asks Linux to run threads under the real-time policy SCHED_FIFO, through the {@code chrt} program of util-linux
+ * (Java has no call for it). Used once, before the first tick, by the haptic loop when
+ * {@link HapticLoop#setRealtimePriority(int)} asks for it: for the loop thread itself, and for the JVM's threads
+ * that the loop waits for at every safepoint (the VM thread and the collector's pause workers), one step below it,
+ * so that a collection on a loaded machine is not stretched by the other programs (see docs/haptics.md, "Why the
+ * loop was late"). It works where the user may raise priorities (root, {@code CAP_SYS_NICE}, or an {@code rtprio}
+ * limit in {@code /etc/security/limits.conf}, as audio users often have); elsewhere, and on other systems, it
+ * changes nothing and says why.
  */
 final class RealtimeScheduling {
     private static final long CHRT_TIMEOUT_MS = 2000;
+    /**
+     * The JVM threads that every safepoint waits for: HotSpot's VM thread, which runs the safepoint's operation,
+     * and the workers of a stop-the-world collection (G1, Parallel and Serial name them "GC Thread#n"). The
+     * collectors' concurrent threads are left alone: they run beside the application and must not starve it.
+     */
+    static final Pattern SAFEPOINT_THREADS = Pattern.compile("VM Thread|GC Thread#\\d+");
 
     private RealtimeScheduling() {
     }
@@ -26,18 +41,73 @@ final class RealtimeScheduling {
      * @return null if it worked, otherwise why not (one short sentence)
      */
     static String applyToCurrentThread(int priority) {
-        Path self = Paths.get("/proc/thread-self");
-        if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")
-                || !Files.exists(self)) {
-            return "real-time scheduling is only requested on Linux";
+        String why = linuxOnly();
+        if (why != null) {
+            return why;
         }
         String tid;
         try {
-            tid = Files.readSymbolicLink(self).getFileName().toString();
+            tid = Files.readSymbolicLink(Paths.get("/proc/thread-self")).getFileName().toString();
         } catch (IOException | UnsupportedOperationException e) {
             return "cannot find the thread id (" + e.getMessage() + ")";
         }
-        ProcessBuilder pb = new ProcessBuilder("chrt", "-f", "-p", Integer.toString(priority), tid);
+        return chrt(priority, List.of(tid));
+    }
+
+    /**
+     * Moves the JVM threads that every safepoint waits for ({@link #SAFEPOINT_THREADS}) to SCHED_FIFO at the
+     * given priority. Workers the collector starts later are started by the VM thread and inherit its policy.
+     *
+     * @param priority 1..99
+     * @return null if it worked, otherwise why not (one short sentence)
+     */
+    static String applyToSafepointThreads(int priority) {
+        String why = linuxOnly();
+        if (why != null) {
+            return why;
+        }
+        List<String> tids = threadsNamed(SAFEPOINT_THREADS);
+        if (tids.isEmpty()) {
+            return "no VM or collector thread found in /proc/self/task";
+        }
+        return chrt(priority, tids);
+    }
+
+    /** The ids of this process's threads whose name (as Linux keeps it, 15 characters) matches. */
+    static List<String> threadsNamed(Pattern name) {
+        List<String> tids = new ArrayList<>();
+        File[] tasks = new File("/proc/self/task").listFiles();
+        for (File t : tasks == null ? new File[0] : tasks) {
+            try {
+                String comm = new String(Files.readAllBytes(new File(t, "comm").toPath()), StandardCharsets.UTF_8)
+                        .trim();
+                if (name.matcher(comm).matches()) {
+                    tids.add(t.getName());
+                }
+            } catch (IOException e) {
+                // the thread ended meanwhile
+            }
+        }
+        return tids;
+    }
+
+    private static String linuxOnly() {
+        if (!System.getProperty("os.name", "").toLowerCase(Locale.ROOT).contains("linux")
+                || !Files.exists(Paths.get("/proc/thread-self"))) {
+            return "real-time scheduling is only requested on Linux";
+        }
+        return null;
+    }
+
+    /** Runs {@code chrt -f -p priority tid} for each thread, all in one shell; null if every one worked. */
+    private static String chrt(int priority, List<String> tids) {
+        StringBuilder script = new StringBuilder();
+        for (String tid : tids) {
+            script.append(script.length() == 0 ? "" : " && ").append("chrt -f -p ").append(priority).append(' ')
+                    .append(tid);
+        }
+        ProcessBuilder pb = tids.size() == 1 ? new ProcessBuilder("chrt", "-f", "-p", Integer.toString(priority),
+                tids.get(0)) : new ProcessBuilder("sh", "-c", script.toString());
         pb.redirectErrorStream(true);
         pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
         try {
@@ -55,5 +125,13 @@ final class RealtimeScheduling {
             Thread.currentThread().interrupt();
             return "interrupted while asking for real-time scheduling";
         }
+    }
+
+    /** The scheduling policy of a thread of this process, as {@code /proc} gives it (0 normal, 1 FIFO, 2 RR). */
+    static int policyOf(String tid) throws IOException {
+        Path stat = Paths.get("/proc/self/task", tid, "stat");
+        String s = new String(Files.readAllBytes(stat), StandardCharsets.UTF_8);
+        String[] f = s.substring(s.lastIndexOf(')') + 2).split(" ");
+        return Integer.parseInt(f[38]);
     }
 }

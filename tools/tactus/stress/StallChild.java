@@ -1,0 +1,178 @@
+package tactus.stress;
+
+import java.util.Locale;
+import java.util.concurrent.locks.LockSupport;
+import tactus.PhysicalModel;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticSession;
+import tactus.haptics.PhysicalModelAvatar;
+
+/**
+ * One run of {@link HapticStallStress}, in a JVM of its own: an emulated Haply session as a sketch opens it
+ * (real-time request, 1 kHz, haptics-only, a free avatar), optionally beside a thread that makes garbage at a set
+ * rate (as a busy {@code draw()} does) and a thread that reads the loop's telemetry every few milliseconds. It
+ * records the start of every tick and the collector's pauses, and prints one line:
+ *
+ * <pre>RESULT ticks=N worstLateMs=X over20=N gcPauses=N gcMaxMs=X lateMs=X lateInGcMs=X lateInSafepointsMs=X
+ *        failure=... sched=...</pre>
+ *
+ * where a tick's lateness is its start minus its deadline (start of the first tick + k periods), the sum of
+ * lateness above one period is {@code lateMs}, and {@code lateInGcMs} and {@code lateInSafepointsMs} are the parts
+ * of it that fall inside a collector's safepoint and inside any safepoint, read from the JVM's own safepoint log
+ * ({@code -Xlog:safepoint:file=F:timenanos}, whose time stamps are {@code System.nanoTime()}). Arguments:
+ * seconds, garbage MB/s, telemetry read period in ms (0: none), the safepoint log's path (optional).
+ */
+public final class StallChild {
+    private static volatile Object sink;
+    /** With -Dtactus.stress.verbose=true, every tick more than 2 ms late is printed with its time. */
+    private static final boolean VERBOSE = Boolean.getBoolean("tactus.stress.verbose");
+
+    private StallChild() {
+    }
+
+    /** Records the start of each tick: the loop calls {@code setTarget} once per tick, first thing after the read. */
+    private static final class TimedAvatar implements AvatarLink {
+        private final AvatarLink inner;
+        final long[] starts;
+        volatile int n;
+
+        TimedAvatar(AvatarLink inner, int capacity) {
+            this.inner = inner;
+            this.starts = new long[capacity];
+        }
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            int i = n;
+            if (i < starts.length) {
+                starts[i] = System.nanoTime();
+                n = i + 1;
+            }
+            inner.setTarget(x, y, z);
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            inner.takeForce(out);
+        }
+
+        @Override
+        public long takeForceCounted(double[] out) {
+            return inner.takeForceCounted(out);
+        }
+
+        @Override
+        public void step(int steps) {
+            inner.step(steps);
+        }
+    }
+
+    /**
+     * Runs one session and prints its RESULT line.
+     *
+     * @param args seconds, garbage MB/s, telemetry read period in ms
+     * @throws Exception if the session cannot be opened
+     */
+    public static void main(String[] args) throws Exception {
+        double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 2;
+        long garbageMBs = args.length > 1 ? Long.parseLong(args[1]) : 0;
+        int telemetryMs = args.length > 2 ? Integer.parseInt(args[2]) : 0;
+        String safepointLog = args.length > 3 ? args[3] : null;
+        PhysicalModel pm = new PhysicalModel(1000);
+        HapticSession session = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018);
+        pm.addHapticInput3D("avatar", session.home(), 5);
+        pm.init();
+        TimedAvatar avatar = new TimedAvatar(new PhysicalModelAvatar(pm, "avatar"),
+                (int) (seconds * 1000 * 1.5) + 1000);
+        HapticLoop loop = session.attach(avatar);
+        String raise = System.getProperty("tactus.stress.raiseJvm");
+        if (raise != null) {
+            for (java.io.File t : new java.io.File("/proc/self/task").listFiles()) {
+                String comm = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "comm").toPath())).trim();
+                if (comm.matches(raise)) {
+                    new ProcessBuilder("chrt", "-f", "-p", "40", t.getName()).inheritIO().start().waitFor();
+                }
+            }
+        }
+        loop.start();
+        if (garbageMBs > 0) {
+            startDaemon("garbage", () -> {
+                long perMs = garbageMBs * 1000;
+                while (true) {
+                    for (long b = 0; b < perMs; b += 1024) {
+                        sink = new byte[1024];
+                    }
+                    LockSupport.parkNanos(1_000_000);
+                }
+            });
+        }
+        if (telemetryMs > 0) {
+            startDaemon("telemetry-reader", () -> {
+                while (true) {
+                    sink = loop.telemetry();
+                    LockSupport.parkNanos(telemetryMs * 1_000_000L);
+                }
+            });
+        }
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (System.nanoTime() < end && loop.isRunning()) {
+            Thread.sleep(10);
+        }
+        long stoppedAt = System.nanoTime();
+        int n = avatar.n;
+        loop.stop();
+        long period = 1_000_000L;
+        double worst = 0;
+        double lateSum = 0;
+        double lateInGc = 0;
+        double lateInSafepoints = 0;
+        int over20 = 0;
+        Pauses pauses = Pauses.read(safepointLog);
+        // lateness against the loop's own schedule: each tick is due one period after the previous one's
+        // deadline, and a tick later than a period restarts the schedule (as HapticLoop does)
+        long due = n > 0 ? avatar.starts[0] : 0;
+        for (int i = 1; i < n; i++) {
+            due += period;
+            long late = avatar.starts[i] - due;
+            if (late > period) {
+                due = avatar.starts[i];
+            }
+            double lateMs = late / 1e6;
+            if (VERBOSE && lateMs > 2) {
+                System.out.printf(Locale.ROOT, "late tick %d: %.3f ms (due %d, started %d), %.3f ms of it in safepoints%n", i, lateMs, avatar.starts[i] - late, avatar.starts[i],
+                        pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false));
+            }
+            worst = Math.max(worst, lateMs);
+            if (lateMs > 20) {
+                over20++;
+            }
+            if (late > period) {
+                lateSum += lateMs;
+                lateInGc += pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], true);
+                lateInSafepoints += pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false);
+            }
+        }
+        if (n > 0) {
+            // a loop that stopped ticking before the end: the tick it owes is late by the time since it was due
+            worst = Math.max(worst, (stoppedAt - avatar.starts[n - 1] - period) / 1e6);
+            if ((stoppedAt - avatar.starts[n - 1] - period) / 1e6 > 20) {
+                over20++;
+            }
+        }
+        System.out.printf(Locale.ROOT, "RESULT ticks=%d worstLateMs=%.3f over20=%d gcPauses=%d gcMaxMs=%.0f "
+                        + "lateMs=%.3f lateInGcMs=%.3f lateInSafepointsMs=%.3f failure=%s sched=%s%n", n, worst, over20,
+                pauses.gcCount(), pauses.gcMaxMs(), lateSum, lateInGc, lateInSafepoints, loop.failure(),
+                loop.scheduling());
+        System.out.flush();
+        session.close();
+        Runtime.getRuntime().halt(0);
+    }
+
+    private static void startDaemon(String name, Runnable body) {
+        Thread t = new Thread(body, name);
+        t.setDaemon(true);
+        t.start();
+    }
+}
