@@ -11,7 +11,9 @@ import tactus.haptics.PhysicalModelAvatar;
 
 /**
  * One run of {@link HapticStallStress}, in a JVM of its own: an emulated Haply session as a sketch opens it
- * (real-time request, 1 kHz, haptics-only, a free avatar), optionally beside a thread that makes garbage at a set
+ * (real-time request, 1 kHz, haptics-only, a free avatar), with a thread that reads the avatar's position every 2 ms
+ * and moves the emulated hand every half second (as HapticSessionTest, where the stall was seen, and a sketch's
+ * {@code draw()} do), optionally beside a thread that makes garbage at a set
  * rate (as a busy {@code draw()} does) and a thread that reads the loop's telemetry every few milliseconds. It
  * records the start of every tick and the collector's pauses, and prints one line:
  *
@@ -97,6 +99,20 @@ public final class StallChild {
             }
         }
         loop.start();
+        // the sketch's side, as HapticSessionTest (where the stall was seen) and a draw() do it: move the hand
+        // towards a pixel now and then, and read the avatar's position every 2 ms
+        startDaemon("reader", () -> {
+            double[] ws = new double[4];
+            session.workspace(ws);
+            for (int k = 0; ; k++) {
+                if (k % 250 == 0) {
+                    double u = (k / 250) % 2 == 0 ? 0.3 : 0.7;
+                    session.handTowardsPixel(ws[0] + u * (ws[1] - ws[0]), ws[2] + u * (ws[3] - ws[2]));
+                }
+                sink = pm.getMatPosition("avatar");
+                LockSupport.parkNanos(2_000_000L);
+            }
+        });
         if (garbageMBs > 0) {
             startDaemon("garbage", () -> {
                 long perMs = garbageMBs * 1000;
