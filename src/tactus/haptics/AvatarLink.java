@@ -38,4 +38,19 @@ public interface AvatarLink {
 
     /** Advances the model by n steps (haptics-only mode; in audio mode the audio thread steps it). */
     void step(int n);
+
+    /**
+     * Called by {@link HapticLoop#start()} in {@link HapticLoop.Mode#HAPTICS_ONLY}, on the thread that starts the
+     * loop, before the loop thread runs: the link may hand its model to the loop thread as the one thread that
+     * steps it, so that a tick never waits for a lock that a slower thread holds. Default: nothing.
+     */
+    default void beginStepping() {
+    }
+
+    /**
+     * Called by {@link HapticLoop#stop()} after the loop thread has ended (haptics-only mode), on the thread that
+     * stops the loop: undoes {@link #beginStepping()}. Default: nothing.
+     */
+    default void endStepping() {
+    }
 }

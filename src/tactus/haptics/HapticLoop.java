@@ -67,6 +67,8 @@ public final class HapticLoop implements AutoCloseable {
     private boolean decoupleInAudioMode = true;
     private volatile String scheduling = "not started";
     private AvatarLink active;
+    /** The link whose beginStepping() the last start() called, until stop() ends it. */
+    private volatile AvatarLink stepping;
     private DecoupledAvatar ownDecoupler;
 
     private volatile boolean running;
@@ -330,6 +332,10 @@ public final class HapticLoop implements AutoCloseable {
         } else {
             active = avatar;
         }
+        if (mode == Mode.HAPTICS_ONLY) {
+            active.beginStepping();
+            stepping = active;
+        }
         running = true;
         warmingUp = true;
         Thread t = new Thread(this::run, "tactus-haptic-loop");
@@ -360,6 +366,11 @@ public final class HapticLoop implements AutoCloseable {
             w.interrupt();
         }
         device.board().zeroTorques();
+        AvatarLink st = stepping;
+        if (st != null && (t == null || !t.isAlive())) {
+            stepping = null;
+            st.endStepping();
+        }
         DecoupledAvatar d = ownDecoupler;
         if (d != null) {
             d.close();

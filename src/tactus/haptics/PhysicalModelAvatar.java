@@ -13,6 +13,8 @@ public final class PhysicalModelAvatar implements AvatarLink {
     private final String avatar;
     private final Vect3D target = new Vect3D();
     private final Vect3D force = new Vect3D();
+    /** True while this link has put the model in realtime stepping for the haptic loop thread. */
+    private volatile boolean stepsInRealtime;
 
     /** Links to the avatar (a HapticInput3D) of this name in the model. */
     public PhysicalModelAvatar(PhysicalModel model, String avatar) {
@@ -54,6 +56,34 @@ public final class PhysicalModelAvatar implements AvatarLink {
 
     @Override
     public void step(int n) {
+        if (stepsInRealtime) {
+            model.takeRealtimeStepping();   // one volatile read once the loop thread holds the role
+        }
         model.computeNSteps(n);
+    }
+
+    /**
+     * Puts the model in realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}) with the haptic loop
+     * thread as its stepping thread, unless it is already stepped in realtime by someone else (then the loop steps
+     * it as before). The loop thread then never takes the model's lock: a {@code draw()} or another thread that
+     * reads or changes the model while the machine is loaded can no longer hold a tick up (a reader preempted
+     * while it held the lock delayed ticks by up to 498 ms under load; see docs/haptics.md). Other threads' changes
+     * are queued and applied by the loop thread between two steps, as for a PhyUGen.
+     */
+    @Override
+    public void beginStepping() {
+        if (!model.isRealtimeStepping()) {
+            model.beginRealtimeStepping();
+            stepsInRealtime = true;
+        }
+    }
+
+    /** Returns the model to the locked mode if {@link #beginStepping()} put it in realtime stepping. */
+    @Override
+    public void endStepping() {
+        if (stepsInRealtime) {
+            stepsInRealtime = false;
+            model.endRealtimeStepping();
+        }
     }
 }

@@ -38,11 +38,13 @@ public final class StallChild {
     private static final class TimedAvatar implements AvatarLink {
         private final AvatarLink inner;
         final long[] starts;
+        final long[] modelDone;
         volatile int n;
 
         TimedAvatar(AvatarLink inner, int capacity) {
             this.inner = inner;
             this.starts = new long[capacity];
+            this.modelDone = new long[capacity];
         }
 
         @Override
@@ -62,7 +64,12 @@ public final class StallChild {
 
         @Override
         public long takeForceCounted(double[] out) {
-            return inner.takeForceCounted(out);
+            long steps = inner.takeForceCounted(out);
+            int i = n - 1;
+            if (i >= 0 && i < modelDone.length) {
+                modelDone[i] = System.nanoTime();
+            }
+            return steps;
         }
 
         @Override
@@ -102,6 +109,9 @@ public final class StallChild {
         // the sketch's side, as HapticSessionTest (where the stall was seen) and a draw() do it: move the hand
         // towards a pixel now and then, and read the avatar's position every 2 ms
         startDaemon("reader", () -> {
+            if ("false".equals(System.getProperty("tactus.stress.reader"))) {
+                return;
+            }
             double[] ws = new double[4];
             session.workspace(ws);
             for (int k = 0; ; k++) {
@@ -157,7 +167,7 @@ public final class StallChild {
             }
             double lateMs = late / 1e6;
             if (VERBOSE && lateMs > 2) {
-                System.out.printf(Locale.ROOT, "late tick %d: %.3f ms (due %d, started %d), %.3f ms of it in safepoints%n", i, lateMs, avatar.starts[i] - late, avatar.starts[i],
+                System.out.printf(Locale.ROOT, "late tick %d: %.3f ms, the tick before spent %.3f ms in the model, %.3f ms of it in safepoints%n", i, lateMs, (avatar.modelDone[i - 1] - avatar.starts[i - 1]) / 1e6,
                         pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false));
             }
             worst = Math.max(worst, lateMs);
