@@ -34,6 +34,9 @@ import java.util.concurrent.locks.LockSupport;
 public final class HapticLoop implements AutoCloseable {
     /** Number of recent ticks kept for the percentiles. */
     public static final int WINDOW = 1 << 16;
+    /** The threads that zero the motors when the loop stalls: this loop's watchdog and the boards' torque watchdogs. */
+    static final java.util.regex.Pattern SAFETY_THREADS = java.util.regex.Pattern.compile(
+            "tactus-haptic-w|tactus-haply-to");
 
     /** Who steps the model. */
     public enum Mode {
@@ -488,6 +491,10 @@ public final class HapticLoop implements AutoCloseable {
             // real-time thread inherits its policy, and chrt's process reaper thread may be started here.
             String safepoints = realtimeSafepointThreads
                     ? RealtimeScheduling.applyToSafepointThreads(Math.max(1, realtimePriority - 1)) : "off";
+            // The safety threads too, at the loop's own priority: the loop's watchdog, and the board's torque
+            // watchdog, which take the board's lock to zero the motors; at normal priority, preempted while they
+            // hold it, they held the loop up for tens of milliseconds on a loaded machine.
+            RealtimeScheduling.applyToThreadsNamed(SAFETY_THREADS, realtimePriority);
             String why = RealtimeScheduling.applyToCurrentThread(realtimePriority);
             scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (safepoints == null
                     ? "; VM and GC threads at " + Math.max(1, realtimePriority - 1) : "") + ")"

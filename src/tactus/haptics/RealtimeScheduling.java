@@ -73,6 +73,23 @@ final class RealtimeScheduling {
         return chrt(priority, tids);
     }
 
+    /**
+     * Moves every thread of this process whose name (as Linux keeps it, 15 characters) matches to SCHED_FIFO at the
+     * given priority.
+     *
+     * @param name the pattern
+     * @param priority 1..99
+     * @return null if it worked (or no thread matched), otherwise why not (one short sentence)
+     */
+    static String applyToThreadsNamed(Pattern name, int priority) {
+        String why = linuxOnly();
+        if (why != null) {
+            return why;
+        }
+        List<String> tids = threadsNamed(name);
+        return tids.isEmpty() ? null : chrt(priority, tids);
+    }
+
     /** The ids of this process's threads whose name (as Linux keeps it, 15 characters) matches. */
     static List<String> threadsNamed(Pattern name) {
         List<String> tids = new ArrayList<>();

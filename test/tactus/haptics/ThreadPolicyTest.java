@@ -18,8 +18,9 @@ import tactus.Vect3D;
  * On Linux a thread inherits its creator's scheduling policy, so every thread that the real-time haptic loop thread
  * starts would run at real-time priority too. While a session's loop runs (a spring pulls the avatar, so the
  * motors get torque and the board's torque watchdog is busy), every thread of this JVM is listed with its policy:
- * only the loop thread may be SCHED_FIFO at the session's priority, and the VM and collector pause threads one
- * below it; every other thread must be at normal priority. (Before the board's torque watchdog was started at the
+ * only the loop thread and the threads that zero the motors when it stalls (its watchdog, the board's torque
+ * watchdog) may be SCHED_FIFO at the session's priority, and the VM and collector pause threads one below it;
+ * every other thread must be at normal priority. (Before the board's torque watchdog was started at the
  * device's setup, the loop thread started it at the first torque, and it ran at SCHED_FIFO 50.)
  */
 class ThreadPolicyTest {
@@ -55,6 +56,8 @@ class ThreadPolicyTest {
             if (realtime && name.equals("tactus-haptic-l")) {
                 expected = new int[] {1, priority};
                 loopThreads++;
+            } else if (realtime && HapticLoop.SAFETY_THREADS.matcher(name).matches()) {
+                expected = new int[] {1, priority};
             } else if (realtime && loop.scheduling().contains("VM and GC threads")
                     && RealtimeScheduling.SAFEPOINT_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, priority - 1};

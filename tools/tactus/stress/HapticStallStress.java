@@ -190,6 +190,9 @@ public final class HapticStallStress {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(),
                     StandardCharsets.UTF_8))) {
                 for (String s; (s = r.readLine()) != null; ) {
+                    if (s.startsWith("late tick") || s.startsWith("stalled tick") || s.startsWith("stall-")) {
+                        System.out.println("  " + s);     // -Dtactus.stress.verbose=true in --jvm
+                    }
                     if (last[0] == null || !last[0].startsWith("RESULT")) {
                         last[0] = s;
                     }

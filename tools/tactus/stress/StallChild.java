@@ -76,6 +76,16 @@ public final class StallChild {
         public void step(int steps) {
             inner.step(steps);
         }
+
+        @Override
+        public void beginStepping() {
+            inner.beginStepping();
+        }
+
+        @Override
+        public void endStepping() {
+            inner.endStepping();
+        }
     }
 
     /**
@@ -106,6 +116,9 @@ public final class StallChild {
             }
         }
         loop.start();
+        if (VERBOSE) {
+            startDiagnoser(loop, avatar);
+        }
         // the sketch's side, as HapticSessionTest (where the stall was seen) and a draw() do it: move the hand
         // towards a pixel now and then, and read the avatar's position every 2 ms
         startDaemon("reader", () -> {
@@ -167,7 +180,8 @@ public final class StallChild {
             }
             double lateMs = late / 1e6;
             if (VERBOSE && lateMs > 2) {
-                System.out.printf(Locale.ROOT, "late tick %d: %.3f ms, the tick before spent %.3f ms in the model, %.3f ms of it in safepoints%n", i, lateMs, (avatar.modelDone[i - 1] - avatar.starts[i - 1]) / 1e6,
+                System.out.printf(Locale.ROOT, "late tick %d at %.3f: %.3f ms, the tick before spent %.3f ms in the model, %.3f ms of it in safepoints%n", i,
+                        (System.currentTimeMillis() - (System.nanoTime() - avatar.starts[i]) / 1_000_000L) / 1e3, lateMs, (avatar.modelDone[i - 1] - avatar.starts[i - 1]) / 1e6,
                         pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false));
             }
             worst = Math.max(worst, lateMs);
@@ -183,6 +197,11 @@ public final class StallChild {
         if (n > 0) {
             // a loop that stopped ticking before the end: the tick it owes is late by the time since it was due
             worst = Math.max(worst, (stoppedAt - avatar.starts[n - 1] - period) / 1e6);
+            if (VERBOSE && (stoppedAt - avatar.starts[n - 1] - period) / 1e6 > 2) {
+                System.out.printf(Locale.ROOT, "late tick %d (owed at the end): %.3f ms, %.3f ms of it in safepoints%n",
+                        n, (stoppedAt - avatar.starts[n - 1] - period) / 1e6,
+                        pauses.overlapMs(avatar.starts[n - 1] + period, stoppedAt, false));
+            }
             if ((stoppedAt - avatar.starts[n - 1] - period) / 1e6 > 20) {
                 over20++;
             }
@@ -194,6 +213,75 @@ public final class StallChild {
         System.out.flush();
         session.close();
         Runtime.getRuntime().halt(0);
+    }
+
+    /**
+     * Verbose runs only: a thread at a real-time priority above the loop's that looks every millisecond, and when
+     * no tick has started for 8 ms, prints where the loop thread is (its Java stack and what Linux says of it).
+     */
+    private static void startDiagnoser(HapticLoop loop, TimedAvatar avatar) {
+        startDaemon("stall-diagnoser", () -> {
+            try {
+                String me = java.nio.file.Files.readSymbolicLink(java.nio.file.Paths.get("/proc/thread-self"))
+                        .getFileName().toString();
+                new ProcessBuilder("chrt", "-f", "-p", "60", me).start().waitFor();
+                Thread loopThread = null;
+                while (loopThread == null) {
+                    for (Thread t : Thread.getAllStackTraces().keySet()) {
+                        if (t.getName().equals("tactus-haptic-loop")) {
+                            loopThread = t;
+                        }
+                    }
+                    LockSupport.parkNanos(1_000_000);
+                }
+                int lastN = avatar.n;
+                long lastChange = System.nanoTime();
+                boolean reported = false;
+                while (true) {
+                    LockSupport.parkNanos(1_000_000);
+                    int n = avatar.n;
+                    long now = System.nanoTime();
+                    if (n != lastN) {
+                        lastN = n;
+                        lastChange = now;
+                        reported = false;
+                    } else if (!reported && now - lastChange > 8_000_000L) {
+                        reported = true;
+                        StringBuilder b = new StringBuilder("stalled tick " + n + ": " + linuxState() + " | java:");
+                        for (StackTraceElement e : loopThread.getStackTrace()) {
+                            b.append(" <- ").append(e);
+                            if (b.length() > 1500) {
+                                break;
+                            }
+                        }
+                        b.append(" | after ").append((System.nanoTime() - lastChange) / 1_000_000).append(" ms");
+                        System.out.println(b);
+                    }
+                }
+            } catch (Exception e) {
+                System.out.println("stall-diagnoser: " + e);
+            }
+        });
+    }
+
+    private static String linuxState() {
+        StringBuilder b = new StringBuilder();
+        java.io.File[] tasks = new java.io.File("/proc/self/task").listFiles();
+        for (java.io.File t : tasks == null ? new java.io.File[0] : tasks) {
+            try {
+                String comm = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "comm").toPath())).trim();
+                String stat = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "stat").toPath()));
+                String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+                if (comm.startsWith("tactus-haptic-l") || f[0].equals("R") || f[0].equals("D")) {
+                    b.append(comm).append(' ').append(f[0]).append(" cpu").append(f[36]).append(" wchan ")
+                            .append(new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "wchan")
+                                    .toPath())).trim()).append("; ");
+                }
+            } catch (Exception e) {
+                // gone
+            }
+        }
+        return b.toString();
     }
 
     private static void startDaemon(String name, Runnable body) {
