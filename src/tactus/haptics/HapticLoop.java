@@ -66,7 +66,7 @@ public final class HapticLoop implements AutoCloseable {
     private int linkTimeoutMillis = 500;
     private int spinMicros = 60;
     private int realtimePriority;
-    private boolean realtimeSafepointThreads = true;
+    private boolean realtimeJvmThreads = true;
     private boolean decoupleInAudioMode = true;
     private volatile String scheduling = "not started";
     private AvatarLink active;
@@ -283,16 +283,19 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * With real-time scheduling ({@link #setRealtimePriority(int)}), also moves the JVM threads that every
-     * safepoint waits for (the VM thread and the collector's pause workers) to SCHED_FIFO one priority below the
-     * loop (true, the default), or leaves them at normal priority (false). Every collection stops the loop thread
-     * for its whole pause; on a loaded machine those threads at normal priority share the cores with every other
-     * program, and a 3 ms pause was measured to last up to 257 ms. At real-time priority the same pauses last
-     * about 2 ms. The collector's concurrent threads are never moved. Configure before {@link #start()}.
+     * With real-time scheduling ({@link #setRealtimePriority(int)}), also moves the JVM's own threads that a Java
+     * thread can end up waiting for to SCHED_FIFO (true, the default): the VM thread and the collector's pause
+     * workers one priority below the loop, the JIT compiler threads at priority 1 (below any other real-time
+     * program, such as a sound server). Or leaves them at normal priority (false). Every collection stops the loop
+     * for its whole pause, and the loop's code takes locks that the compilers hold while they work; at normal
+     * priority, on a loaded machine, these threads share the cores with every other program: collections of 3 ms
+     * were measured to last up to 257 ms, and ticks waited up to 126 ms for a compiler. The cost: a collection or a
+     * burst of compilation (mostly in the first seconds) now runs ahead of the machine's other programs. The
+     * collector's concurrent threads are never moved. Configure before {@link #start()}.
      */
-    public void setRealtimeSafepointThreads(boolean on) {
-        beforeStart("setRealtimeSafepointThreads");
-        realtimeSafepointThreads = on;
+    public void setRealtimeJvmThreads(boolean on) {
+        beforeStart("setRealtimeJvmThreads");
+        realtimeJvmThreads = on;
     }
 
     /**
@@ -308,7 +311,7 @@ public final class HapticLoop implements AutoCloseable {
 
     /**
      * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_FIFO n)" (with "; VM
-     * and GC threads at n-1" when those were moved too), or
+     * and GC threads at n-1, JIT compilers at 1" when those were moved too), or
      * "normal priority (real-time refused: why)".
      */
     public String scheduling() {
@@ -489,15 +492,18 @@ public final class HapticLoop implements AutoCloseable {
         if (realtimePriority > 0) {
             // The safepoint threads first, while this thread is still at normal priority: a thread started from a
             // real-time thread inherits its policy, and chrt's process reaper thread may be started here.
-            String safepoints = realtimeSafepointThreads
-                    ? RealtimeScheduling.applyToSafepointThreads(Math.max(1, realtimePriority - 1)) : "off";
+            int below = Math.max(1, realtimePriority - 1);
+            String jvm = realtimeJvmThreads ? RealtimeScheduling.applyToSafepointThreads(below) : "off";
+            if (jvm == null) {
+                jvm = RealtimeScheduling.applyToThreadsNamed(RealtimeScheduling.COMPILER_THREADS, 1);
+            }
             // The safety threads too, at the loop's own priority: the loop's watchdog, and the board's torque
             // watchdog, which take the board's lock to zero the motors; at normal priority, preempted while they
             // hold it, they held the loop up for tens of milliseconds on a loaded machine.
             RealtimeScheduling.applyToThreadsNamed(SAFETY_THREADS, realtimePriority);
             String why = RealtimeScheduling.applyToCurrentThread(realtimePriority);
-            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (safepoints == null
-                    ? "; VM and GC threads at " + Math.max(1, realtimePriority - 1) : "") + ")"
+            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (jvm == null
+                    ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "") + ")"
                     : "normal priority (real-time refused: " + why + ")";
         } else {
             scheduling = "normal priority";

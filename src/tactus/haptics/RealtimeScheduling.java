@@ -15,10 +15,10 @@ import java.util.regex.Pattern;
 /**
  * Asks Linux to run threads under the real-time policy SCHED_FIFO, through the {@code chrt} program of util-linux
  * (Java has no call for it). Used once, before the first tick, by the haptic loop when
- * {@link HapticLoop#setRealtimePriority(int)} asks for it: for the loop thread itself, and for the JVM's threads
- * that the loop waits for at every safepoint (the VM thread and the collector's pause workers), one step below it,
- * so that a collection on a loaded machine is not stretched by the other programs (see docs/haptics.md, "Why the
- * loop was late"). It works where the user may raise priorities (root, {@code CAP_SYS_NICE}, or an {@code rtprio}
+ * {@link HapticLoop#setRealtimePriority(int)} asks for it: for the loop thread itself, its safety threads, and the
+ * JVM's threads that a Java thread can end up waiting for (the VM thread and the collector's pause workers one step
+ * below the loop, the JIT compilers at the lowest real-time priority), so that another program loading the machine
+ * cannot hold them, and through them the loop, up (see docs/haptics.md, "Why the loop was late"). It works where the user may raise priorities (root, {@code CAP_SYS_NICE}, or an {@code rtprio}
  * limit in {@code /etc/security/limits.conf}, as audio users often have); elsewhere, and on other systems, it
  * changes nothing and says why.
  */
@@ -30,6 +30,13 @@ final class RealtimeScheduling {
      * collectors' concurrent threads are left alone: they run beside the application and must not starve it.
      */
     static final Pattern SAFEPOINT_THREADS = Pattern.compile("VM Thread|GC Thread#\\d+");
+    /**
+     * HotSpot's JIT compiler threads ("C1 CompilerThread0", "C2 CompilerThread0", ... as Linux keeps their names,
+     * cut to 15 characters). A thread that runs code the JIT is about to compile, or whose counters ask for a
+     * compilation, takes locks that these threads hold while they work; at normal priority on a loaded machine they
+     * were preempted holding them and held a real-time tick up by up to 126 ms.
+     */
+    static final Pattern COMPILER_THREADS = Pattern.compile("C[12] CompilerThre");
 
     private RealtimeScheduling() {
     }

@@ -584,7 +584,7 @@ class HapticLoopTest {
             loop.start();
             awaitTicks(loop, 50);
             String s = loop.scheduling();
-            assertTrue(s.equals("real-time (SCHED_FIFO 10; VM and GC threads at 9)")
+            assertTrue(s.equals("real-time (SCHED_FIFO 10; VM and GC threads at 9, JIT compilers at 1)")
                     || s.startsWith("normal priority (real-time refused: "), s);
             assertThrows(IllegalStateException.class, () -> loop.setRealtimePriority(0));
             loop.close();

@@ -19,8 +19,8 @@ import tactus.Vect3D;
  * starts would run at real-time priority too. While a session's loop runs (a spring pulls the avatar, so the
  * motors get torque and the board's torque watchdog is busy), every thread of this JVM is listed with its policy:
  * only the loop thread and the threads that zero the motors when it stalls (its watchdog, the board's torque
- * watchdog) may be SCHED_FIFO at the session's priority, and the VM and collector pause threads one below it;
- * every other thread must be at normal priority. (Before the board's torque watchdog was started at the
+ * watchdog) may be SCHED_FIFO at the session's priority, the VM and collector pause threads one below it, and the
+ * JIT compiler threads at 1; every other thread must be at normal priority. (Before the board's torque watchdog was started at the
  * device's setup, the loop thread started it at the first torque, and it ran at SCHED_FIFO 50.)
  */
 class ThreadPolicyTest {
@@ -41,6 +41,7 @@ class ThreadPolicyTest {
         List<String> wrong = new ArrayList<>();
         int loopThreads = 0;
         int safepointThreads = 0;
+        int compilerThreads = 0;
         File[] tasks = new File("/proc/self/task").listFiles();
         assertTrue(tasks != null && tasks.length > 5, "the threads of this JVM are listed in /proc/self/task");
         for (File t : tasks) {
@@ -62,6 +63,10 @@ class ThreadPolicyTest {
                     && RealtimeScheduling.SAFEPOINT_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, priority - 1};
                 safepointThreads++;
+            } else if (realtime && loop.scheduling().contains("JIT compilers at 1")
+                    && RealtimeScheduling.COMPILER_THREADS.matcher(name).matches()) {
+                expected = new int[] {1, 1};
+                compilerThreads++;
             }
             if (p[0] != expected[0] || p[1] != expected[1]) {
                 wrong.add(name + " (tid " + t.getName() + ") policy " + p[0] + " priority " + p[1] + ", expected "
@@ -72,6 +77,7 @@ class ThreadPolicyTest {
         if (realtime) {
             assertEquals(1, loopThreads, "one real-time loop thread");
             assertTrue(safepointThreads >= 2, "the VM thread and at least one collector thread: " + safepointThreads);
+            assertTrue(compilerThreads >= 1, "at least one JIT compiler thread: " + compilerThreads);
         }
     }
 

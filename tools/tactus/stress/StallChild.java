@@ -111,7 +111,11 @@ public final class StallChild {
             for (java.io.File t : new java.io.File("/proc/self/task").listFiles()) {
                 String comm = new String(java.nio.file.Files.readAllBytes(new java.io.File(t, "comm").toPath())).trim();
                 if (comm.matches(raise)) {
-                    new ProcessBuilder("chrt", "-f", "-p", "40", t.getName()).inheritIO().start().waitFor();
+                    if (Boolean.getBoolean("tactus.stress.nice")) {
+                        new ProcessBuilder("renice", "-n", "-20", "-p", t.getName()).start().waitFor();
+                    } else {
+                        new ProcessBuilder("chrt", "-f", "-p", "40", t.getName()).inheritIO().start().waitFor();
+                    }
                 }
             }
         }
