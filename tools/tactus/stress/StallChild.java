@@ -24,7 +24,9 @@ import tactus.haptics.PhysicalModelAvatar;
  * lateness above one period is {@code lateMs}, and {@code lateInGcMs} and {@code lateInSafepointsMs} are the parts
  * of it that fall inside a collector's safepoint and inside any safepoint, read from the JVM's own safepoint log
  * ({@code -Xlog:safepoint:file=F:timenanos}, whose time stamps are {@code System.nanoTime()}). Arguments:
- * seconds, garbage MB/s, telemetry read period in ms (0: none), the safepoint log's path (optional).
+ * seconds, garbage MB/s, telemetry read period in ms (0: none), the safepoint log's path (optional). With
+ * {@code -Dtactus.stress.audio=true} the model is the paper's plucked string stepped by a {@code PhyUGen} at
+ * 44.1 kHz and the loop runs in AUDIO mode, as in the audio-haptic examples.
  */
 public final class StallChild {
     private static volatile Object sink;
@@ -78,6 +80,11 @@ public final class StallChild {
         }
 
         @Override
+        public boolean neverWaits() {
+            return inner.neverWaits();
+        }
+
+        @Override
         public void beginStepping() {
             inner.beginStepping();
         }
@@ -99,13 +106,35 @@ public final class StallChild {
         long garbageMBs = args.length > 1 ? Long.parseLong(args[1]) : 0;
         int telemetryMs = args.length > 2 ? Integer.parseInt(args[2]) : 0;
         String safepointLog = args.length > 3 ? args[3] : null;
-        PhysicalModel pm = new PhysicalModel(1000);
+        boolean audio = Boolean.getBoolean("tactus.stress.audio");
         HapticSession session = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018);
-        pm.addHapticInput3D("avatar", session.home(), 5);
-        pm.init();
-        TimedAvatar avatar = new TimedAvatar(new PhysicalModelAvatar(pm, "avatar"),
-                (int) (seconds * 1000 * 1.5) + 1000);
+        PhysicalModel pm;
+        TimedAvatar avatar;
+        int capacity = (int) (seconds * 1000 * 1.5) + 1000;
+        if (audio) {
+            // the audio-haptic examples' way: the paper's plucked string stepped by a PhyUGen at 44.1 kHz (paced in
+            // real time by a silent output, 256-frame buffers), the loop in AUDIO mode through an exchange
+            pm = tactus.demo.PluckScene.build(session.home());
+            tactus.audio.PhyUGen ugen = new tactus.audio.PhyUGen(pm);
+            ugen.listenToMass(tactus.demo.PluckScene.mass(tactus.demo.PluckScene.LISTENED_MASS),
+                    tactus.audio.SteppedModel.Y, 30, 0);
+            tactus.audio.AvatarExchange exchange = new tactus.audio.AvatarExchange(
+                    tactus.audio.AvatarExchange.ForceMode.AVERAGE);
+            ugen.attachAvatar(tactus.demo.PluckScene.PLECTRUM, exchange);
+            ugen.patch(new ddf.minim.AudioOutput(new tactus.audio.SilentAudioOut(1, 256,
+                    tactus.demo.PluckScene.AUDIO_RATE)));
+            avatar = new TimedAvatar(new tactus.audio.ExchangeAvatarLink(exchange), capacity);
+        } else {
+            pm = new PhysicalModel(1000);
+            pm.addHapticInput3D("avatar", session.home(), 5);
+            pm.init();
+            avatar = new TimedAvatar(new PhysicalModelAvatar(pm, "avatar"), capacity);
+        }
+        String avatarName = audio ? tactus.demo.PluckScene.PLECTRUM : "avatar";
         HapticLoop loop = session.attach(avatar);
+        if (audio) {
+            loop.setMode(HapticLoop.Mode.AUDIO);
+        }
         String raise = System.getProperty("tactus.stress.raiseJvm");
         if (raise != null) {
             for (java.io.File t : new java.io.File("/proc/self/task").listFiles()) {
@@ -136,7 +165,7 @@ public final class StallChild {
                     double u = (k / 250) % 2 == 0 ? 0.3 : 0.7;
                     session.handTowardsPixel(ws[0] + u * (ws[1] - ws[0]), ws[2] + u * (ws[3] - ws[2]));
                 }
-                sink = pm.getMatPosition("avatar");
+                sink = pm.getMatPosition(avatarName);
                 LockSupport.parkNanos(2_000_000L);
             }
         });
