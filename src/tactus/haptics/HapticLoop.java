@@ -490,18 +490,19 @@ public final class HapticLoop implements AutoCloseable {
         long period = Math.round(1e9 / rateHz);
         long spin = spinMicros * 1000L;
         if (realtimePriority > 0) {
-            // The safepoint threads first, while this thread is still at normal priority: a thread started from a
-            // real-time thread inherits its policy, and chrt's process reaper thread may be started here.
+            // One chrt run, started while this thread is still at normal priority (a thread started from a
+            // real-time thread inherits its policy, and the JDK's process reaper thread may be started here):
+            // the JVM's own threads below the loop, the safety threads (the loop's watchdog, the boards' torque
+            // watchdogs, which take the board's lock to zero the motors) at its priority, then this thread.
             int below = Math.max(1, realtimePriority - 1);
-            String jvm = realtimeJvmThreads ? RealtimeScheduling.applyToSafepointThreads(below) : "off";
-            if (jvm == null) {
-                jvm = RealtimeScheduling.applyToThreadsNamed(RealtimeScheduling.COMPILER_THREADS, 1);
+            java.util.Map<java.util.regex.Pattern, Integer> others = new java.util.LinkedHashMap<>();
+            if (realtimeJvmThreads) {
+                others.put(RealtimeScheduling.SAFEPOINT_THREADS, below);
+                others.put(RealtimeScheduling.COMPILER_THREADS, 1);
             }
-            // The safety threads too, at the loop's own priority: the loop's watchdog, and the board's torque
-            // watchdog, which take the board's lock to zero the motors; at normal priority, preempted while they
-            // hold it, they held the loop up for tens of milliseconds on a loaded machine.
-            RealtimeScheduling.applyToThreadsNamed(SAFETY_THREADS, realtimePriority);
-            String why = RealtimeScheduling.applyToCurrentThread(realtimePriority);
+            others.put(SAFETY_THREADS, realtimePriority);
+            String why = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority);
+            String jvm = realtimeJvmThreads ? null : "off";
             scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (jvm == null
                     ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "") + ")"
                     : "normal priority (real-time refused: " + why + ")";

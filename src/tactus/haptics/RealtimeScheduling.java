@@ -4,7 +4,6 @@ import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,9 +17,10 @@ import java.util.regex.Pattern;
  * {@link HapticLoop#setRealtimePriority(int)} asks for it: for the loop thread itself, its safety threads, and the
  * JVM's threads that a Java thread can end up waiting for (the VM thread and the collector's pause workers one step
  * below the loop, the JIT compilers at the lowest real-time priority), so that another program loading the machine
- * cannot hold them, and through them the loop, up (see docs/haptics.md, "Why the loop was late"). It works where the user may raise priorities (root, {@code CAP_SYS_NICE}, or an {@code rtprio}
- * limit in {@code /etc/security/limits.conf}, as audio users often have); elsewhere, and on other systems, it
- * changes nothing and says why.
+ * cannot hold them, and through them the loop, up (see docs/haptics.md, "Why the loop was late"). It works where
+ * the user may raise priorities (root, {@code CAP_SYS_NICE}, or an {@code rtprio} limit in
+ * {@code /etc/security/limits.conf}, as audio users often have); elsewhere, and on other systems, it changes
+ * nothing and says why.
  */
 final class RealtimeScheduling {
     private static final long CHRT_TIMEOUT_MS = 2000;
@@ -42,59 +42,38 @@ final class RealtimeScheduling {
     }
 
     /**
-     * Moves the calling thread to SCHED_FIFO at the given priority.
+     * Moves the threads of this process whose names match each pattern to SCHED_FIFO at that pattern's priority,
+     * then the calling thread to SCHED_FIFO at {@code priority}, in one run of a shell (one process start instead
+     * of one per thread: under load each start took tens of milliseconds). A thread that ends meanwhile is skipped.
      *
-     * @param priority 1..99
-     * @return null if it worked, otherwise why not (one short sentence)
+     * @param others patterns of thread names and their priorities (1..99), applied in order
+     * @param priority the calling thread's priority, 1..99
+     * @return null if the calling thread got its priority, otherwise why not (one short sentence)
      */
-    static String applyToCurrentThread(int priority) {
+    static String applyWithCurrentThread(java.util.Map<Pattern, Integer> others, int priority) {
         String why = linuxOnly();
         if (why != null) {
             return why;
         }
-        String tid;
+        String self;
         try {
-            tid = Files.readSymbolicLink(Paths.get("/proc/thread-self")).getFileName().toString();
+            self = Files.readSymbolicLink(Paths.get("/proc/thread-self")).getFileName().toString();
         } catch (IOException | UnsupportedOperationException e) {
             return "cannot find the thread id (" + e.getMessage() + ")";
         }
-        return chrt(priority, List.of(tid));
-    }
-
-    /**
-     * Moves the JVM threads that every safepoint waits for ({@link #SAFEPOINT_THREADS}) to SCHED_FIFO at the
-     * given priority. Workers the collector starts later are started by the VM thread and inherit its policy.
-     *
-     * @param priority 1..99
-     * @return null if it worked, otherwise why not (one short sentence)
-     */
-    static String applyToSafepointThreads(int priority) {
-        String why = linuxOnly();
-        if (why != null) {
-            return why;
+        // The shell waits for a line on its input before it changes anything: the JDK starts the thread that reaps
+        // the process (a thread this one creates, and which inherits its policy) only after the process started,
+        // so this thread must still be at normal priority then.
+        StringBuilder script = new StringBuilder("read go; ");
+        for (java.util.Map.Entry<Pattern, Integer> e : others.entrySet()) {
+            for (String tid : threadsNamed(e.getKey())) {
+                if (!tid.equals(self)) {
+                    script.append("chrt -f -p ").append(e.getValue()).append(' ').append(tid).append(" 2>/dev/null; ");
+                }
+            }
         }
-        List<String> tids = threadsNamed(SAFEPOINT_THREADS);
-        if (tids.isEmpty()) {
-            return "no VM or collector thread found in /proc/self/task";
-        }
-        return chrt(priority, tids);
-    }
-
-    /**
-     * Moves every thread of this process whose name (as Linux keeps it, 15 characters) matches to SCHED_FIFO at the
-     * given priority.
-     *
-     * @param name the pattern
-     * @param priority 1..99
-     * @return null if it worked (or no thread matched), otherwise why not (one short sentence)
-     */
-    static String applyToThreadsNamed(Pattern name, int priority) {
-        String why = linuxOnly();
-        if (why != null) {
-            return why;
-        }
-        List<String> tids = threadsNamed(name);
-        return tids.isEmpty() ? null : chrt(priority, tids);
+        script.append("chrt -f -p ").append(priority).append(' ').append(self);   // its status is the script's
+        return run(new ProcessBuilder("sh", "-c", script.toString()));
     }
 
     /** The ids of this process's threads whose name (as Linux keeps it, 15 characters) matches. */
@@ -123,19 +102,15 @@ final class RealtimeScheduling {
         return null;
     }
 
-    /** Runs {@code chrt -f -p priority tid} for each thread, all in one shell; null if every one worked. */
-    private static String chrt(int priority, List<String> tids) {
-        StringBuilder script = new StringBuilder();
-        for (String tid : tids) {
-            script.append(script.length() == 0 ? "" : " && ").append("chrt -f -p ").append(priority).append(' ')
-                    .append(tid);
-        }
-        ProcessBuilder pb = tids.size() == 1 ? new ProcessBuilder("chrt", "-f", "-p", Integer.toString(priority),
-                tids.get(0)) : new ProcessBuilder("sh", "-c", script.toString());
+    /** Runs a shell of chrt calls, bounded in time, and writes its go line; null if it exited with 0. */
+    private static String run(ProcessBuilder pb) {
         pb.redirectErrorStream(true);
         pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
         try {
             Process p = pb.start();
+            try (java.io.OutputStream in = p.getOutputStream()) {
+                in.write('\n');
+            }
             if (!p.waitFor(CHRT_TIMEOUT_MS, TimeUnit.MILLISECONDS)) {
                 p.destroyForcibly();
                 return "chrt did not answer within " + CHRT_TIMEOUT_MS + " ms";
@@ -149,13 +124,5 @@ final class RealtimeScheduling {
             Thread.currentThread().interrupt();
             return "interrupted while asking for real-time scheduling";
         }
-    }
-
-    /** The scheduling policy of a thread of this process, as {@code /proc} gives it (0 normal, 1 FIFO, 2 RR). */
-    static int policyOf(String tid) throws IOException {
-        Path stat = Paths.get("/proc/self/task", tid, "stat");
-        String s = new String(Files.readAllBytes(stat), StandardCharsets.UTF_8);
-        String[] f = s.substring(s.lastIndexOf(')') + 2).split(" ");
-        return Integer.parseInt(f[38]);
     }
 }
