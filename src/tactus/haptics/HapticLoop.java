@@ -1,6 +1,9 @@
 package tactus.haptics;
 
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
+import java.util.regex.Pattern;
 
 /**
  * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,
@@ -35,8 +38,7 @@ public final class HapticLoop implements AutoCloseable {
     /** Number of recent ticks kept for the percentiles. */
     public static final int WINDOW = 1 << 16;
     /** The threads that zero the motors when the loop stalls: this loop's watchdog and the boards' torque watchdogs. */
-    static final java.util.regex.Pattern SAFETY_THREADS = java.util.regex.Pattern.compile(
-            "tactus-haptic-w|tactus-haply-to");
+    static final Pattern SAFETY_THREADS = Pattern.compile("tactus-haptic-w|tactus-haply-to");
 
     /** Who steps the model. */
     public enum Mode {
@@ -495,15 +497,14 @@ public final class HapticLoop implements AutoCloseable {
             // the JVM's own threads below the loop, the safety threads (the loop's watchdog, the boards' torque
             // watchdogs, which take the board's lock to zero the motors) at its priority, then this thread.
             int below = Math.max(1, realtimePriority - 1);
-            java.util.Map<java.util.regex.Pattern, Integer> others = new java.util.LinkedHashMap<>();
+            Map<Pattern, Integer> others = new LinkedHashMap<>();
             if (realtimeJvmThreads) {
                 others.put(RealtimeScheduling.SAFEPOINT_THREADS, below);
                 others.put(RealtimeScheduling.COMPILER_THREADS, 1);
             }
             others.put(SAFETY_THREADS, realtimePriority);
             String why = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority);
-            String jvm = realtimeJvmThreads ? null : "off";
-            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (jvm == null
+            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (realtimeJvmThreads
                     ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "") + ")"
                     : "normal priority (real-time refused: " + why + ")";
         } else {

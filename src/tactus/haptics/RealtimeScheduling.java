@@ -2,12 +2,14 @@ package tactus.haptics;
 
 import java.io.File;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 
@@ -50,7 +52,7 @@ final class RealtimeScheduling {
      * @param priority the calling thread's priority, 1..99
      * @return null if the calling thread got its priority, otherwise why not (one short sentence)
      */
-    static String applyWithCurrentThread(java.util.Map<Pattern, Integer> others, int priority) {
+    static String applyWithCurrentThread(Map<Pattern, Integer> others, int priority) {
         String why = linuxOnly();
         if (why != null) {
             return why;
@@ -65,7 +67,7 @@ final class RealtimeScheduling {
         // the process (a thread this one creates, and which inherits its policy) only after the process started,
         // so this thread must still be at normal priority then.
         StringBuilder script = new StringBuilder("read go; ");
-        for (java.util.Map.Entry<Pattern, Integer> e : others.entrySet()) {
+        for (Map.Entry<Pattern, Integer> e : others.entrySet()) {
             for (String tid : threadsNamed(e.getKey())) {
                 if (!tid.equals(self)) {
                     script.append("chrt -f -p ").append(e.getValue()).append(' ').append(tid).append(" 2>/dev/null; ");
@@ -108,7 +110,7 @@ final class RealtimeScheduling {
         pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
         try {
             Process p = pb.start();
-            try (java.io.OutputStream in = p.getOutputStream()) {
+            try (OutputStream in = p.getOutputStream()) {
                 in.write('\n');
             }
             if (!p.waitFor(CHRT_TIMEOUT_MS, TimeUnit.MILLISECONDS)) {
