@@ -67,6 +67,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
     private volatile boolean firstMessagesHadSession = true;
     private volatile boolean laterMessagesHadSession;
     private volatile boolean recording;
+    private volatile boolean mute;
     private final List<double[]> receivedForces = new ArrayList<>();
     private final List<double[]> sentPositions = new ArrayList<>();
     private final double[] tmpP = new double[3];
@@ -213,6 +214,11 @@ public final class InverseServiceEmulator implements AutoCloseable {
         return new ArrayList<>(sentPositions);
     }
 
+    /** Stops answering messages (true) while keeping the connections open, as a hung service; or answers again. */
+    public void setMute(boolean on) {
+        mute = on;
+    }
+
     /** Closes every client connection at once, with no closing handshake, as a crashed or restarted service. */
     public void dropConnections() {
         for (WebSocketServerConnection c : connections) {
@@ -273,7 +279,10 @@ public final class InverseServiceEmulator implements AutoCloseable {
             c.sendText(frame(true));
             boolean first = true;
             for (String m = c.readText(); m != null; m = c.readText()) {
-                c.sendText(handle(m, first));
+                String reply = handle(m, first);
+                if (!mute) {
+                    c.sendText(reply);
+                }
                 first = false;
             }
         } catch (SocketException e) {
