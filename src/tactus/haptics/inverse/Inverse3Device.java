@@ -115,6 +115,11 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public WorkspaceMapping defaultMapping() {
+        return defaultMappingOfTheFamily();
+    }
+
+    /** The default mapping of the Inverse3 family ({@link WorkspaceMapping#inverse3YUp()}): model y up. */
+    public static WorkspaceMapping defaultMappingOfTheFamily() {
         return WorkspaceMapping.inverse3YUp();
     }
 
