@@ -132,7 +132,8 @@ public final class HapticLoop implements AutoCloseable {
      * {@link PantographDevice}) and a model's avatar. Positions reach the model through a
      * {@link WorkspaceMapping}: the one given to {@link #setWorkspaceMapping}, or else the device's
      * {@linkplain HapticDevice#defaultMapping() default axes} with scale alpha ({@link #setPositionGain}) and
-     * the offset of {@link #setOrigin} ({@link #setMirrorX} does not apply: the axes say it). Forces go back along
+     * the offset of {@link #setOrigin} ({@link #setMirrorX} applies to a planar device, whose default axes are the
+     * paper's mirrored ones, and not to a 3-D device, whose axes say it). Forces go back along
      * the same axes times beta ({@link #setForceGain}); the safety rules are those of the board path: a
      * non-finite force or one above the runaway limit gives zero force in the same tick, a model that throws
      * gives zero force and stops the loop, the watchdog zeroes the force, and a lost link or a device silent for
@@ -181,7 +182,9 @@ public final class HapticLoop implements AutoCloseable {
         if (explicitMapping != null) {
             return alpha == 1 && beta == 1 && realUnits ? explicitMapping.withScale(1) : explicitMapping;
         }
-        return spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
+        WorkspaceMapping m = spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
+        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them, as on the board path
+        return spatial.dimensions() == 2 && !mirrorX ? m.mirrored(0) : m;
     }
 
     /** The device of a loop built on a {@link HapticDevice}, or null for one built on a {@link Device}. */
