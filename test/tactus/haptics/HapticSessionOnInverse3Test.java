@@ -79,9 +79,13 @@ class HapticSessionOnInverse3Test {
             } finally {
                 s.close();
             }
-            double[] rendered = new double[3];
-            service.device().force(rendered);
-            assertEquals(0, rendered[0], 0, "closing the session zeroes the force");
+            long deadline = System.nanoTime() + 2_000_000_000L;
+            while (service.zeroedOnDisconnect() == 0 && System.nanoTime() < deadline) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            List<double[]> f = service.receivedForces();
+            double[] last = f.get(f.size() - 1);
+            assertEquals(0, last[0] * last[0] + last[1] * last[1] + last[2] * last[2], 0, "closing the session sent zero force");
         }
     }
 }

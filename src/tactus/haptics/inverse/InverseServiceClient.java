@@ -141,6 +141,17 @@ public final class InverseServiceClient implements AutoCloseable {
                 throw new HaplyLinkException("interrupted while waiting for the Haply Inverse Service at " + uri, e);
             }
         }
+        // The service sends a snapshot on connect and answers the handshake with another: wait (250 ms at most)
+        // for that answer too, so that from here on each frame answers the message before it.
+        long settle = Math.min(deadline, System.nanoTime() + 250_000_000L);
+        while (read(s) < 2 && lost == null && System.nanoTime() - settle < 0) {
+            try {
+                Thread.sleep(1);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            }
+        }
         out.setDevice(s.deviceId);
         Thread h = new Thread(this::closeFromHook, "tactus-inverse-shutdown");
         try {
