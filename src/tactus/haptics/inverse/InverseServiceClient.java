@@ -350,8 +350,8 @@ public final class InverseServiceClient implements AutoCloseable {
         if (closed) {
             return;
         }
+        closed = true;    // from here sendForce refuses, so nothing can follow the zero force
         zeroForce();
-        closed = true;
         WebSocket ws = socket;
         if (ws != null) {
             try {
