@@ -228,7 +228,8 @@ public final class InverseServiceClient implements AutoCloseable {
                     return false;
                 }
                 if (p.isCompletedExceptionally()) {
-                    lose("a message to the Haply Inverse Service at " + uri + " could not be sent: " + failureOf(p));
+                    lose("a message to the Haply Inverse Service at " + uri + " could not be sent (" + failureOf(p)
+                            + "): was the service stopped or restarted?");
                     return false;
                 }
             }
@@ -238,7 +239,8 @@ public final class InverseServiceClient implements AutoCloseable {
             sent++;
             return true;
         } catch (RuntimeException e) {
-            lose("a message to the Haply Inverse Service at " + uri + " could not be sent: " + e);
+            lose("a message to the Haply Inverse Service at " + uri + " could not be sent (" + e
+                    + "): was the service stopped or restarted?");
             return false;
         } finally {
             sending.set(false);
