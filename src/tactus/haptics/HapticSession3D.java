@@ -63,6 +63,10 @@ public final class HapticSession3D implements AutoCloseable {
     private boolean closed;
     private final double[] tmpModel = new double[3];
     private final double[] tmpDevice = new double[3];
+    private final double[] tmpForce = new double[3];
+    private HapticLoop telemetryOf;
+    private long telemetryAt;
+    private String telemetryText = "";
 
     private HapticSession3D(PApplet app, HapticDevice device, Inverse3Device inverse, InverseServiceEmulator emulator,
                             HaplyConnection board, String banner, double[] centre, double[] halfSize) {
@@ -320,19 +324,28 @@ public final class HapticSession3D implements AutoCloseable {
         return f == null ? s : s + ". Haptic loop stopped: " + f;
     }
 
-    /** A short line of telemetry, as {@link HapticSession#telemetryLine()}. */
-    public String telemetryLine() {
+    /**
+     * A short line of telemetry, as {@link HapticSession#telemetryLine()}, refreshed at most once a second (a
+     * telemetry snapshot copies the loop's window of 65,536 ticks).
+     */
+    public synchronized String telemetryLine() {
         HapticLoop l = loop;
         if (l == null) {
             return "no haptic loop";
         }
-        HapticTelemetry t = l.telemetry();
-        return String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s", t.achievedHz, t.nominalHz,
-                100 * t.missedFraction(), l.scheduling());
+        long now = System.nanoTime();
+        if (l != telemetryOf || now - telemetryAt > 1_000_000_000L) {
+            HapticTelemetry t = l.telemetry();
+            telemetryText = String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s", t.achievedHz,
+                    t.nominalHz, 100 * t.missedFraction(), l.scheduling());
+            telemetryOf = l;
+            telemetryAt = now;
+        }
+        return telemetryText;
     }
 
-    /** The force the hand felt at the last tick, in newtons along the model's axes, into out[0..2]. */
-    public void forceInModel(double[] out) {
+    /** The force the hand felt at the last tick, in newtons along the model's axes, into out[0..2] (the draw thread). */
+    public synchronized void forceInModel(double[] out) {
         HapticLoop l = loop;
         if (l == null) {
             out[0] = 0;
@@ -340,9 +353,8 @@ public final class HapticSession3D implements AutoCloseable {
             out[2] = 0;
             return;
         }
-        double[] f = new double[3];
-        l.deviceForce(f);
-        mapping.forceToModel(f, 1, out);
+        l.deviceForce(tmpForce);
+        mapping.forceToModel(tmpForce, 1, out);
     }
 
     /**

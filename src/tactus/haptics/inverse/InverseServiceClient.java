@@ -3,6 +3,9 @@ package tactus.haptics.inverse;
 import java.io.IOException;
 import java.lang.invoke.VarHandle;
 import java.net.ConnectException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpTimeoutException;
@@ -90,6 +93,7 @@ public final class InverseServiceClient implements AutoCloseable {
 
     private void open(long timeoutMillis) {
         long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
+        probe(timeoutMillis);
         HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofMillis(timeoutMillis)).build();
         CompletableFuture<WebSocket> f = http.newWebSocketBuilder().connectTimeout(Duration.ofMillis(timeoutMillis))
                 .buildAsync(uri, receiver);
@@ -162,6 +166,20 @@ public final class InverseServiceClient implements AutoCloseable {
         }
     }
 
+    /**
+     * A plain TCP connection first: where nothing listens (the common case without a Haply Hub) it is refused in
+     * a millisecond, without starting an HTTP client and its threads.
+     */
+    private void probe(long timeoutMillis) {
+        String host = uri.getHost() == null ? "localhost" : uri.getHost();
+        int port = uri.getPort() > 0 ? uri.getPort() : 80;
+        try (Socket s = new Socket()) {
+            s.connect(new InetSocketAddress(host, port), (int) Math.min(Integer.MAX_VALUE, timeoutMillis));
+        } catch (IOException e) {
+            throw new HaplyLinkException(whyNoConnection(e), e);
+        }
+    }
+
     private String whyNoConnection(Throwable cause) {
         Throwable c = cause;
         while (c != null && !(c instanceof ConnectException) && !(c instanceof WebSocketHandshakeException)
@@ -176,6 +194,9 @@ public final class InverseServiceClient implements AutoCloseable {
             return "something answers at " + uri + " but refused the WebSocket upgrade (HTTP "
                     + ((WebSocketHandshakeException) c).getResponse().statusCode() + "): is it the Haply Inverse Service "
                     + "(version 3.5 or later)?";
+        }
+        if (cause instanceof SocketTimeoutException) {
+            return "no answer from " + uri + " in time (" + cause.getMessage() + "): is the Haply Inverse Service running?";
         }
         if (c instanceof HttpTimeoutException) {
             return "no answer from the Haply Inverse Service at " + uri + " in time (" + c.getMessage() + ")";
