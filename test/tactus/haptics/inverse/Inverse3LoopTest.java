@@ -30,7 +30,7 @@ class Inverse3LoopTest {
     private static final double[] H = SimulatedInverse3.HOME;
 
     /** An avatar with a constant force (model units) that allocates nothing. */
-    static final class ConstantAvatar implements AvatarLink {
+    static class ConstantAvatar implements AvatarLink {
         final double fx;
         final double fy;
         final double fz;
@@ -229,6 +229,44 @@ class Inverse3LoopTest {
             await(() -> emu.zeroedOnDisconnect() == 1, 2000, "the connection ends");
             double[] lastSent = last(emu.receivedForces());
             assertEquals(0, lastSent[0] + lastSent[1] + lastSent[2], 0, "the last force we sent was zero");
+        }
+    }
+
+    @Test
+    void aStalledTickGetsZeroForceFromTheWatchdog() {
+        try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
+            holdAt(emu, H);
+            emu.setRecording(true);
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+                ConstantAvatar a = new ConstantAvatar(0.5, 0, 0) {
+                    int steps;
+
+                    @Override
+                    public void step(int n) {
+                        if (++steps == 300) {
+                            LockSupport.parkNanos(150_000_000L);   // a 150 ms stall inside one tick
+                        }
+                    }
+                };
+                HapticLoop loop = new HapticLoop(dev, a);
+                loop.useRealUnits();
+                loop.start();
+                await(() -> loop.ticks() > 500, 10_000, "500 ticks: " + loop.failure());
+                loop.stop();
+                assertTrue(loop.telemetry().watchdogTrips >= 1, "the watchdog tripped");
+                List<double[]> got = emu.receivedForces();
+                int zeroBetween = 0;
+                boolean pushedBefore = false;
+                for (double[] f : got) {
+                    if (f[0] == 0.5) {
+                        pushedBefore = true;
+                    } else if (pushedBefore && f[0] == 0) {
+                        zeroBetween++;
+                        break;
+                    }
+                }
+                assertTrue(zeroBetween > 0, "a zero force went out while the tick was stalled");
+            }
         }
     }
 
