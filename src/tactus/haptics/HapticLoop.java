@@ -180,7 +180,7 @@ public final class HapticLoop implements AutoCloseable {
 
     private WorkspaceMapping effectiveMapping() {
         if (explicitMapping != null) {
-            return alpha == 1 && beta == 1 && realUnits ? explicitMapping.withScale(1) : explicitMapping;
+            return realUnits ? explicitMapping.withScale(1) : explicitMapping;
         }
         WorkspaceMapping m = spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
         // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them, as on the board path
