@@ -29,8 +29,8 @@ class PackageDependencyTest {
             "tactus.io", List.of("tactus."),
             "tactus.export", List.of("tactus."),
             "tactus.render", List.of("tactus.", "processing.core.", "processing.event."),
-            "tactus.haptics", List.of("tactus.", "com.fazecast.jSerialComm.", "processing.core.",
-                    "processing.event."),
+            "tactus.haptics", List.of("tactus.", "com.fazecast.jSerialComm.", "com.fasterxml.jackson.core.",
+                    "processing.core.", "processing.event."),
             "tactus.audio", List.of("tactus.", "tactus.haptics.AvatarLink", "ddf.minim."),
             "tactus", List.of("tactus.engine.", "tactus.render.", "tactus.io.", "processing.core."));
 

@@ -48,9 +48,12 @@ public final class HapticLoop implements AutoCloseable {
         AUDIO
     }
 
-    private final Device device;
+    private final Device device;                 // the board path (first constructor), or null
     private final PantographKinematics kin;
+    private final HapticDevice spatial;          // the device path (second constructor), or null
     private final AvatarLink avatar;
+    private WorkspaceMapping explicitMapping;    // device path: set by setWorkspaceMapping, or null
+    private WorkspaceMapping mapping;            // device path: the mapping in use, fixed at start()
 
     private volatile double rateHz = 1000;
     private Mode mode = Mode.HAPTICS_ONLY;
@@ -70,6 +73,7 @@ public final class HapticLoop implements AutoCloseable {
     private int realtimePriority;
     private boolean realtimeJvmThreads = true;
     private boolean decoupleInAudioMode = true;
+    private boolean realUnits;
     private volatile String scheduling = "not started";
     private AvatarLink active;
     /** The link whose beginStepping() the last start() called, until stop() ends it. */
@@ -108,6 +112,13 @@ public final class HapticLoop implements AutoCloseable {
     private volatile double forceX;
     private volatile double forceY;
     private int staleRun;
+    // device path, loop thread only
+    private final double[] pos3 = new double[3];
+    private final double[] model3 = new double[3];
+    private final double[] held3 = new double[3];
+    private final double[] force3 = new double[3];
+    private volatile double devZ = Double.NaN;
+    private volatile double forceZ;
 
     /**
      * Creates a loop over a configured device (encoders 1, 2 give theta1, theta2; actuators 1, 2 take tau1,
@@ -120,7 +131,73 @@ public final class HapticLoop implements AutoCloseable {
         }
         this.device = device;
         this.kin = kinematics;
+        this.spatial = null;
         this.avatar = avatar;
+    }
+
+    /**
+     * Creates a loop over any {@link HapticDevice} (an Inverse3 through the Inverse Service, or a
+     * {@link PantographDevice}) and a model's avatar. Positions reach the model through a
+     * {@link WorkspaceMapping}: the one given to {@link #setWorkspaceMapping}, or else the device's
+     * {@linkplain HapticDevice#defaultMapping() default axes} with scale alpha ({@link #setPositionGain}) and
+     * the offset of {@link #setOrigin} ({@link #setMirrorX} applies to a planar device, whose default axes are the
+     * paper's mirrored ones, and not to a 3-D device, whose axes say it). Forces go back along
+     * the same axes times beta ({@link #setForceGain}); the safety rules are those of the board path: a
+     * non-finite force or one above the runaway limit gives zero force in the same tick, a model that throws
+     * gives zero force and stops the loop, the watchdog zeroes the force, and a lost link or a device silent for
+     * the link timeout stops the loop with a message.
+     */
+    public HapticLoop(HapticDevice device, AvatarLink avatar) {
+        if (device == null || avatar == null) {
+            throw new IllegalArgumentException("HapticLoop: device and avatar must not be null, got " + device + ", " + avatar);
+        }
+        this.device = null;
+        this.kin = null;
+        this.spatial = device;
+        this.avatar = avatar;
+    }
+
+    /**
+     * Sets how the device's metres map into the model (device path only; units per metre, offset in model units),
+     * replacing the default axes, alpha and origin. {@link #useRealUnits()} then keeps its axes and offset and
+     * sets its scale to 1.
+     */
+    public void setWorkspaceMapping(WorkspaceMapping m) {
+        beforeStart("setWorkspaceMapping");
+        if (m == null) {
+            throw new IllegalArgumentException("HapticLoop.setWorkspaceMapping: mapping must not be null");
+        }
+        if (spatial == null) {
+            throw new IllegalStateException("HapticLoop.setWorkspaceMapping: this loop drives a Device through its "
+                    + "pantograph kinematics; use setPositionGain, setOrigin and setMirrorX, or build the loop on a HapticDevice");
+        }
+        explicitMapping = m;
+    }
+
+    /**
+     * The mapping from the device's metres to the model of a loop built on a {@link HapticDevice}: the one in use
+     * once started, else the one {@code start()} would use; null for a loop built on a {@link Device}.
+     */
+    public WorkspaceMapping workspaceMapping() {
+        if (spatial == null) {
+            return null;
+        }
+        WorkspaceMapping m = mapping;
+        return m != null ? m : effectiveMapping();
+    }
+
+    private WorkspaceMapping effectiveMapping() {
+        if (explicitMapping != null) {
+            return realUnits ? explicitMapping.withScale(1) : explicitMapping;
+        }
+        WorkspaceMapping m = spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
+        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them, as on the board path
+        return spatial.dimensions() == 2 && !mirrorX ? m.mirrored(0) : m;
+    }
+
+    /** The device of a loop built on a {@link HapticDevice}, or null for one built on a {@link Device}. */
+    public HapticDevice hapticDevice() {
+        return spatial;
     }
 
     /** Sets the rate in Hz (1..10000; default 1000). */
@@ -202,6 +279,7 @@ public final class HapticLoop implements AutoCloseable {
         beta = 1;
         torqueGain = 1;
         mirrorX = false;
+        realUnits = true;
     }
 
     /** Sets the gain on J^T F (default 1: physical torques; hAPI's 2018 Pantograph used 0.1 / l). */
@@ -331,8 +409,13 @@ public final class HapticLoop implements AutoCloseable {
         if (thread != null) {
             throw new IllegalStateException("HapticLoop.start: already started");
         }
-        if (!device.isConfigured()) {
-            throw new IllegalStateException("HapticLoop.start: call device_set_parameters() on the device first");
+        if (!deviceReady()) {
+            throw new IllegalStateException(spatial == null
+                    ? "HapticLoop.start: call device_set_parameters() on the device first"
+                    : "HapticLoop.start: the device is not ready: " + spatial.describe() + ", " + spatial.status());
+        }
+        if (spatial != null) {
+            mapping = effectiveMapping();
         }
         if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar) && !avatar.neverWaits()) {
             ownDecoupler = new DecoupledAvatar(avatar);
@@ -373,7 +456,7 @@ public final class HapticLoop implements AutoCloseable {
         if (w != null) {
             w.interrupt();
         }
-        device.board().zeroTorques();
+        zeroOutput();
         AvatarLink st = stepping;
         if (st != null && (t == null || !t.isAlive())) {
             stepping = null;
@@ -389,7 +472,7 @@ public final class HapticLoop implements AutoCloseable {
     @Override
     public void close() {
         stop();
-        device.board().close();
+        closeDevice();
     }
 
     /** Same as {@link #close()}, for Processing's dispose. */
@@ -449,16 +532,28 @@ public final class HapticLoop implements AutoCloseable {
         return failure;
     }
 
-    /** The handle position of the last tick in metres, written into out[0], out[1]. */
+    /**
+     * The handle position of the last tick in metres, written into out[0], out[1] (and out[2], if out has room:
+     * z of a 3-D device, 0 for a pantograph).
+     */
     public void devicePosition(double[] out) {
         out[0] = devX;
         out[1] = devY;
+        if (out.length > 2) {
+            out[2] = spatial != null ? devZ : Double.isNaN(devX) ? Double.NaN : 0;
+        }
     }
 
-    /** The device force (N) of the last tick, written into out[0], out[1] (zero when a fault was caught). */
+    /**
+     * The device force (N) of the last tick, written into out[0], out[1] (and out[2], if out has room), zero when
+     * a fault was caught.
+     */
     public void deviceForce(double[] out) {
         out[0] = forceX;
         out[1] = forceY;
+        if (out.length > 2) {
+            out[2] = spatial != null ? forceZ : 0;
+        }
     }
 
     /** The torque (N m) sent to joint j (1 or 2) at the last tick. */
@@ -511,7 +606,7 @@ public final class HapticLoop implements AutoCloseable {
             scheduling = "normal priority";
         }
         try {
-            device.device_read_request();   // so that the first tick finds a reply
+            beginDevice();   // so that the first tick finds a reply
         } catch (RuntimeException e) {
             fail("the first request to the board failed: " + e.getMessage());
             return;
@@ -565,6 +660,9 @@ public final class HapticLoop implements AutoCloseable {
 
     /** One tick; returns false if the loop must stop. */
     private boolean tick(long period) {
+        if (spatial != null) {
+            return tickDevice(period);
+        }
         boolean fresh;
         try {
             fresh = device.poll_data();
@@ -684,11 +782,136 @@ public final class HapticLoop implements AutoCloseable {
                 if (!tripped && running) {
                     tripped = true;
                     watchdogTrips++;
-                    device.board().zeroTorques();
+                    zeroOutput();
                 }
             } else {
                 tripped = false;
             }
+        }
+    }
+
+    // ------------------------------------------------------------------ the device path (a HapticDevice)
+
+    /** One tick over a {@link HapticDevice}; returns false if the loop must stop. Allocates nothing. */
+    private boolean tickDevice(long period) {
+        boolean fresh;
+        try {
+            fresh = spatial.update();
+        } catch (HaplyLinkException e) {
+            spatial.zeroForce();
+            fail(e.getMessage());
+            return false;
+        }
+        if (fresh) {
+            staleRun = 0;
+            spatial.position(pos3);
+            devX = pos3[0];
+            devY = pos3[1];
+            devZ = pos3[2];
+        } else {
+            stale++;
+            staleRun++;
+            if ((long) staleRun * period > linkTimeoutMillis * 1_000_000L) {
+                spatial.close();
+                fail("no state from " + spatial.describe() + " for " + linkTimeoutMillis + " ms: check that the device is "
+                        + "on and connected; zero force was sent where the link still took it");
+                return false;
+            }
+        }
+        boolean known = !Double.isNaN(devX) && !Double.isNaN(devY) && !Double.isNaN(devZ);
+        WorkspaceMapping m = mapping;
+        long steps;
+        try {
+            if (known) {
+                pos3[0] = devX;
+                pos3[1] = devY;
+                pos3[2] = devZ;
+                m.toModel(pos3, model3);
+                active.setTarget(model3[0], model3[1], model3[2]);
+            }
+            if (mode == Mode.HAPTICS_ONLY) {
+                active.step(stepsPerTick);
+            }
+            steps = active.takeForceCounted(force);
+        } catch (RuntimeException e) {
+            sendDeviceForce(0, 0, 0);
+            fail("the model failed in the haptic loop, zero force sent: " + e);
+            return false;
+        }
+        if (mode == Mode.HAPTICS_ONLY) {
+            double k = 1.0 / stepsPerTick;
+            held3[0] = force[0] * k;
+            held3[1] = force[1] * k;
+            held3[2] = force[2] * k;
+        } else if (steps > 0) {
+            held3[0] = force[0] / steps;
+            held3[1] = force[1] / steps;
+            held3[2] = force[2] / steps;
+        } else if (steps < 0) {
+            held3[0] = force[0];
+            held3[1] = force[1];
+            held3[2] = force[2];
+        }
+        if (!known) {
+            forceX = 0;
+            forceY = 0;
+            forceZ = 0;
+            return sendDeviceForce(0, 0, 0);
+        }
+        m.forceToDevice(held3, beta, force3);
+        double fx = force3[0];
+        double fy = force3[1];
+        double fz = spatial.dimensions() == 2 ? 0 : force3[2];
+        if (!Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)
+                || Math.sqrt(fx * fx + fy * fy + fz * fz) > forceLimit) {
+            faults++;
+            forceX = 0;
+            forceY = 0;
+            forceZ = 0;
+            return sendDeviceForce(0, 0, 0);
+        }
+        forceX = fx;
+        forceY = fy;
+        forceZ = fz;
+        return sendDeviceForce(fx, fy, fz);
+    }
+
+    private boolean sendDeviceForce(double fx, double fy, double fz) {
+        try {
+            spatial.sendForce(fx, fy, fz);
+            return true;
+        } catch (HaplyLinkException e) {
+            spatial.zeroForce();
+            fail(e.getMessage());
+            return false;
+        }
+    }
+
+    private boolean deviceReady() {
+        return spatial != null ? spatial.isReady() : device.isConfigured();
+    }
+
+    private void beginDevice() {
+        if (spatial != null) {
+            spatial.begin();
+        } else {
+            device.device_read_request();
+        }
+    }
+
+    private void zeroOutput() {
+        if (spatial != null) {
+            spatial.zeroForce();
+        } else {
+            device.board().zeroTorques();
+        }
+    }
+
+    private void closeDevice() {
+        if (spatial != null) {
+            spatial.close();
+        } else {
+            device.board().close();
         }
     }
 

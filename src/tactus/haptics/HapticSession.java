@@ -6,6 +6,9 @@ import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.HaplyConnection;
+import tactus.haptics.emulator.SimulatedInverse3;
+import tactus.haptics.inverse.Inverse3Device;
+import tactus.haptics.inverse.PlanarInverse3;
 
 /**
  * Everything a haptic sketch needs in a few lines: a Haply board (the first one found) or, when there is none,
@@ -59,8 +62,9 @@ public final class HapticSession implements AutoCloseable {
 
     private final PApplet app;
     private final HaplyPreset preset;
-    private final HaplyConnection connection;
-    private final Device device;
+    private final HaplyConnection connection;     // null on an Inverse3
+    private final Device device;                  // null on an Inverse3
+    private final PlanarInverse3 inverse;         // an Inverse3 through the Inverse Service, or null
     private final String boardStatus;
     private final double[] box = new double[4];   // comfortable workspace: xmin, xmax, ymin, ymax (metres)
     private final double homeX;                    // handle at open (metres)
@@ -102,6 +106,7 @@ public final class HapticSession implements AutoCloseable {
         }
         this.connection = conn;
         this.device = dev;
+        this.inverse = null;
         this.boardStatus = !conn.isEmulated() ? "Haply board: " + conn.status()
                 : why != null ? capitalised(why) + ": emulated board, the mouse is your hand"
                 : "No Haply board found: emulated board, the mouse is your hand";
@@ -125,6 +130,63 @@ public final class HapticSession implements AutoCloseable {
             app.registerMethod("pre", this);
             app.registerMethod("mouseEvent", this);
             app.registerMethod("dispose", this);
+        }
+    }
+
+    /** A session on an Inverse3 through the Inverse Service, presented as a 2DIY (its depth free). */
+    private HapticSession(PApplet app, Inverse3Device inv, String banner) {
+        this.app = app;
+        this.preset = HaplyPreset.HAPLY_2018;
+        this.connection = null;
+        this.device = null;
+        double[] c = SimulatedInverse3.HOME;
+        double[] half = SimulatedInverse3.HALF_EXTENT;
+        this.inverse = new PlanarInverse3(inv, c[0], c[2]);
+        this.boardStatus = banner + " (a 2-D sketch: the depth is free)";
+        PlanarInverse3.box(0.8 * half[0], 0.8 * half[2], box);
+        double hx = 0.5 * (box[0] + box[1]);
+        double hy = 0.5 * (box[2] + box[3]);
+        inverse.begin();
+        long deadline = System.nanoTime() + 200_000_000L;
+        while (System.nanoTime() - deadline < 0) {
+            if (inverse.update()) {
+                double[] p = new double[3];
+                inverse.position(p);
+                hx = p[0];
+                hy = p[1];
+                break;
+            }
+            java.util.concurrent.locks.LockSupport.parkNanos(1_000_000);
+        }
+        homeX = hx;
+        homeY = hy;
+        int w = app != null && app.width > 0 ? app.width : DEFAULT_WIDTH;
+        int h = app != null && app.height > 0 ? app.height : DEFAULT_HEIGHT;
+        windowHeight = h;
+        alpha = 0.9 * Math.min(w / (box[1] - box[0]), h / (box[3] - box[2]));
+        ox = 0.5 * w + alpha * 0.5 * (box[0] + box[1]);     // x mirrored: model x = -alpha x + ox
+        oy = 0.5 * h - alpha * 0.5 * (box[2] + box[3]);
+        if (app != null) {
+            app.registerMethod("pre", this);
+            app.registerMethod("mouseEvent", this);
+            app.registerMethod("dispose", this);
+        }
+    }
+
+    /**
+     * An Inverse3 through the Inverse Service at ws://localhost:10001 (or the system property
+     * {@code tactus.haptics.inverse.uri}), or null if there is none; {@code tactus.haptics.inverse=off} skips it.
+     */
+    private static HapticSession onInverse3(PApplet app) {
+        if ("off".equals(System.getProperty("tactus.haptics.inverse", "on"))) {
+            return null;
+        }
+        java.net.URI uri = java.net.URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
+        try {
+            Inverse3Device d = Inverse3Device.open(uri, 1000);
+            return new HapticSession(app, d, "Haply " + d.kind() + " through the Inverse Service at " + uri);
+        } catch (HaplyLinkException e) {
+            return null;
         }
     }
 
@@ -166,8 +228,10 @@ public final class HapticSession implements AutoCloseable {
     }
 
     /**
-     * Opens a session on the given hardware: the first Haply board found, or else the emulator of that hardware
-     * with the mouse as the hand. A board that is found but fails at set-up also falls back to the emulator;
+     * Opens a session on the given hardware: for the 2018 preset (the default), first an Inverse3 through Haply's
+     * Inverse Service, if one is there, used in its vertical plane with its depth free (a 2-D sketch runs
+     * unchanged on it; {@link #device()} is then null); else the first Haply board found; else the emulator of
+     * that hardware with the mouse as the hand. A board that is found but fails at set-up also falls back to the emulator;
      * {@link #status()} says so. (A board that stays silent stops the loop after
      * its link timeout, and {@link #status()} says that too.)
      *
@@ -178,6 +242,12 @@ public final class HapticSession implements AutoCloseable {
     public static HapticSession open(PApplet app, HaplyPreset preset) {
         if (preset == null) {
             throw new IllegalArgumentException("HapticSession.open: preset must not be null");
+        }
+        if (preset == HaplyPreset.HAPLY_2018) {
+            HapticSession s = onInverse3(app);
+            if (s != null) {
+                return s;
+            }
         }
         return new HapticSession(app, preset, HaplyConnection.open(preset), null);
     }
@@ -224,7 +294,7 @@ public final class HapticSession implements AutoCloseable {
         if (old != null) {
             old.stop();
         }
-        HapticLoop l = new HapticLoop(device, preset.newKinematics(), avatar);
+        HapticLoop l = inverse != null ? new HapticLoop(inverse, avatar) : new HapticLoop(device, preset.newKinematics(), avatar);
         if (yUp) {
             // model y = height - pixel y: a negative gain flips y, and x, which the mirror then no longer does
             l.setPositionGain(-alpha);
@@ -245,9 +315,14 @@ public final class HapticSession implements AutoCloseable {
         return loop;
     }
 
-    /** The device (set up). */
+    /** The device (set up), or null when the session drives an Inverse3 ({@link #hapticDevice()}). */
     public Device device() {
         return device;
+    }
+
+    /** The device as a {@link HapticDevice}: a {@link PantographDevice} on a 2DIY, a {@link PlanarInverse3} on an Inverse3. */
+    public HapticDevice hapticDevice() {
+        return inverse != null ? inverse : new PantographDevice(device, preset.newKinematics());
     }
 
     /** The hardware preset. */
@@ -257,12 +332,12 @@ public final class HapticSession implements AutoCloseable {
 
     /** True if the board is the emulator (no Haply found). */
     public boolean isEmulated() {
-        return connection.isEmulated();
+        return connection != null && connection.isEmulated();
     }
 
     /** The emulator, or null on real hardware. */
     public BoardEmulator emulator() {
-        return connection.emulator();
+        return connection == null ? null : connection.emulator();
     }
 
     /**
@@ -297,7 +372,7 @@ public final class HapticSession implements AutoCloseable {
      * {@code pre()}, and no mouse event yet.
      */
     public boolean isTouring() {
-        return idleTour && !mouseSeen && app != null && connection.isEmulated();
+        return idleTour && !mouseSeen && app != null && isEmulated();
     }
 
     /**
@@ -412,7 +487,7 @@ public final class HapticSession implements AutoCloseable {
      */
     public void handTowardsPixel(double px, double py) {
         HapticLoop l = loop;
-        if (!connection.isEmulated() || l == null) {
+        if (!isEmulated() || l == null) {
             return;
         }
         double my = yUp ? (windowHeight - py - viewY) / viewScale : (py - viewY) / viewScale;
@@ -514,7 +589,7 @@ public final class HapticSession implements AutoCloseable {
         app.textAlign(PApplet.LEFT, PApplet.BASELINE);
         app.noStroke();
         boolean trouble = loop != null && loop.failure() != null;
-        app.fill(trouble ? 0xE0A02020 : connection.isEmulated() ? 0xD0303848 : 0xD0205030);
+        app.fill(trouble ? 0xE0A02020 : isEmulated() ? 0xD0303848 : 0xD0205030);
         app.rect(0, app.height - 24, Math.min(app.width, app.textWidth(s) + 20), 24);
         app.fill(255);
         app.text(s, 10, app.height - 8);
@@ -533,7 +608,12 @@ public final class HapticSession implements AutoCloseable {
         if (l != null) {
             l.close();
         }
-        connection.close();
+        if (connection != null) {
+            connection.close();
+        }
+        if (inverse != null) {
+            inverse.close();
+        }
     }
 
     /** Same as {@link #close()}; Processing calls it when the sketch ends. */

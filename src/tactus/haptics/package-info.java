@@ -8,6 +8,12 @@
  * the mouse as the hand) and a loop in a few lines. A board on a serial port starts a
  * {@link tactus.haptics.MotorGuard} process that zeroes the motors if the JVM ends without closing the board.
  *
+ * <p>The loop drives any {@link tactus.haptics.HapticDevice} (metres in, newtons out): the 2DIY as a
+ * {@link tactus.haptics.PantographDevice}, or Haply's 3-DoF Inverse3 family through the Inverse Service
+ * ({@code tactus.haptics.inverse}), through a {@link tactus.haptics.WorkspaceMapping} (axes, handedness, scale,
+ * offset). {@link tactus.haptics.HapticSession3D} gives a 3-D sketch an Inverse3, a 2DIY or the emulated Inverse3;
+ * {@link tactus.haptics.HapticSession} finds an Inverse3 first too, and drives it in its vertical plane.
+ *
  * <p>A sketch written for hAPI 2.x ports by deleting the hAPI {@code .java} files from its folder and
  * adding {@code import tactus.haptics.*;}. Such a sketch keeps a safety net without calling anything new:
  * the {@link tactus.haptics.Board} zeroes the motors when its torque writes stop (50 ms by default), declares

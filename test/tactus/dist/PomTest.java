@@ -20,7 +20,7 @@ import org.w3c.dom.NodeList;
 
 /**
  * The POM that {@code gradle publishToMavenLocal} publishes (the Gradle test task generates it first): coordinates
- * tactus:tactus:&lt;prettyVersion&gt;, jSerialComm at runtime scope, Processing core and Minim provided and
+ * tactus:tactus:&lt;prettyVersion&gt;, jSerialComm and jackson-core at runtime scope, Processing core and Minim provided and
  * optional (an application that draws or plays sound adds them itself), and nothing of the tests or tools.
  */
 class PomTest {
@@ -63,6 +63,9 @@ class PomTest {
         Element serial = deps.get("com.fazecast:jSerialComm");
         assertNotNull(serial, "jSerialComm is needed at run time: " + deps.keySet());
         assertEquals("runtime", text(serial, "scope"));
+        Element json = deps.get("com.fasterxml.jackson.core:jackson-core");
+        assertNotNull(json, "jackson-core (the Inverse Service client's JSON) is needed at run time: " + deps.keySet());
+        assertEquals("runtime", text(json, "scope"));
         for (String provided : new String[] {"org.processing:core", "net.compartmental.code:minim"}) {
             Element d = deps.get(provided);
             assertNotNull(d, provided + " must be listed (provided, optional): " + deps.keySet());
@@ -73,6 +76,6 @@ class PomTest {
             assertFalse(key.contains("junit") || key.contains("jfreechart") || key.contains("preprocessor"),
                     "a test or tools dependency leaked into the POM: " + key);
         }
-        assertEquals(3, deps.size(), "exactly jSerialComm, core and Minim: " + deps.keySet());
+        assertEquals(4, deps.size(), "exactly jSerialComm, jackson-core, core and Minim: " + deps.keySet());
     }
 }

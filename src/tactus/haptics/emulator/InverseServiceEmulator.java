@@ -1,0 +1,645 @@
+package tactus.haptics.emulator;
+
+import java.io.IOException;
+import java.io.StringWriter;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketException;
+import java.net.URI;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonToken;
+
+/**
+ * An emulator of Haply's Inverse Service: a WebSocket server on localhost that speaks the service's documented
+ * JSON, with one simulated Inverse3 ({@link SimulatedInverse3}) and optionally a VerseGrip. As the service
+ * (docs.haply.co, "WebSocket Protocol"): on connect it sends a full snapshot (config, state and status of every
+ * device); it answers every message it receives with exactly one frame: the full snapshot if the message asks
+ * for it ({@code session.force_render_full_state}), else the state and status of every device. A
+ * {@code set_cursor_force} for its Inverse3 sets the force on the simulated handle; the simulation advances by
+ * the real time since the previous message (or a fixed step: {@link #setLockstep(double)}).
+ *
+ * <p>When a client's connection ends, however it ends, the emulator sets the force to zero (the real service's
+ * behaviour there is not documented; see {@code docs/haptics.md}).
+ *
+ * <p>In-process: {@code InverseServiceEmulator.start(0)} (any free port; {@link #uri()} says which). Standalone,
+ * on the service's own port: {@code java -cp Tactus.jar:jackson-core-2.17.2.jar tactus.haptics.emulator.InverseServiceEmulator}
+ * (or {@code gradle inverseEmulator}); see {@link #main(String[])}.
+ */
+public final class InverseServiceEmulator implements AutoCloseable {
+    /** The service's port. */
+    public static final int SERVICE_PORT = 10001;
+    /** The emulated Inverse3's id. */
+    public static final String DEVICE_ID = "7E31";
+    /** The emulated VerseGrip's id. */
+    public static final String GRIP_ID = "6B02";
+
+    private final ServerSocket server;
+    private final SimulatedInverse3 device;
+    private final JsonFactory json = new JsonFactory();
+    private final List<WebSocketServerConnection> connections = new CopyOnWriteArrayList<>();
+    private final Thread acceptor;
+    private volatile boolean closed;
+    private volatile double lockstep;
+    private long lastNanos;
+    private long sessionId = 100;
+
+    private volatile String gripKind;   // null, "verse_grip" or "wireless_verse_grip"
+    private volatile double gripW = 1;
+    private volatile double gripX;
+    private volatile double gripY;
+    private volatile double gripZ;
+    private volatile boolean buttonA;
+    private volatile boolean buttonB;
+    private volatile boolean buttonC;
+
+    private volatile long messages;
+    private volatile long forceCommands;
+    private volatile long connectionsOpened;
+    private volatile long zeroedOnDisconnect;
+    private volatile String lastProfile;
+    private volatile boolean firstMessagesHadSession = true;
+    private volatile boolean laterMessagesHadSession;
+    private volatile boolean recording;
+    private volatile boolean mute;
+    private final List<double[]> receivedForces = new ArrayList<>();
+    private final List<double[]> sentPositions = new ArrayList<>();
+    private final double[] tmpP = new double[3];
+    private final double[] tmpV = new double[3];
+    private final double[] tmpF = new double[3];
+
+    private InverseServiceEmulator(ServerSocket server, SimulatedInverse3 device) {
+        this.server = server;
+        this.device = device;
+        this.acceptor = new Thread(this::accept, "tactus-inverse-emulator-accept");
+        acceptor.setDaemon(true);
+    }
+
+    /** Starts an emulator with a fresh {@link SimulatedInverse3} on this port of localhost (0: any free port). */
+    public static InverseServiceEmulator start(int port) {
+        return start(port, new SimulatedInverse3());
+    }
+
+    /**
+     * Starts an emulator with this simulated device on this port of localhost (0: any free port).
+     *
+     * @throws IllegalStateException if the port is taken (for example by the real service)
+     */
+    public static InverseServiceEmulator start(int port, SimulatedInverse3 device) {
+        if (device == null) {
+            throw new IllegalArgumentException("InverseServiceEmulator.start: device must not be null");
+        }
+        ServerSocket s;
+        try {
+            s = new ServerSocket(port, 8, InetAddress.getLoopbackAddress());
+        } catch (IOException e) {
+            throw new IllegalStateException("InverseServiceEmulator: cannot listen on localhost:" + port + " (" + e.getMessage()
+                    + "); is the Haply Inverse Service or another emulator running?", e);
+        }
+        InverseServiceEmulator emu = new InverseServiceEmulator(s, device);
+        emu.acceptor.start();
+        return emu;
+    }
+
+    /** The port it listens on. */
+    public int port() {
+        return server.getLocalPort();
+    }
+
+    /** Its address, {@code ws://localhost:port}. */
+    public URI uri() {
+        return URI.create("ws://localhost:" + port());
+    }
+
+    /** The simulated Inverse3. */
+    public SimulatedInverse3 device() {
+        return device;
+    }
+
+    /**
+     * Advances the simulation by this fixed step (seconds, > 0) per message instead of the real time between
+     * messages (0: real time, the default), for deterministic tests.
+     */
+    public void setLockstep(double dtSeconds) {
+        if (!(dtSeconds >= 0) || !Double.isFinite(dtSeconds)) {
+            throw new IllegalArgumentException("InverseServiceEmulator.setLockstep: need a step >= 0 s, got " + dtSeconds);
+        }
+        lockstep = dtSeconds;
+    }
+
+    /**
+     * Lists a VerseGrip beside the Inverse3: "verse_grip" (wired: one button, reported as {@code button}),
+     * "wireless_verse_grip" (buttons a, b, c, a battery) or null for none (the default).
+     */
+    public void setVerseGrip(String kind) {
+        if (kind != null && !kind.equals("verse_grip") && !kind.equals("wireless_verse_grip")) {
+            throw new IllegalArgumentException("InverseServiceEmulator.setVerseGrip: \"verse_grip\", \"wireless_verse_grip\" "
+                    + "or null, got " + kind);
+        }
+        gripKind = kind;
+    }
+
+    /** Sets the VerseGrip's orientation quaternion (normalised here). */
+    public void setGripOrientation(double w, double x, double y, double z) {
+        double n = Math.sqrt(w * w + x * x + y * y + z * z);
+        if (!(n > 0)) {
+            throw new IllegalArgumentException("InverseServiceEmulator.setGripOrientation: zero quaternion");
+        }
+        gripW = w / n;
+        gripX = x / n;
+        gripY = y / n;
+        gripZ = z / n;
+    }
+
+    /** Presses or releases the VerseGrip's buttons (the wired grip reports a only). */
+    public void setButtons(boolean a, boolean b, boolean c) {
+        buttonA = a;
+        buttonB = b;
+        buttonC = c;
+    }
+
+    /** Messages received from all clients. */
+    public long messagesReceived() {
+        return messages;
+    }
+
+    /** set_cursor_force commands received for the Inverse3. */
+    public long forceCommands() {
+        return forceCommands;
+    }
+
+    /** WebSocket connections accepted. */
+    public long connectionsOpened() {
+        return connectionsOpened;
+    }
+
+    /** Times a client's connection ended and the emulator zeroed the force. */
+    public long zeroedOnDisconnect() {
+        return zeroedOnDisconnect;
+    }
+
+    /** The profile name of the last session handshake, or null. */
+    public String lastProfile() {
+        return lastProfile;
+    }
+
+    /** True if every connection's first message carried a session object. */
+    public boolean firstMessagesHadSession() {
+        return firstMessagesHadSession;
+    }
+
+    /** True if a message after a connection's first carried a session configure (a profile) again. */
+    public boolean laterMessagesHadProfile() {
+        return laterMessagesHadSession;
+    }
+
+    /** Starts or stops recording every force received and every position sent (for fidelity checks). */
+    public synchronized void setRecording(boolean on) {
+        recording = on;
+    }
+
+    /** The forces received while recording (N), in order. */
+    public synchronized List<double[]> receivedForces() {
+        return new ArrayList<>(receivedForces);
+    }
+
+    /** The positions sent while recording (m), in order. */
+    public synchronized List<double[]> sentPositions() {
+        return new ArrayList<>(sentPositions);
+    }
+
+    /** Stops answering messages (true) while keeping the connections open, as a hung service; or answers again. */
+    public void setMute(boolean on) {
+        mute = on;
+    }
+
+    /** Closes every client connection at once, with no closing handshake, as a crashed or restarted service. */
+    public void dropConnections() {
+        for (WebSocketServerConnection c : connections) {
+            c.close();
+        }
+    }
+
+    /** Stops listening and closes every connection (with a closing handshake, code 1001). */
+    @Override
+    public void close() {
+        closed = true;
+        try {
+            server.close();
+        } catch (IOException e) {
+            // nothing to do
+        }
+        for (WebSocketServerConnection c : connections) {
+            c.close(1001, "emulator stopped");
+        }
+        try {
+            acceptor.join(1000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------------ serving
+
+    private void accept() {
+        while (!closed) {
+            Socket s;
+            try {
+                s = server.accept();
+            } catch (IOException e) {
+                return;
+            }
+            Thread t = new Thread(() -> serve(s), "tactus-inverse-emulator-connection");
+            t.setDaemon(true);
+            t.start();
+        }
+    }
+
+    private void serve(Socket s) {
+        WebSocketServerConnection c;
+        try {
+            c = new WebSocketServerConnection(s);
+            if (!c.handshake()) {
+                c.close();
+                return;
+            }
+        } catch (IOException e) {
+            closeQuietly(s);
+            return;
+        }
+        connections.add(c);
+        connectionsOpened++;
+        try {
+            c.sendText(frame(true));
+            boolean first = true;
+            for (String m = c.readText(); m != null; m = c.readText()) {
+                String reply = handle(m, first);
+                if (!mute) {
+                    c.sendText(reply);
+                }
+                first = false;
+            }
+        } catch (SocketException e) {
+            // dropped
+        } catch (IOException e) {
+            // ended inside a frame
+        } finally {
+            connections.remove(c);
+            c.close();
+            device.setForce(0, 0, 0);
+            zeroedOnDisconnect++;
+        }
+    }
+
+    private static void closeQuietly(Socket s) {
+        try {
+            s.close();
+        } catch (IOException e) {
+            // nothing to do
+        }
+    }
+
+    /** Handles one message and returns the frame that answers it. */
+    synchronized String handle(String message, boolean first) throws IOException {
+        messages++;
+        boolean full = false;
+        boolean session = false;
+        boolean profile = false;
+        boolean force = false;
+        double fx = 0;
+        double fy = 0;
+        double fz = 0;
+        try (JsonParser p = json.createParser(message)) {
+            if (p.nextToken() == JsonToken.START_OBJECT) {
+                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                    String name = p.currentName();
+                    JsonToken t = p.nextToken();
+                    if ("session".equals(name) && t == JsonToken.START_OBJECT) {
+                        session = true;
+                        while (p.nextToken() == JsonToken.FIELD_NAME) {
+                            String n = p.currentName();
+                            JsonToken v = p.nextToken();
+                            if ("force_render_full_state".equals(n)) {
+                                full = true;
+                                p.skipChildren();
+                            } else if ("configure".equals(n) && v == JsonToken.START_OBJECT) {
+                                String prof = profileName(p);
+                                if (prof != null) {
+                                    profile = true;
+                                    lastProfile = prof;
+                                }
+                            } else {
+                                p.skipChildren();
+                            }
+                        }
+                    } else if ("inverse3".equals(name) && t == JsonToken.START_ARRAY) {
+                        while (p.nextToken() == JsonToken.START_OBJECT) {
+                            double[] cmd = inverse3Command(p);
+                            if (cmd != null) {
+                                force = true;
+                                fx = cmd[0];
+                                fy = cmd[1];
+                                fz = cmd[2];
+                            }
+                        }
+                    } else {
+                        p.skipChildren();
+                    }
+                }
+            }
+        } catch (IOException e) {
+            return frame(false);   // not JSON: answered with the state, as one message gets one frame
+        }
+        if (first && !session) {
+            firstMessagesHadSession = false;
+        }
+        if (!first && profile) {
+            laterMessagesHadSession = true;
+        }
+        if (force) {
+            forceCommands++;
+            device.setForce(fx, fy, fz);
+            if (recording) {
+                receivedForces.add(new double[] {fx, fy, fz});
+            }
+        }
+        long now = System.nanoTime();
+        double dt = lockstep > 0 ? lockstep : lastNanos == 0 ? 0 : Math.min(0.05, (now - lastNanos) * 1e-9);
+        lastNanos = now;
+        device.advance(dt);
+        return frame(full);
+    }
+
+    private static String profileName(JsonParser p) throws IOException {
+        String found = null;
+        while (p.nextToken() == JsonToken.FIELD_NAME) {
+            String n = p.currentName();
+            JsonToken v = p.nextToken();
+            if ("profile".equals(n) && v == JsonToken.START_OBJECT) {
+                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                    String k = p.currentName();
+                    JsonToken w = p.nextToken();
+                    if ("name".equals(k) && w == JsonToken.VALUE_STRING) {
+                        found = p.getText();
+                    } else {
+                        p.skipChildren();
+                    }
+                }
+            } else {
+                p.skipChildren();
+            }
+        }
+        return found;
+    }
+
+    /** Reads one entry of the inverse3 list; returns its set_cursor_force vector if it is for our device. */
+    private static double[] inverse3Command(JsonParser p) throws IOException {
+        String id = null;
+        double[] vector = null;
+        while (p.nextToken() == JsonToken.FIELD_NAME) {
+            String n = p.currentName();
+            JsonToken v = p.nextToken();
+            if ("device_id".equals(n) && v == JsonToken.VALUE_STRING) {
+                id = p.getText();
+            } else if ("commands".equals(n) && v == JsonToken.START_OBJECT) {
+                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                    String c = p.currentName();
+                    JsonToken w = p.nextToken();
+                    if ("set_cursor_force".equals(c) && w == JsonToken.START_OBJECT) {
+                        while (p.nextToken() == JsonToken.FIELD_NAME) {
+                            String k = p.currentName();
+                            JsonToken x = p.nextToken();
+                            if ("vector".equals(k) && x == JsonToken.START_OBJECT) {
+                                vector = new double[3];
+                                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                                    String a = p.currentName();
+                                    p.nextToken();
+                                    double val = p.currentToken().isNumeric() ? p.getDoubleValue() : Double.NaN;
+                                    if ("x".equals(a)) {
+                                        vector[0] = val;
+                                    } else if ("y".equals(a)) {
+                                        vector[1] = val;
+                                    } else if ("z".equals(a)) {
+                                        vector[2] = val;
+                                    }
+                                }
+                            } else {
+                                p.skipChildren();
+                            }
+                        }
+                    } else {
+                        p.skipChildren();
+                    }
+                }
+            } else {
+                p.skipChildren();
+            }
+        }
+        return DEVICE_ID.equals(id) ? vector : null;
+    }
+
+    /** The full snapshot (with each device's config) or a state frame, as JSON text. */
+    synchronized String frame(boolean full) throws IOException {
+        device.position(tmpP);
+        device.velocity(tmpV);
+        device.force(tmpF);
+        if (recording) {
+            sentPositions.add(tmpP.clone());
+        }
+        StringWriter w = new StringWriter(1024);
+        try (JsonGenerator g = json.createGenerator(w)) {
+            g.writeStartObject();
+            g.writeNumberField("session_id", sessionId);
+            g.writeArrayFieldStart("inverse3");
+            g.writeStartObject();
+            g.writeStringField("device_id", DEVICE_ID);
+            if (full) {
+                inverse3Config(g);
+            }
+            g.writeObjectFieldStart("state");
+            vec(g, "cursor_position", tmpP);
+            vec(g, "cursor_velocity", tmpV);
+            g.writeObjectFieldStart("angular_position");
+            g.writeNumberField("a0", 0.0);
+            g.writeNumberField("a1", 0.0);
+            g.writeNumberField("a2", 0.0);
+            g.writeEndObject();
+            g.writeObjectFieldStart("angular_velocity");
+            g.writeNumberField("a0", 0.0);
+            g.writeNumberField("a1", 0.0);
+            g.writeNumberField("a2", 0.0);
+            g.writeEndObject();
+            quat(g, "body_orientation", 1, 0, 0, 0);
+            vec(g, "current_cursor_force", tmpF);
+            g.writeStringField("mode", "idle");
+            g.writeStringField("control_domain", "cartesian");
+            g.writeStringField("control_mode", forceCommands > 0 ? "force" : "idle");
+            g.writeEndObject();
+            g.writeObjectFieldStart("status");
+            g.writeBooleanField("calibrated", true);
+            g.writeBooleanField("in_use", connections.size() > 0);
+            g.writeBooleanField("power_supply", true);
+            g.writeBooleanField("ready", true);
+            g.writeBooleanField("started", true);
+            g.writeEndObject();
+            g.writeEndObject();
+            g.writeEndArray();
+            String kind = gripKind;
+            g.writeArrayFieldStart("verse_grip");
+            if ("verse_grip".equals(kind)) {
+                grip(g, full, false);
+            }
+            g.writeEndArray();
+            g.writeArrayFieldStart("wireless_verse_grip");
+            if ("wireless_verse_grip".equals(kind)) {
+                grip(g, full, true);
+            }
+            g.writeEndArray();
+            g.writeEndObject();
+        }
+        return w.toString();
+    }
+
+    private static void inverse3Config(JsonGenerator g) throws IOException {
+        g.writeObjectFieldStart("config");
+        g.writeStringField("type", "inverse3");
+        g.writeStringField("port", "emulated");
+        g.writeObjectFieldStart("device_info");
+        g.writeNumberField("major_version", 7);
+        g.writeNumberField("minor_version", 4);
+        g.writeStringField("id", DEVICE_ID);
+        g.writeNumberField("device_type", 4);
+        g.writeStringField("uuid", "TACTUS-EMULATED-INVERSE3-" + DEVICE_ID);
+        g.writeEndObject();
+        g.writeStringField("extended_device_id", "TACTUS-EMULATED-INVERSE3-" + DEVICE_ID);
+        g.writeStringField("extended_firmware_version", "tactus-emulator");
+        g.writeObjectFieldStart("gravity_compensation");
+        g.writeBooleanField("enabled", true);
+        g.writeNumberField("scaling_factor", 1.0);
+        g.writeEndObject();
+        g.writeStringField("handedness", "right");
+        g.writeStringField("streaming_mode", "USB");
+        g.writeObjectFieldStart("torque_scaling");
+        g.writeBooleanField("enabled", true);
+        g.writeEndObject();
+        g.writeStringField("preset", "defaults");
+        g.writeObjectFieldStart("basis");
+        g.writeStringField("permutation", "XYZ");
+        g.writeEndObject();
+        g.writeEndObject();
+    }
+
+    private void grip(JsonGenerator g, boolean full, boolean wireless) throws IOException {
+        g.writeStartObject();
+        g.writeStringField("device_id", GRIP_ID);
+        if (full) {
+            g.writeObjectFieldStart("config");
+            g.writeStringField("port", "emulated");
+            g.writeStringField("type", wireless ? "wireless_verse_grip" : "verse_grip");
+            if (wireless) {
+                g.writeNumberField("major_version", 1);
+                g.writeNumberField("minor_version", 0);
+                g.writeNumberField("hardware_version", 1);
+            }
+            g.writeEndObject();
+        }
+        g.writeObjectFieldStart("state");
+        quat(g, "orientation", gripW, gripX, gripY, gripZ);
+        g.writeNumberField("hall", 0);
+        if (wireless) {
+            g.writeObjectFieldStart("buttons");
+            g.writeBooleanField("a", buttonA);
+            g.writeBooleanField("b", buttonB);
+            g.writeBooleanField("c", buttonC);
+            g.writeEndObject();
+            g.writeNumberField("battery_level", 0.9);
+        } else {
+            g.writeBooleanField("button", buttonA);
+        }
+        g.writeEndObject();
+        g.writeObjectFieldStart("status");
+        g.writeBooleanField("ready", true);
+        if (wireless) {
+            g.writeBooleanField("connected", true);
+            g.writeBooleanField("awake", true);
+        } else {
+            g.writeNumberField("error", 0);
+        }
+        g.writeEndObject();
+        g.writeEndObject();
+    }
+
+    private static void vec(JsonGenerator g, String name, double[] v) throws IOException {
+        g.writeObjectFieldStart(name);
+        g.writeNumberField("x", v[0]);
+        g.writeNumberField("y", v[1]);
+        g.writeNumberField("z", v[2]);
+        g.writeEndObject();
+    }
+
+    private static void quat(JsonGenerator g, String name, double w, double x, double y, double z) throws IOException {
+        g.writeObjectFieldStart(name);
+        g.writeNumberField("w", w);
+        g.writeNumberField("x", x);
+        g.writeNumberField("y", y);
+        g.writeNumberField("z", z);
+        g.writeEndObject();
+    }
+
+    /**
+     * Runs the emulator until the process ends: {@code [--port N] [--hand still|tour] [--grip none|wired|wireless]}.
+     * Defaults: the service's port 10001, a hand that tours the workspace on a slow Lissajous path through a
+     * spring (so that forces show as a lag), no VerseGrip.
+     */
+    public static void main(String[] args) throws InterruptedException {
+        int port = SERVICE_PORT;
+        String hand = "tour";
+        String grip = null;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            String next = i + 1 < args.length ? args[i + 1] : null;
+            if ("--port".equals(a) && next != null) {
+                port = Integer.parseInt(next);
+                i++;
+            } else if ("--hand".equals(a) && next != null) {
+                hand = next;
+                i++;
+            } else if ("--grip".equals(a) && next != null) {
+                grip = "wired".equals(next) ? "verse_grip" : "wireless".equals(next) ? "wireless_verse_grip" : null;
+                i++;
+            } else {
+                System.err.println("usage: InverseServiceEmulator [--port N] [--hand still|tour] [--grip none|wired|wireless]");
+                System.exit(2);
+            }
+        }
+        SimulatedInverse3 dev = new SimulatedInverse3();
+        if ("tour".equals(hand)) {
+            dev.setHand(Hand3D.followingScript(InverseServiceEmulator::tour, 200, 2));
+        }
+        InverseServiceEmulator emu = start(port, dev);
+        emu.setVerseGrip(grip);
+        System.out.println("Tactus Inverse Service emulator on " + emu.uri() + ": one Inverse3 (" + DEVICE_ID + ")"
+                + (grip != null ? " and a " + grip.replace('_', ' ') : "") + ", hand: " + hand + ". Ctrl-C stops it.");
+        Runtime.getRuntime().addShutdownHook(new Thread(emu::close));
+        while (true) {
+            Thread.sleep(5000);
+            System.out.println("emulator: " + emu.connections.size() + " client(s), " + emu.messagesReceived() + " messages, "
+                    + emu.forceCommands() + " forces");
+        }
+    }
+
+    /** The standalone emulator's idle tour: a 3:2:1 Lissajous path through most of the workspace, 12 s a lap. */
+    static void tour(double t, double[] out) {
+        double w = 2 * Math.PI / 12;
+        for (int i = 0; i < 3; i++) {
+            double k = i == 0 ? 3 : i == 1 ? 2 : 1;
+            out[i] = SimulatedInverse3.HOME[i] + 0.6 * SimulatedInverse3.HALF_EXTENT[i] * Math.sin(k * w * t + i);
+        }
+    }
+}

@@ -1,0 +1,99 @@
+//! haply-probe PORT N: connects to an Inverse Service (Tactus's emulator) on localhost:PORT with the `haply`
+//! crate, lists the devices from the service's snapshot, then N times sends a force to the first Inverse3 and
+//! prints the force it sent and the position it read next. Output lines, one fact each:
+//!   DEVICE <id> <type>
+//!   SENT <k> <fx> <fy> <fz>
+//!   POS <k> <x> <y> <z>
+//!   DONE
+use haply::device_model::*;
+use haply::HaplyDevice;
+use std::time::{Duration, Instant};
+
+fn fail(msg: &str) -> ! {
+    eprintln!("haply-probe: {}", msg);
+    std::process::exit(1);
+}
+
+#[tokio::main]
+async fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if args.len() != 3 {
+        fail("usage: haply-probe PORT N");
+    }
+    let port: u16 = args[1].parse().unwrap_or_else(|_| fail("PORT must be a number"));
+    let n: usize = args[2].parse().unwrap_or_else(|_| fail("N must be a number"));
+    let http = format!("http://127.0.0.1:{}", port);
+    let ws = format!("ws://127.0.0.1:{}/", port);
+    let mut device = HaplyDevice::new(&http, &ws)
+        .await
+        .unwrap_or_else(|e| fail(&format!("connect: {}", e)));
+
+    let session = SessionConfigure {
+        profile: Some(ProfileConfig { name: "haply-probe".to_string(), required_version: None }),
+        basis: None,
+        serialization: None,
+        sdf: None,
+    };
+    device.configure_session(session, Some(true)).await.unwrap_or_else(|e| fail(&format!("session: {}", e)));
+
+    // the devices, as the crate reads them from the service's snapshot
+    let start = Instant::now();
+    let configs = loop {
+        if let Ok(c) = device.get_devices().await {
+            if !c.is_empty() {
+                break c;
+            }
+        }
+        if start.elapsed() > Duration::from_secs(10) {
+            fail("no device in the service's snapshot");
+        }
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    };
+    let mut id = String::new();
+    for c in &configs {
+        match c {
+            Config::DeviceConfig(d) => {
+                println!("DEVICE {} {:?}", d.device_info.id, d.type_);
+                if id.is_empty() {
+                    id = d.device_info.id.clone();
+                }
+            }
+            Config::VGConfig(v) => println!("DEVICE {} {:?}", v.id, v.type_),
+            Config::WVGConfig(v) => println!("DEVICE {} {:?}", v.id, v.type_),
+        }
+    }
+    if id.is_empty() {
+        fail("no Inverse3 in the service's snapshot");
+    }
+
+    for k in 0..n {
+        let kf = k as f32;
+        let force = Force { x: 0.5 + 0.01 * kf, y: -0.25, z: 0.001 * kf };
+        let before = device.state.lock().await.timestamp;
+        device
+            .update_force(vec![ForceInput { device_id: id.clone(), forces: force }], Some(true), Some(true))
+            .await
+            .unwrap_or_else(|e| fail(&format!("send: {}", e)));
+        println!("SENT {} {} {} {}", k, force.x, force.y, force.z);
+        let t0 = Instant::now();
+        loop {
+            if device.state.lock().await.timestamp > before {
+                break;
+            }
+            if t0.elapsed() > Duration::from_secs(5) {
+                fail("no state frame answered a force");
+            }
+            tokio::time::sleep(Duration::from_micros(200)).await;
+        }
+        let state = device.read_state().await.unwrap_or_else(|e| fail(&format!("read: {}", e)));
+        let p = state
+            .inverse3
+            .iter()
+            .find(|d| d.device_id == id)
+            .and_then(|d| d.state.cursor_position)
+            .unwrap_or_else(|| fail("the state has no cursor_position"));
+        println!("POS {} {} {} {}", k, p.x, p.y, p.z);
+    }
+    let _ = device.shutdown().await;
+    println!("DONE");
+}
