@@ -20,8 +20,10 @@ import tactus.Vect3D;
  * motors get torque and the board's torque watchdog is busy), every thread of this JVM is listed with its policy:
  * only the loop thread and the threads that zero the motors when it stalls (its watchdog, the board's torque
  * watchdog) may be SCHED_FIFO at the session's priority, the VM and collector pause threads one below it, and the
- * JIT compiler threads at 1; every other thread must be at normal priority. (Before the board's torque watchdog was started at the
- * device's setup, the loop thread started it at the first torque, and it ran at SCHED_FIFO 50.)
+ * JIT compiler threads at 1; every other thread must be at normal priority. It failed on the code before this
+ * change (the board's torque watchdog, started by the loop thread at the first torque, inherited SCHED_FIFO 50),
+ * and caught the JDK's process reaper thread inheriting it when the loop thread was moved before the reaper
+ * was started.
  */
 class ThreadPolicyTest {
 

@@ -101,7 +101,8 @@ public final class HapticStallStress {
                     cmd.addAll(Arrays.asList(jvm.split("\\s+")));
                 }
                 File log = File.createTempFile("tactus-stall-safepoints", ".log");
-                cmd.add(1 + cmd.indexOf("-Djava.awt.headless=true"), "-Xlog:safepoint:file=" + log.getPath() + ":timenanos");
+                cmd.add(1 + cmd.indexOf("-Djava.awt.headless=true"),
+                        "-Xlog:safepoint:file=" + log.getPath() + ":timenanos");
                 cmd.addAll(Arrays.asList(StallChild.class.getName(), Double.toString(seconds),
                         Integer.toString(garbage), Integer.toString(telemetry), log.getPath()));
                 String line = runOnce(cmd, (long) (seconds * 1000) + 30_000);

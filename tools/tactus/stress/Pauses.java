@@ -15,9 +15,9 @@ import java.util.regex.Pattern;
  */
 final class Pauses {
     private static final Pattern LINE = Pattern.compile(
-            "^\\[(\\d+)ns\\] Safepoint \"([^\"]+)\".*Total: (\\d+) ns");
+            "^\\[(\\d+)ns\\] Safepoint \"([^\"]+)\".*Reaching safepoint: (\\d+) ns.*Total: (\\d+) ns");
 
-    private final List<long[]> spans = new ArrayList<>();   // {start, end, 1 if a collection}
+    private final List<long[]> spans = new ArrayList<>();   // {start, end, 1 if a collection, end of reaching}
 
     private Pauses() {
     }
@@ -33,10 +33,11 @@ final class Pauses {
                 Matcher m = LINE.matcher(line);
                 if (m.find()) {
                     long end = Long.parseLong(m.group(1));
-                    long total = Long.parseLong(m.group(3));
+                    long reaching = Long.parseLong(m.group(3));
+                    long total = Long.parseLong(m.group(4));
                     boolean gc = m.group(2).contains("G1") || m.group(2).contains("GC")
                             || m.group(2).contains("Collect") || m.group(2).contains("Z");
-                    p.spans.add(new long[] {end - total, end, gc ? 1 : 0});
+                    p.spans.add(new long[] {end - total, end, gc ? 1 : 0, end - total + reaching});
                 }
             }
         } catch (IOException e) {
@@ -54,6 +55,22 @@ final class Pauses {
             }
             long lo = Math.max(from, s[0]);
             long hi = Math.min(to, s[1]);
+            if (hi > lo) {
+                ms += (hi - lo) / 1e6;
+            }
+        }
+        return ms;
+    }
+
+    /**
+     * Milliseconds of [from, to] spent waiting for threads to reach a safepoint (the part of a safepoint before
+     * every Java thread has stopped: a thread that the machine's load keeps off the processor delays it).
+     */
+    double reachingMs(long from, long to) {
+        double ms = 0;
+        for (long[] s : spans) {
+            long lo = Math.max(from, s[0]);
+            long hi = Math.min(to, s[3]);
             if (hi > lo) {
                 ms += (hi - lo) / 1e6;
             }

@@ -213,9 +213,12 @@ public final class StallChild {
             }
             double lateMs = late / 1e6;
             if (VERBOSE && lateMs > 2) {
-                System.out.printf(Locale.ROOT, "late tick %d at %.3f: %.3f ms, the tick before spent %.3f ms in the model, %.3f ms of it in safepoints%n", i,
-                        (System.currentTimeMillis() - (System.nanoTime() - avatar.starts[i]) / 1_000_000L) / 1e3, lateMs, (avatar.modelDone[i - 1] - avatar.starts[i - 1]) / 1e6,
-                        pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false));
+                long at = System.currentTimeMillis() - (System.nanoTime() - avatar.starts[i]) / 1_000_000L;
+                System.out.printf(Locale.ROOT, "late tick %d at %.3f: %.3f ms, the tick before spent %.3f ms in the "
+                                + "model, %.3f ms of it in safepoints (%.3f ms reaching them)%n", i, at / 1e3, lateMs,
+                        (avatar.modelDone[i - 1] - avatar.starts[i - 1]) / 1e6,
+                        pauses.overlapMs(avatar.starts[i] - late, avatar.starts[i], false),
+                        pauses.reachingMs(avatar.starts[i] - late, avatar.starts[i]));
             }
             worst = Math.max(worst, lateMs);
             if (lateMs > 20) {
