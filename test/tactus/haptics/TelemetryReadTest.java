@@ -23,22 +23,7 @@ class TelemetryReadTest {
             Device device = new Device((byte) 3, board);
             HaplyPreset.HAPLY_2018.configure(device);
             device.device_set_parameters();
-            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new AvatarLink() {
-                @Override
-                public void setTarget(double x, double y, double z) {
-                }
-
-                @Override
-                public void takeForce(double[] out) {
-                    out[0] = 0;
-                    out[1] = 0;
-                    out[2] = 0;
-                }
-
-                @Override
-                public void step(int n) {
-                }
-            });
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new NoForceAvatar());
             loop.start();
             long deadline = System.nanoTime() + 20_000_000_000L;
             while (loop.ticks() < 300 && loop.isRunning() && System.nanoTime() < deadline) {

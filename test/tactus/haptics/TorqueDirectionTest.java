@@ -18,7 +18,7 @@ class TorqueDirectionTest {
             Device device = new Device((byte) 3, board);
             HaplyPreset.HAPLY_2018.configure(device);
             device.device_set_parameters();
-            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new NoForce());
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new NoForceAvatar());
             for (double nm : new double[] {0.124, 0.2, 0.5}) {
                 IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> loop.setTorqueLimit(nm));
                 assertTrue(e.getMessage().contains(Double.toString(nm)) && e.getMessage().contains("0.123"), e.getMessage());
@@ -65,25 +65,6 @@ class TorqueDirectionTest {
             assertEquals(36, device.scaledWrites());
         } finally {
             board.close();
-        }
-    }
-
-    private static final class NoForce implements AvatarLink {
-        @Override
-        public void setTarget(double x, double y, double z) {
-            // nothing
-        }
-
-        @Override
-        public void takeForce(double[] out) {
-            out[0] = 0;
-            out[1] = 0;
-            out[2] = 0;
-        }
-
-        @Override
-        public void step(int n) {
-            // nothing
         }
     }
 }
