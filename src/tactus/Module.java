@@ -1,5 +1,7 @@
 package tactus;
 
+import tactus.internal.model.Check;
+
 /**
  * A handle on one module (a mass or an interaction) of a {@link PhysicalModel}: a thin view onto its slot
  * in the engine's arrays. A handle stays valid until its module leaves the model (removed, cleared, or a

@@ -1,10 +1,23 @@
 package tactus;
 
 import java.util.concurrent.locks.Lock;
-import java.util.concurrent.locks.ReentrantLock;
 import processing.core.PVector;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
+import tactus.internal.edit.ModuleBuilder;
+import tactus.internal.edit.OscTuning;
+import tactus.internal.model.Check;
+import tactus.internal.model.ApiAccess;
+import tactus.internal.model.ModelCore;
+import tactus.internal.model.ModuleTypes;
+import tactus.internal.model.PaperLeniency;
+import tactus.internal.read.PlanLabels;
+import tactus.internal.read.SnapshotWriter;
+import tactus.internal.realtime.Command;
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.realtime.Ownership;
+import tactus.internal.realtime.Stepping;
+import tactus.internal.realtime.RampTargets;
 
 /**
  * A mass-interaction physical model: masses and interactions addressed by name, simulated at a fixed rate with
@@ -35,11 +48,16 @@ import tactus.engine.MassKind;
 public class PhysicalModel {
     /** The library version. */
     public static final String VERSION = "0.2.0";
-    /** Element updates (masses plus interactions) after which a stepping batch lets a waiting thread in. */
-    private static final int SLICE_ELEMENTS = 65_536;
 
-    private final ReentrantLock lock = new ReentrantLock(true);
+    static {
+        ApiAccess.install(new ApiDoors());
+    }
+
     final ModelCore core;
+    /** How calls get in and out: the lock, or the owner's gate in realtime mode. */
+    final ModelLock gate;
+    /** The stepping calls, in both modes. */
+    private final Stepping stepping;
 
     /**
      * Creates an empty model.
@@ -59,6 +77,8 @@ public class PhysicalModel {
             throw new IllegalArgumentException("PhysicalModel: the unit system must not be null");
         }
         core = new ModelCore(this, system, simRate, displayRate);
+        gate = new ModelLock(core);
+        stepping = new Stepping(core, gate);
     }
 
     /** Creates an empty model in algorithmic units. */
@@ -88,7 +108,7 @@ public class PhysicalModel {
      *     other, in call order)
      */
     public Lock getLock() {
-        return lock;
+        return gate.lock();
     }
 
     /** @return the unit system of this model. */
@@ -114,120 +134,35 @@ public class PhysicalModel {
         });
     }
 
-    // =================================================================== locking, for the facade and its handles
+    // =================================================================== entering a call, for the facade and its handles
 
-    /** Commands dropped in realtime modes that have ended (see {@link #getDroppedCommands()}); volatile for readers. */
-    private volatile long droppedInEndedModes;
-    /** Nesting of the facade calls of the thread that holds the lock (guarded by the lock). */
-    private int editDepth;
-    /** The realtime mode the outermost facade call of the lock holder began an edit in, or null (guarded by it). */
-    private Ownership editOwn;
-
-    /**
-     * Enters a facade call. While the model is stepped in realtime ({@link #beginRealtimeStepping()}), the owner
-     * takes no lock (it holds the mode's gate for the call); any other thread takes the lock, and its outermost
-     * facade call, whatever locks it already holds ({@link #getLock()} included), first waits until the changes it
-     * queued earlier are applied, then prepares its own change as a command (see {@link Ownership}).
-     */
     void enter() {
-        enter(false);
+        gate.enter();
     }
 
-    /**
-     * Enters a facade call that makes a parameter or state change. While the model is stepped in realtime, the change
-     * is prepared without waiting for earlier queued changes to be applied (under THROW it does wait, so that its
-     * undo is exact): a run of setters returns at once, in order.
-     */
     void enterChange() {
-        enter(true);
+        gate.enterChange();
     }
 
-    private void enter(boolean change) {
-        Ownership o = core.own;
-        if (o != null && o.isOwnerThread() && o.enterAsOwner()) {
-            return;
-        }
-        lock.lock();
-        if (editDepth++ > 0) {
-            return;
-        }
-        try {
-            o = core.own;
-            if (o != null && o.endPending()) {
-                endMode(o); // the owner ended the mode from inside a stepping call: finish it here
-                o = null;
-            }
-            editOwn = o;
-            if (o != null) {
-                if (change) {
-                    o.beginChange();
-                } else {
-                    o.beginEdit();
-                }
-            }
-        } catch (RuntimeException | Error e) {
-            editDepth--;
-            editOwn = null;
-            lock.unlock();
-            throw e;
-        }
-    }
-
-    /** Takes the lock and checks, under it, that a handle's module is still part of the model. */
+    /** Enters and checks, once in, that a handle's module is still part of the model. */
     void enter(Module handle) {
-        enter();
+        gate.enter();
         if (!handle.isValid()) {
-            exit();
+            gate.exit();
             handle.checkValid();
         }
     }
 
-    /** Leaves a facade call; the outermost call of an editor of a realtime-stepped model posts what it prepared. */
     void exit() {
-        Ownership o = core.own;
-        if (o != null && o.ownerInCall()) {
-            o.exitAsOwner();
-            return;
-        }
-        if (!lock.isHeldByCurrentThread()) {
-            return;
-        }
-        try {
-            if (--editDepth == 0) {
-                Ownership e = editOwn;
-                editOwn = null;
-                if (e != null) {
-                    e.endEdit();
-                }
-            }
-        } finally {
-            lock.unlock();
-        }
+        gate.exit();
     }
 
-    /**
-     * Runs a structural change (modules, subsets, groups, rates, divergence settings): under the lock, or, while the
-     * model is stepped in realtime, as a command the stepping thread runs between two steps while this thread waits
-     * (its stability analysis then runs here).
-     */
     private <T> T structural(java.util.function.Supplier<T> body) {
-        enter();
-        try {
-            Ownership o = core.own;
-            if (o == null || o.ownerInCall() || o.isApplying()) {
-                return body.get(); // not realtime, or already on the thread that applies changes
-            }
-            return o.run(body);
-        } finally {
-            exit();
-        }
+        return gate.structural(body);
     }
 
     private void structuralDo(Runnable body) {
-        structural(() -> {
-            body.run();
-            return null;
-        });
+        gate.structuralDo(body);
     }
 
     // =================================================================== realtime stepping
@@ -246,15 +181,7 @@ public class PhysicalModel {
      * which calls are queued and when they apply. Calling it again does nothing.
      */
     public void beginRealtimeStepping() {
-        enter();
-        try {
-            if (core.own == null) {
-                core.snapshots.publishIfDirty(); // from now on only the owner may publish
-                core.setOwnership(new Ownership(core));
-            }
-        } finally {
-            exit();
-        }
+        gate.beginRealtime();
     }
 
     /**
@@ -265,48 +192,10 @@ public class PhysicalModel {
      * thread holds the model's lock).
      */
     public void endRealtimeStepping() {
-        Ownership o = core.own;
-        if (o != null && o.isOwnerThread()) {
-            if (o.ownerInCall()) {
-                o.requestEnd();
-                return;
-            }
-            o.releaseRole(); // the owner between two calls: give the role up, then end the mode as any thread
-        }
-        enter();
-        try {
-            o = core.own;
-            if (o != null) {
-                endMode(o);
-            }
-        } finally {
-            exit();
-        }
+        gate.endRealtime();
     }
 
-    /**
-     * Called by the owner once it gave the role up after {@link #endRealtimeStepping()} from inside a stepping call:
-     * ends the mode now if no other thread holds the lock (else the next thread that enters does).
-     */
-    void finishEndIfFree(Ownership o) {
-        if (!lock.tryLock()) {
-            return;
-        }
-        try {
-            if (core.own == o && o.endPending() && editDepth == 0) {
-                endMode(o);
-            }
-        } finally {
-            lock.unlock();
-        }
-    }
 
-    /** Ends a realtime mode (the caller holds the lock): drains and closes it, keeps its count of dropped commands. */
-    private void endMode(Ownership o) {
-        o.close();
-        droppedInEndedModes += o.droppedCount();
-        core.setOwnership(null);
-    }
 
     /**
      * @return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
@@ -341,90 +230,16 @@ public class PhysicalModel {
      *     skipped (the others applied) and nothing was thrown
      */
     public long getDroppedCommands() {
-        Ownership o = core.own;
-        return droppedInEndedModes + (o == null ? 0 : o.droppedCount());
+        return gate.droppedCommands();
     }
 
-    /**
-     * Queues the start of a controller's ramp when the model is stepped in realtime by another thread.
-     *
-     * @return false when the caller should start the ramp itself (no realtime stepping, or it is the owner)
-     */
-    boolean postRamp(ParamController pc, float target, long steps, Vect3D center) {
-        Ownership o = core.own;
-        if (o == null || o.isOwnerThread()) {
-            return false;
-        }
-        enterChange();
-        try {
-            RampTargets t = RampTargets.resolve(core, pc.getSubsetName(), pc.getParamName(), pc.lastTarget(), target,
-                    center);
-            Ownership now = core.own;
-            if (now == null) {
-                return false; // the mode ended while this thread waited for the lock
-            }
-            now.post(new Command() {
-                @Override
-                boolean apply(ModelCore c) {
-                    pc.startRamp(target, steps, t);
-                    return true;
-                }
-            });
-        } finally {
-            exit();
-        }
-        return true;
-    }
 
     /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
     public boolean isRealtimeStepping() {
         return core.own != null;
     }
 
-    /** Results of {@link #stepOwned} other than a step count. */
-    private static final int ENDED = -1, REFUSED = -2;
 
-    /**
-     * One stepping call of a realtime-stepped model on the calling thread (which takes the owner role if it is free):
-     * applies the queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
-     *
-     * @param call the facade call, for the message when another thread owns the model
-     * @return the number of steps run; {@link #ENDED} when the mode is ending (the caller steps in locked mode);
-     *     {@link #REFUSED} when another thread owns the model (nothing was done, the message was printed once)
-     */
-    private int stepOwned(Ownership o, int n, String call) {
-        int r = o.beginStep(n);
-        if (r == Ownership.ENDED) {
-            return ENDED;
-        }
-        if (r == Ownership.REFUSED) {
-            o.refused(call);
-            return REFUSED;
-        }
-        try {
-            o.applyQueued();
-            int done = 0;
-            while (done < n) {
-                boolean ramping = core.ramping();
-                int ran;
-                if (ramping) {
-                    core.advanceRamps();
-                    ran = core.engine.step(1);
-                } else {
-                    ran = core.engine.step(n - done);
-                }
-                core.snapshots.afterSteps(ran);
-                done += ran;
-                if (ran == 0) {
-                    break;
-                }
-            }
-            core.watch.check();
-            return done;
-        } finally {
-            o.endStep();
-        }
-    }
 
     // =================================================================== rates and stepping
 
@@ -451,31 +266,11 @@ public class PhysicalModel {
      * @param rate steps per second, &gt; 0
      */
     public void setSimRate(int rate) {
-        checkSimRate(rate);
-        Object holder = simRateHolder;
-        if (holder != null && simRateSession == core.own) {
-            throw new IllegalStateException("setSimRate(" + rate + "): refused, the model stays at " + getSimRate()
-                    + " steps/s: " + holder);
-        }
-        changeSimRate(rate);
+        stepping.setSimRate(rate);
     }
 
-    private void changeSimRate(int rate) {
-        checkSimRate(rate);
-        structuralDo(() -> {
-            core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
-        });
-    }
 
-    private static void checkSimRate(int rate) {
-        if (rate <= 0) {
-            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
-        }
-    }
 
-    /** The realtime driver that fixes the rate (see {@link #holdSimRate(Object)}), and the session it holds it for. */
-    private volatile Object simRateHolder;
-    private volatile Object simRateSession;
 
     /**
      * Fixes the simulation rate for the driver that steps the model in realtime and dictates its rate: a
@@ -490,22 +285,7 @@ public class PhysicalModel {
      * @throws IllegalStateException if the model is not stepped in realtime
      */
     public java.util.function.IntConsumer holdSimRate(Object holder) {
-        if (holder == null) {
-            throw new IllegalArgumentException("holdSimRate: the holder must not be null");
-        }
-        enter();
-        try {
-            Ownership o = core.own;
-            if (o == null) {
-                throw new IllegalStateException("holdSimRate: the model is not stepped in realtime; call "
-                        + "beginRealtimeStepping() first");
-            }
-            simRateSession = o;
-            simRateHolder = holder;
-        } finally {
-            exit();
-        }
-        return this::changeSimRate;
+        return stepping.holdSimRate(holder);
     }
 
     /** @return the display rate, in frames per second. */
@@ -551,58 +331,13 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
-        Ownership o = core.own;
-        if (o != null && !o.isEnding()) {
-            if (o.refusesStepping()) {
-                o.refused("draw_physics()");
-                return 0;
-            }
-            int frame = structural(() -> core.time.stepsForFrame());
-            int done = stepOwned(o, frame, "draw_physics()");
-            if (done == REFUSED) {
-                return 0;
-            }
-            return done == ENDED ? lockedFrame(frame) : frame; // ended meanwhile: this frame's steps, locked
-        }
-        return lockedFrame(-1);
+        return stepping.frame();
     }
 
-    /** Runs one display frame in locked mode: {@code n} steps, or the frame's own count when n &lt; 0. */
-    private int lockedFrame(int frame) {
-        enter();
-        try {
-            int n = frame >= 0 ? frame : core.time.stepsForFrame();
-            core.snapshots.beginFrame();
-            try {
-                runSteps(n);
-            } catch (RuntimeException | Error e) {
-                core.snapshots.abandonFrame();
-                throw e;
-            }
-            core.snapshots.endFrame();
-            return n;
-        } finally {
-            exit();
-        }
-    }
 
     /** Runs one simulation step. */
     public void computeStep() {
-        Ownership o = core.own;
-        if (o != null && !o.isEnding() && stepOwned(o, 1, "computeStep()") != ENDED) {
-            return;
-        }
-        enter();
-        try {
-            if (core.ramping()) {
-                runRampedSteps(1);
-                return;
-            }
-            core.snapshots.afterSteps(core.engine.step(1));
-            core.watch.check();
-        } finally {
-            exit();
-        }
+        stepping.step();
     }
 
     /** Runs {@code n} simulation steps (n &ge; 0). */
@@ -610,91 +345,12 @@ public class PhysicalModel {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
-        Ownership o = core.own;
-        if (o != null && !o.isEnding() && stepOwned(o, n, "computeNSteps()") != ENDED) {
-            return;
-        }
-        enter();
-        try {
-            runSteps(n);
-        } finally {
-            exit();
-        }
+        stepping.steps(n);
     }
 
-    /**
-     * Runs n steps in slices; between two slices a thread waiting for the lock goes first. A divergence stops
-     * the batch and is reported.
-     */
-    private void runSteps(int n) {
-        if (core.ramping()) {
-            runRampedSteps(n);
-            return;
-        }
-        int slice = sliceSteps();
-        int done = 0;
-        while (done < n) {
-            int chunk = Math.min(slice, n - done);
-            int ran = core.engine.step(chunk);
-            core.snapshots.afterSteps(ran);
-            done += ran;
-            if (ran < chunk) {
-                break;
-            }
-            if (done < n) {
-                letWaitingThreadIn();
-            }
-        }
-        core.watch.check();
-    }
 
-    /**
-     * Runs n steps one at a time while parameter controllers ramp, then checks stability once. Like
-     * {@link #runSteps}, it lets a thread waiting for the lock in after every slice of steps, so that a change made
-     * during a long ramped batch never waits for the whole batch.
-     */
-    private void runRampedSteps(int n) {
-        int slice = sliceSteps();
-        int done = 0;
-        int inSlice = 0;
-        while (done < n) {
-            boolean ramping = core.ramping();
-            if (ramping) {
-                core.advanceRamps();
-            }
-            int ran = core.engine.step(1);
-            core.snapshots.afterSteps(ran);
-            done += ran;
-            if (ran == 0) {
-                break;
-            }
-            if (!ramping) {
-                core.guard.afterChange(null);
-                runSteps(n - done);
-                return;
-            }
-            if (++inSlice == slice && done < n) {
-                inSlice = 0;
-                letWaitingThreadIn();
-            }
-        }
-        core.guard.afterChange(null);
-        core.watch.check();
-    }
 
-    /** @return the steps of one slice of a locked-mode batch: about {@link #SLICE_ELEMENTS} element updates. */
-    private int sliceSteps() {
-        int elements = Math.max(1, core.dir.mats.size() + core.dir.links.size());
-        return Math.max(core.engine.threads() > 1 ? 8 : 1, SLICE_ELEMENTS / elements);
-    }
 
-    /** Between two slices of a locked-mode batch: a thread waiting for the (fair) lock goes first. */
-    private void letWaitingThreadIn() {
-        if (lock.hasQueuedThreads()) {
-            lock.unlock();
-            lock.lock();
-        }
-    }
 
     /**
      * Lets large models step on several threads (1, the default, keeps everything on the calling thread). Only
@@ -784,29 +440,7 @@ public class PhysicalModel {
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        SnapshotWriter w = core.snapshots;
-        w.request();
-        if (core.own == null) {
-            // locked mode: this thread may publish, holding the lock; it waits for it only to publish a topology
-            // change nobody has read yet, else it leaves a busy lock alone (the writer's next frame publishes)
-            boolean locked;
-            if (w.dirty()) {
-                lock.lock();
-                locked = true;
-            } else {
-                locked = lock.tryLock();
-            }
-            if (locked) {
-                try {
-                    if (core.own == null) {
-                        w.publishForReader();
-                    }
-                } finally {
-                    lock.unlock();
-                }
-            }
-        }
-        return w.exchange.latest();
+        return stepping.snapshot().view;
     }
 
     // =================================================================== global medium
@@ -1191,7 +825,14 @@ public class PhysicalModel {
     private String nameOf(Mass m) {
         enter();
         try {
-            return core.builder.nameOf(m);
+            if (m == null) {
+                throw new IllegalArgumentException("a mass handle must not be null");
+            }
+            if (m.model != this) {
+                throw new IllegalArgumentException("mass handle " + m + " belongs to another model");
+            }
+            m.checkValid();
+            return core.dir.massName(m.id);
         } finally {
             exit();
         }

@@ -15,6 +15,9 @@ import java.util.concurrent.locks.Lock;
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import tactus.internal.model.ModelCore;
+import tactus.internal.realtime.Command;
+import tactus.internal.realtime.Ownership;
 
 /**
  * A stress test of the realtime command queue and of the owner hand-over: 1 to 4 producer threads post commands
@@ -49,7 +52,7 @@ class CommandQueueStressTest {
         }
 
         @Override
-        boolean apply(ModelCore core) {
+        public boolean apply(ModelCore core) {
             board.applied(this, core.own);
             if (k % 13 == 12) {
                 throw new IllegalStateException("marker " + k + " fails on purpose");

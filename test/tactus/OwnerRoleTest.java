@@ -14,6 +14,7 @@ import java.time.Duration;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * The owner role of a realtime-stepped model ({@link PhysicalModel#beginRealtimeStepping()}): exactly one thread

@@ -13,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.Lock;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * The realtime command queue survives the mistakes a sketch makes in its first hour (issue 15): a queued change whose

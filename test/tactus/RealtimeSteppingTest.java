@@ -16,6 +16,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * Realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the stepping thread takes no lock, other threads'

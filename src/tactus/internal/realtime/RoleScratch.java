@@ -1,0 +1,24 @@
+package tactus.internal.realtime;
+
+import tactus.internal.model.ModelCore;
+
+/**
+ * A three-element scratch vector for each side of a realtime-stepped model: one for its owner (the stepping thread,
+ * which takes no lock) and one for the threads that hold the model's lock (they take turns). An owner's read and a
+ * lock holder's read may run at the same time; with one shared vector each could return the other's value.
+ */
+public final class RoleScratch {
+    private final ModelCore core;
+    private final double[] owner = new double[3];
+    private final double[] locked = new double[3];
+
+    public RoleScratch(ModelCore core) {
+        this.core = core;
+    }
+
+    /** @return the calling thread's scratch vector: the owner's own while the model is stepped in realtime. */
+    public double[] get() {
+        Ownership o = core.own;
+        return o != null && o.isOwnerThread() ? owner : locked;
+    }
+}
