@@ -18,6 +18,21 @@ final class ApiDoors extends ApiAccess {
     }
 
     @Override
+    public PhysicalModel modelOf(Module handle) {
+        return handle.model;
+    }
+
+    @Override
+    public int idOf(Module handle) {
+        return handle.id;
+    }
+
+    @Override
+    public void checkLive(Module handle) {
+        handle.checkValid();
+    }
+
+    @Override
     public void retire(Module handle) {
         handle.invalidate();
     }

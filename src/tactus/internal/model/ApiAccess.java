@@ -43,6 +43,15 @@ public abstract class ApiAccess {
     /** @return a new handle of the kind's class on an interaction of the model. */
     public abstract Interaction newLinkHandle(PhysicalModel model, int id, LinkKind kind);
 
+    /** @return the model a handle belongs to. */
+    public abstract PhysicalModel modelOf(Module handle);
+
+    /** @return the engine id of a handle's module. */
+    public abstract int idOf(Module handle);
+
+    /** Throws the handle's {@code IllegalStateException} if its module is no longer part of its model. */
+    public abstract void checkLive(Module handle);
+
     /** Marks a handle as no longer part of its model: every later call on it throws. */
     public abstract void retire(Module handle);
 

@@ -190,6 +190,18 @@ public final class ModelLock {
         core.setOwnership(null);
     }
 
+    /** @return the thread that steps the model in realtime, or null (see {@code PhysicalModel.getRealtimeOwner()}). */
+    public Thread owner() {
+        Ownership o = mode();
+        return o == null ? null : o.owner();
+    }
+
+    /** Makes the calling thread the realtime owner (see {@code PhysicalModel.takeRealtimeStepping()}). */
+    public boolean claim() {
+        Ownership o = mode();
+        return o != null && o.claim();
+    }
+
     /** @return the commands dropped over the life of the model (see {@code PhysicalModel.getDroppedCommands()}). */
     public long droppedCommands() {
         Ownership o = mode();
