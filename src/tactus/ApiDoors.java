@@ -1,45 +1,28 @@
 package tactus;
 
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
 import tactus.internal.model.ApiAccess;
-import tactus.internal.read.SnapshotBuffer;
+import tactus.internal.snapshot.SnapshotBuffer;
 
 /** The package's side of {@link ApiAccess}: the package-private doors the machinery may open. */
 final class ApiDoors extends ApiAccess {
     @Override
-    public Mass newMassHandle(PhysicalModel model, int id, MassKind kind) {
-        return Mass.create(model, id, kind);
+    public Object modelOf(Object handle) {
+        return ((Module) handle).core;
     }
 
     @Override
-    public Interaction newLinkHandle(PhysicalModel model, int id, LinkKind kind) {
-        return Interaction.create(model, id, kind);
+    public int idOf(Object handle) {
+        return ((Module) handle).id;
     }
 
     @Override
-    public PhysicalModel modelOf(Module handle) {
-        return handle.model;
+    public void checkLive(Object handle) {
+        ((Module) handle).checkValid();
     }
 
     @Override
-    public int idOf(Module handle) {
-        return handle.id;
-    }
-
-    @Override
-    public void checkLive(Module handle) {
-        handle.checkValid();
-    }
-
-    @Override
-    public void retire(Module handle) {
-        handle.invalidate();
-    }
-
-    @Override
-    public ModelSnapshot newSnapshotView(SnapshotBuffer buffer) {
-        return new ModelSnapshot(buffer);
+    public Object newSnapshotView(Object buffer) {
+        return new ModelSnapshot((SnapshotBuffer) buffer);
     }
 
     @Override

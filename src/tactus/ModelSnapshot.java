@@ -1,8 +1,8 @@
 package tactus;
 
-import tactus.internal.read.SnapshotBuffer;
-import tactus.internal.read.SnapshotWriter;
-import tactus.internal.read.SnapshotWriter;
+import tactus.internal.snapshot.SnapshotBuffer;
+import tactus.internal.snapshot.SnapshotWriter;
+
 
 /**
  * A consistent copy of a model's state at one step, for drawing: every mass's position, type and name index

@@ -1,9 +1,9 @@
 package tactus;
 
-import tactus.internal.model.ModelCore;
 import tactus.internal.realtime.Command;
 import tactus.internal.realtime.Ownership;
 import tactus.internal.realtime.RampTargets;
+import tactus.internal.ModelCore;
 
 /**
  * Ramps one parameter of a subset to a target over a set time, one simulation step at a time, as the paper's
@@ -88,7 +88,7 @@ public class ParamController extends AbstractController {
         if (o == null || o.isOwnerThread()) {
             return false;
         }
-        pm.enterChange();
+        pm.gate.enterChange();
         try {
             RampTargets t = RampTargets.resolve(pm.core, subsetName, param, previous, target, center);
             Ownership now = (Ownership) pm.core.own;
@@ -97,7 +97,7 @@ public class ParamController extends AbstractController {
             }
             now.post(new RampStart(this, target, steps, t));
         } finally {
-            pm.exit();
+            pm.gate.exit();
         }
         return true;
     }

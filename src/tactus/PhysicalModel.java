@@ -2,8 +2,6 @@ package tactus;
 
 import java.util.concurrent.locks.Lock;
 import processing.core.PVector;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
 import tactus.internal.model.Check;
 import tactus.internal.calls.BuildCalls;
 import tactus.internal.calls.ParamCalls;
@@ -11,9 +9,10 @@ import tactus.internal.calls.QueryCalls;
 import tactus.internal.calls.SettingsCalls;
 import tactus.internal.calls.StateCalls;
 import tactus.internal.model.ApiAccess;
-import tactus.internal.model.ModelCore;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.realtime.Stepping;
+import tactus.internal.ModelCore;
+import tactus.internal.calls.ControllerBook;
 
 /**
  * A mass-interaction physical model: masses and interactions addressed by name, simulated at a fixed rate with
@@ -60,6 +59,7 @@ public class PhysicalModel {
     private final QueryCalls query;
     private final StateCalls state;
     private final ParamCalls param;
+    private final ControllerBook controllers = new ControllerBook();
 
     /**
      * Creates an empty model.
@@ -78,14 +78,18 @@ public class PhysicalModel {
         if (system == null) {
             throw new IllegalArgumentException("PhysicalModel: the unit system must not be null");
         }
-        core = new ModelCore(this, system, simRate, displayRate);
+        ModuleHandles handles = new ModuleHandles();
+        core = new ModelCore(system, simRate, displayRate, handles);
         gate = new ModelLock(core);
+        handles.core = core;
+        handles.gate = gate;
+        core.ramps = controllers;
         stepping = new Stepping(core, gate);
-        settings = new SettingsCalls(this, core, gate);
-        build = new BuildCalls(this, core, gate);
-        query = new QueryCalls(this, core, gate);
-        state = new StateCalls(this, core, gate);
-        param = new ParamCalls(this, core, gate);
+        settings = new SettingsCalls(core, gate);
+        build = new BuildCalls(core, gate);
+        query = new QueryCalls(core, gate, controllers);
+        state = new StateCalls(core, gate);
+        param = new ParamCalls(core, gate);
     }
 
     /** Creates an empty model in algorithmic units. */
@@ -129,29 +133,6 @@ public class PhysicalModel {
      */
     public void setParamSystem(paramSystem system) {
         settings.setParamSystem(system);
-    }
-
-    // =================================================================== entering a call, for the module handles
-
-    void enter() {
-        gate.enter();
-    }
-
-    void enterChange() {
-        gate.enterChange();
-    }
-
-    /** Enters and checks, once in, that a handle's module is still part of the model. */
-    void enter(Module handle) {
-        gate.enter();
-        if (!handle.isValid()) {
-            gate.exit();
-            handle.checkValid();
-        }
-    }
-
-    void exit() {
-        gate.exit();
     }
 
     // =================================================================== realtime stepping
@@ -371,7 +352,7 @@ public class PhysicalModel {
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        return stepping.snapshot().view;
+        return (ModelSnapshot) stepping.snapshot().view;
     }
 
     // =================================================================== global medium
@@ -965,7 +946,8 @@ public class PhysicalModel {
      * @param paramName "mass", "stiffness", "damping", "dist" or "distX"
      */
     public void addParamController(String name, String subsetName, String paramName, float rampTime) {
-        query.addParamController(name, subsetName, paramName, rampTime);
+        Check.name("addParamController", name);
+        query.addParamController(name, new ParamController(this, rampTime, subsetName, paramName));
     }
 
     /** @return the named parameter controller, or null when there is none. */

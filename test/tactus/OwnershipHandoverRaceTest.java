@@ -124,7 +124,7 @@ class OwnershipHandoverRaceTest {
                 }
             });
             pm.beginRealtimeStepping();
-            own = pm.core.own;
+            own = pm.gate.mode();
             own.idleNanos = 20_000_000L;
             own.waitLimitNanos = WAIT_LIMIT_NANOS;
         }

@@ -26,11 +26,11 @@ import java.util.stream.Stream;
  * </pre>
  *
  * <p>How it counts. Each top-level type of the source root is a node. A file uses another type when, with its
- * comments and string literals removed, it imports it (single-type or static import), names it with its package
+ * comments, string literals and enum constant names removed, it imports it (single-type or static import), names it with its package
  * ({@code tactus.engine.Engine}), or names it by its simple name when both are in the same package or the file
  * imports that package with {@code *}. Rooms are packages: a room uses another room when one of its files uses one
  * of that room's types. An arrow "runs back up" when it points against the house's order: the order is found by
- * the greedy heuristic of Eades, Lin and Smyth (take sinks to the bottom, sources to the top, otherwise the node
+ * the strongly connected components in topological order and, inside each, the greedy heuristic of Eades, Lin and Smyth (take sinks to the bottom, sources to the top, otherwise the node
  * with the most outgoing minus incoming arrows to the top; ties by name), and the arrows it cannot point downward
  * are the ones counted; an acyclic graph has none. The same count is given for the rooms (packages) and for the
  * types (files), and it also prints the files of the top package and the code lines of {@code PhysicalModel}
@@ -39,6 +39,8 @@ import java.util.stream.Stream;
 public final class HouseMap {
     private static final Pattern PACKAGE = Pattern.compile("(?m)^package\\s+([\\w.]+)\\s*;");
     private static final Pattern IMPORT = Pattern.compile("(?m)^import\\s+(static\\s+)?([\\w.]+?)(\\.\\*)?\\s*;");
+    /** The constants of an enum: their names are not uses of the types they may spell (matModuleType.Mass3D). */
+    private static final Pattern ENUM_CONSTANTS = Pattern.compile("\\benum\\s+\\w+[^{]*\\{([^;}]*)");
     private static final Pattern WORD = Pattern.compile("[A-Za-z_$][\\w$]*(?:\\s*\\.\\s*[A-Za-z_$][\\w$]*)*");
 
     private HouseMap() {
@@ -106,6 +108,10 @@ public final class HouseMap {
             }
         }
         String body = IMPORT.matcher(PACKAGE.matcher(text).replaceAll("")).replaceAll("");
+        Matcher en = ENUM_CONSTANTS.matcher(body);
+        if (en.find()) {
+            body = body.substring(0, en.start(1)) + body.substring(en.end(1));
+        }
         Map<String, List<String>> bySimpleName = new HashMap<>();
         for (String t : pkgOf.keySet()) {
             String p = pkgOf.get(t);

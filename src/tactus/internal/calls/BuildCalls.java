@@ -1,19 +1,40 @@
 package tactus.internal.calls;
 
-import tactus.*;
+import tactus.Attractor3D;
+import tactus.Bubble3D;
+import tactus.Contact3D;
+import tactus.Damper3D;
+import tactus.Ground1D;
+import tactus.Ground3D;
+import tactus.HapticInput3D;
+import tactus.Interaction;
+import tactus.Mass;
+import tactus.Mass1D;
+import tactus.Mass2DPlane;
+import tactus.Mass3D;
+import tactus.Mass3DSimple;
+import tactus.Osc1D;
+import tactus.Osc3D;
+import tactus.PlaneContact3D;
+import tactus.PosInput3D;
+import tactus.Rope3D;
+import tactus.Spring3D;
+import tactus.SpringDamper1D;
+import tactus.SpringDamper3D;
+import tactus.Vect3D;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.internal.edit.ModuleBuilder;
 import tactus.internal.edit.OscTuning;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.PaperLeniency;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /** The facade calls that build and edit a model: adding masses and interactions, tuning oscillators, removals, subsets and their grouped parameters, contact groups. Each enters the model once and hands the work to its room. Not API. */
 public final class BuildCalls extends Calls {
-    public BuildCalls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        super(model, core, gate);
+    public BuildCalls(ModelCore core, ModelLock gate) {
+        super(core, gate);
     }
 
     public Mass3D addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
@@ -59,7 +80,7 @@ public final class BuildCalls extends Calls {
 
     private Mass addTunedOsc(String op, MassKind kind, String name, double mass, double freqHz, double t60, Vect3D pos, Vect3D vel) {
         return structural(() -> {
-            double[] kz = OscTuning.coefficients(core, op, name, mass, freqHz, t60);
+            double[] kz = OscTuning.coefficients(core, core.params, op, name, mass, freqHz, t60);
             return addMass(op, kind, name, mass, pos, vel, kz[0], kz[1], 1);
         });
     }
@@ -67,7 +88,7 @@ public final class BuildCalls extends Calls {
     public void tuneOsc(String name, double freqHz, double t60) {
         enterChange();
         try {
-            OscTuning.tune(core, "tuneOsc", core.dir.massId("tuneOsc", name), freqHz, t60);
+            OscTuning.tune(core, core.params, "tuneOsc", core.dir.massId("tuneOsc", name), freqHz, t60);
         } finally {
             exit();
         }
@@ -76,7 +97,7 @@ public final class BuildCalls extends Calls {
     public double getOscFrequency(String name) {
         enter();
         try {
-            return OscTuning.frequency(core, "getOscFrequency", core.dir.massId("getOscFrequency", name));
+            return OscTuning.frequency(core, core.params, "getOscFrequency", core.dir.massId("getOscFrequency", name));
         } finally {
             exit();
         }
@@ -85,7 +106,7 @@ public final class BuildCalls extends Calls {
     public double getOscT60(String name) {
         enter();
         try {
-            return OscTuning.t60(core, "getOscT60", core.dir.massId("getOscT60", name));
+            return OscTuning.t60(core, core.params, "getOscT60", core.dir.massId("getOscT60", name));
         } finally {
             exit();
         }
@@ -104,7 +125,7 @@ public final class BuildCalls extends Calls {
     private Mass addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel, double K, double Z, int smoothing) {
         ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
         return structural(() -> {
-            Mass added = core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            Mass added = (Mass) core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
             core.gravityNote.afterMassAdded(kind, name);
             return added;
         });
@@ -185,7 +206,7 @@ public final class BuildCalls extends Calls {
 
     private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2, double K, double Z, double len, double aux, int axis) {
         ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
-        if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && model.matExists(m1)) {
+        if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && matExists(m1)) {
             // the paper's engine added a link that never acted (or, on a moving mass, made it NaN): add nothing
             core.lenient.forgive(PaperLeniency.Kind.SELF_LINK, op, name, "cannot link mass \"" + m1 + "\" to itself",
                     "the interaction was not added and null was returned");
@@ -194,7 +215,7 @@ public final class BuildCalls extends Calls {
         return structural(() -> {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
-            return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
+            return (Interaction) core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
         });
     }
 
@@ -224,7 +245,7 @@ public final class BuildCalls extends Calls {
 
     public Ground3D changeToFixedPoint(String name) {
         return structural(() -> {
-            return core.topology.makeFixed(core.dir.massId("changeToFixedPoint", name));
+            return (Ground3D) core.topology.makeFixed(core.dir.massId("changeToFixedPoint", name));
         });
     }
 
@@ -259,7 +280,7 @@ public final class BuildCalls extends Calls {
     }
 
     public void addMatToSubset(String mass, String subset) {
-        if (!core.lenient.strict() && !model.matExists(mass)) {
+        if (!core.lenient.strict() && !matExists(mass)) {
             core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", String.valueOf(mass),
                     "no mass with this name", "nothing was added to subset \"" + subset + "\"");
             return;
@@ -281,7 +302,7 @@ public final class BuildCalls extends Calls {
     }
 
     public void addLinkToSubset(String link, String subset) {
-        if (!core.lenient.strict() && !model.linkExists(link)) {
+        if (!core.lenient.strict() && !linkExists(link)) {
             core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", String.valueOf(link),
                     "no interaction with this name", "nothing was added to subset \"" + subset + "\"");
             return;

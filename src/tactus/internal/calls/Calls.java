@@ -1,11 +1,10 @@
 package tactus.internal.calls;
 
 import tactus.Mass;
-import tactus.PhysicalModel;
 import tactus.internal.model.ApiAccess;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /**
  * The second half of a facade call of {@code PhysicalModel}: the facade checks what it can without the model and
@@ -13,12 +12,10 @@ import tactus.internal.realtime.ModelLock;
  * the paper's leniency for indices past the end) and hand the work to the room that does it. Not API.
  */
 public abstract class Calls {
-    protected final PhysicalModel model;
     protected final ModelCore core;
     protected final ModelLock gate;
 
-    protected Calls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        this.model = model;
+    protected Calls(ModelCore core, ModelLock gate) {
         this.core = core;
         this.gate = gate;
     }
@@ -77,7 +74,7 @@ public abstract class Calls {
             if (m == null) {
                 throw new IllegalArgumentException("a mass handle must not be null");
             }
-            if (ApiAccess.get().modelOf(m) != model) {
+            if (ApiAccess.get().modelOf(m) != core) {
                 throw new IllegalArgumentException("mass handle " + m + " belongs to another model");
             }
             ApiAccess.get().checkLive(m);
@@ -100,5 +97,23 @@ public abstract class Calls {
         Check.finite(op, element, "fx", fx);
         Check.finite(op, element, "fy", fy);
         Check.finite(op, element, "fz", fz);
+    }
+
+    public boolean matExists(String name) {
+        enter();
+        try {
+            return core.dir.mats.id(name) >= 0;
+        } finally {
+            exit();
+        }
+    }
+
+    public boolean linkExists(String name) {
+        enter();
+        try {
+            return core.dir.links.id(name) >= 0;
+        } finally {
+            exit();
+        }
     }
 }

@@ -1,16 +1,14 @@
 package tactus.internal.calls;
 
-import tactus.*;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
+
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /** The facade calls on module parameters: masses, oscillator stiffness and damping, interaction lengths, stiffness and damping. Each enters the model once and hands the work to its room. Not API. */
 public final class ParamCalls extends Calls {
-    public ParamCalls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        super(model, core, gate);
+    public ParamCalls(ModelCore core, ModelLock gate) {
+        super(core, gate);
     }
 
     public double getMatMass(String name) {

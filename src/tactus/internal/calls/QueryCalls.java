@@ -1,37 +1,27 @@
 package tactus.internal.calls;
 
 import processing.core.PVector;
-import tactus.*;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
+import tactus.Interaction;
+import tactus.Mass;
+import tactus.ParamController;
+import tactus.Vect3D;
+import tactus.linkModuleType;
+import tactus.matModuleType;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.ModuleTypes;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /** The facade calls that look a model up: names, indices and types, the paper engine's index queries and name-pattern edits, controllers, energies. Each enters the model once and hands the work to its room. Not API. */
 public final class QueryCalls extends Calls {
-    public QueryCalls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        super(model, core, gate);
+    private final ControllerBook controllers;
+
+    public QueryCalls(ModelCore core, ModelLock gate, ControllerBook controllers) {
+        super(core, gate);
+        this.controllers = controllers;
     }
 
-    public boolean matExists(String name) {
-        enter();
-        try {
-            return core.dir.mats.id(name) >= 0;
-        } finally {
-            exit();
-        }
-    }
 
-    public boolean linkExists(String name) {
-        enter();
-        try {
-            return core.dir.links.id(name) >= 0;
-        } finally {
-            exit();
-        }
-    }
 
     public int getNumberOfMats() {
         enter();
@@ -74,7 +64,7 @@ public final class QueryCalls extends Calls {
     public Mass getMass(String name) {
         enter();
         try {
-            return core.dir.massHandle(core.dir.massId("getMass", name));
+            return (Mass) core.dir.massHandle(core.dir.massId("getMass", name));
         } finally {
             exit();
         }
@@ -83,7 +73,7 @@ public final class QueryCalls extends Calls {
     public Interaction getInteraction(String name) {
         enter();
         try {
-            return core.dir.linkHandle(core.dir.linkId("getInteraction", name));
+            return (Interaction) core.dir.linkHandle(core.dir.linkId("getInteraction", name));
         } finally {
             exit();
         }
@@ -92,7 +82,7 @@ public final class QueryCalls extends Calls {
     public Interaction getInteractionAt(int i) {
         enter();
         try {
-            return core.dir.linkHandle(core.dir.linkAt("getInteractionAt", i));
+            return (Interaction) core.dir.linkHandle(core.dir.linkAt("getInteractionAt", i));
         } finally {
             exit();
         }
@@ -400,12 +390,11 @@ public final class QueryCalls extends Calls {
         }
     }
 
-    public void addParamController(String name, String subsetName, String paramName, float rampTime) {
-        Check.name("addParamController", name);
-        ParamController pc = new ParamController(model, rampTime, subsetName, paramName);
+    /** Adds or replaces a named parameter controller, made by the facade. */
+    public void addParamController(String name, ParamController pc) {
         enter();
         try {
-            core.putController(name, pc);
+            controllers.put(name, pc);
         } finally {
             exit();
         }
@@ -414,7 +403,7 @@ public final class QueryCalls extends Calls {
     public ParamController getParamController(String name) {
         enter();
         try {
-            return core.controller(name);
+            return controllers.get(name);
         } finally {
             exit();
         }

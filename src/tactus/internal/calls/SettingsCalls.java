@@ -1,17 +1,19 @@
 package tactus.internal.calls;
 
-import tactus.*;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
+import tactus.DivergenceListener;
+import tactus.StabilityPolicy;
+import tactus.StabilityReport;
+import tactus.Vect3D;
+import tactus.paramSystem;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.read.PlanLabels;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /** The facade calls that set and read how a model runs: rates, threads, the medium, strictness, the stability policy and the divergence watch. Each enters the model once and hands the work to its room. Not API. */
 public final class SettingsCalls extends Calls {
-    public SettingsCalls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        super(model, core, gate);
+    public SettingsCalls(ModelCore core, ModelLock gate) {
+        super(core, gate);
     }
 
     public paramSystem getParamSystem() {

@@ -1,16 +1,14 @@
 package tactus.internal.calls;
 
-import tactus.*;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
+import tactus.Vect3D;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /** The facade calls on the state of masses: positions, velocities, forces, impulses and velocity control, and the haptic avatar. Each enters the model once and hands the work to its room. Not API. */
 public final class StateCalls extends Calls {
-    public StateCalls(PhysicalModel model, ModelCore core, ModelLock gate) {
-        super(model, core, gate);
+    public StateCalls(ModelCore core, ModelLock gate) {
+        super(core, gate);
     }
 
     public Vect3D getMatPosition(String name, Vect3D out) {

@@ -2,8 +2,8 @@ package tactus.internal.edit;
 
 import tactus.engine.MassKind;
 import tactus.Vect3D;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.Registry;
+import tactus.internal.model.ModelBase;
 
 /**
  * The one-time note of a model whose 1D masses (Mass1D, Osc1D) feel gravity: Tactus gives them the z component of
@@ -12,12 +12,12 @@ import tactus.internal.model.Registry;
  * model's lock.
  */
 public final class GravityNote {
-    private final ModelCore c;
+    private final ModelBase c;
     /** Scratch for the gravity direction: the check allocates nothing (a sketch may set gravity from its audio thread). */
     private final Vect3D dir = new Vect3D();
     private boolean told;
 
-    public GravityNote(ModelCore core) {
+    public GravityNote(ModelBase core) {
         this.c = core;
     }
 

@@ -3,12 +3,11 @@ package tactus.internal.edit;
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
-import tactus.Interaction;
-import tactus.Mass;
 import tactus.Vect3D;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.UnitScale;
+import tactus.internal.model.ModelBase;
+import tactus.internal.stability.StabilityGuard;
 
 /**
  * Adds masses and interactions: validates every argument (naming the element and the value), creates the
@@ -17,10 +16,14 @@ import tactus.internal.model.UnitScale;
  * caller holds the model's lock.
  */
 public final class ModuleBuilder {
-    private final ModelCore c;
+    private final ModelBase c;
+    private final StabilityGuard guard;
+    private final TopologyEditor topology;
     private final Engine engine;
 
-    public ModuleBuilder(ModelCore core) {
+    public ModuleBuilder(ModelBase core, StabilityGuard guard, TopologyEditor topology) {
+        this.guard = guard;
+        this.topology = topology;
         this.c = core;
         this.engine = core.engine;
     }
@@ -43,7 +46,7 @@ public final class ModuleBuilder {
         }
     }
 
-    public Mass addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
+    public Object addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
                  double K, double Z, int smoothing) {
         if (c.dir.mats.id(name) >= 0) {
             throw Check.fail(op, name, "a mass with this name already exists");
@@ -57,9 +60,9 @@ public final class ModuleBuilder {
         if (kind.isInput()) {
             engine.setInputWeight(id, 1.0 / smoothing);
         }
-        Mass h = c.dir.registerMass(c.model, name, id, kind);
-        c.guard.afterChange(() -> c.topology.removeMass(id));
-        c.topology.compileIfRunning();
+        Object h = c.dir.registerMass(name, id, kind);
+        guard.afterChange(() -> topology.removeMass(id));
+        topology.compileIfRunning();
         return h;
     }
 
@@ -81,7 +84,7 @@ public final class ModuleBuilder {
         }
     }
 
-    public Interaction addLink(String op, LinkKind kind, String name, int a, int b, double K, double Z, double len,
+    public Object addLink(String op, LinkKind kind, String name, int a, int b, double K, double Z, double len,
                         double aux, int axis) {
         if (!kind.isSingleMass() && a == b) {
             throw Check.fail(op, name, "cannot link mass \"" + c.dir.massName(a) + "\" to itself");
@@ -95,9 +98,9 @@ public final class ModuleBuilder {
         } else {
             id = engine.addLink(kind, a, b, u.stiffnessIn(K), u.dampingIn(Z), len);
         }
-        Interaction h = c.dir.registerLink(c.model, name, id, kind);
-        c.guard.afterChange(() -> c.topology.removeLink(id));
-        c.topology.compileIfRunning();
+        Object h = c.dir.registerLink(name, id, kind);
+        guard.afterChange(() -> topology.removeLink(id));
+        topology.compileIfRunning();
         if (kind == LinkKind.CONTACT3D && engine.linkDistance(id) == 0) {
             System.err.println(coincidentContactWarning(name, c.dir.massName(a), c.dir.massName(b)));
         }

@@ -2,7 +2,7 @@ package tactus.internal.edit;
 
 import tactus.engine.Tuning;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
+import tactus.internal.model.ModelBase;
 
 /**
  * Pole-matched oscillator tuning in the model's units: the stiffness and damping that make an oscillator ring
@@ -14,7 +14,7 @@ public final class OscTuning {
     }
 
     /** @return {K, Z} in model units for a pole-matched oscillator of the given inertia. */
-    public static double[] coefficients(ModelCore c, String op, String name, double mass, double freqHz, double t60) {
+    public static double[] coefficients(ModelBase c, ParamEditor params, String op, String name, double mass, double freqHz, double t60) {
         int rate = c.time.simRate();
         Check.positive(op, String.valueOf(name), "mass", mass);
         if (!(freqHz > 0) || !(freqHz < rate / 2.0)) {
@@ -35,23 +35,23 @@ public final class OscTuning {
     }
 
     /** Retunes a live oscillator. */
-    public static void tune(ModelCore c, String op, int id, double freqHz, double t60) {
-        c.params.requireOsc(op, id);
-        double[] kz = coefficients(c, op, c.dir.massName(id), c.engine.mass(id), freqHz, t60);
-        c.params.setOsc(op, id, kz[0], kz[1]);
+    public static void tune(ModelBase c, ParamEditor params, String op, int id, double freqHz, double t60) {
+        params.requireOsc(op, id);
+        double[] kz = coefficients(c, params, op, c.dir.massName(id), c.engine.mass(id), freqHz, t60);
+        params.setOsc(op, id, kz[0], kz[1]);
     }
 
     /** @return the frequency (Hz) at which an oscillator rings in this scheme, friction included. */
-    public static double frequency(ModelCore c, String op, int id) {
-        c.params.requireOsc(op, id);
+    public static double frequency(ModelBase c, ParamEditor params, String op, int id) {
+        params.requireOsc(op, id);
         double m = c.engine.mass(id);
         return Tuning.discreteFrequency(c.engine.oscStiffness(id) / m,
                 (c.engine.oscDamping(id) + c.engine.friction()) / m, c.time.simRate());
     }
 
     /** @return the 60 dB decay time (s) of an oscillator in this scheme, friction included. */
-    public static double t60(ModelCore c, String op, int id) {
-        c.params.requireOsc(op, id);
+    public static double t60(ModelBase c, ParamEditor params, String op, int id) {
+        params.requireOsc(op, id);
         return Tuning.decayTime60((c.engine.oscDamping(id) + c.engine.friction()) / c.engine.mass(id),
                 c.time.simRate());
     }

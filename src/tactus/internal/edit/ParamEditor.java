@@ -4,8 +4,9 @@ import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.PaperLeniency;
+import tactus.internal.model.ModelBase;
+import tactus.internal.stability.StabilityGuard;
 
 /**
  * Reads and changes module parameters in the model's units: inertia, oscillator stiffness and damping, link
@@ -13,10 +14,12 @@ import tactus.internal.model.PaperLeniency;
  * anything is written, then checked by the stability guard with an undo. The caller holds the model's lock.
  */
 public final class ParamEditor {
-    private final ModelCore c;
+    private final ModelBase c;
+    private final StabilityGuard guard;
     private final Engine engine;
 
-    public ParamEditor(ModelCore core) {
+    public ParamEditor(ModelBase core, StabilityGuard guard) {
+        this.guard = guard;
         this.c = core;
         this.engine = core.engine;
     }
@@ -48,7 +51,7 @@ public final class ParamEditor {
         Check.positive(op, c.dir.massName(id), "mass", mass);
         double old = engine.mass(id);
         c.writes().setMass(id, mass);
-        c.guard.afterChange(() -> engine.setMass(id, old));
+        guard.afterChange(() -> engine.setMass(id, old));
     }
 
     /**
@@ -119,7 +122,7 @@ public final class ParamEditor {
         double oldK = engine.oscStiffness(id), oldZ = engine.oscDamping(id);
         c.writes().setOscillator(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
                 Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z));
-        c.guard.afterChange(() -> engine.setOscillator(id, oldK, oldZ));
+        guard.afterChange(() -> engine.setOscillator(id, oldK, oldZ));
     }
 
     // ---------------------------------------------------------------- interactions
@@ -168,7 +171,7 @@ public final class ParamEditor {
         double oldK = engine.linkStiffness(id), oldZ = engine.linkDamping(id), oldL = engine.linkLength(id);
         c.writes().setLinkParams(id, Double.isNaN(K) ? Double.NaN : c.units().stiffnessIn(K),
                 Double.isNaN(Z) ? Double.NaN : c.units().dampingIn(Z), len);
-        c.guard.afterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
+        guard.afterChange(() -> engine.setLinkParams(id, oldK, oldZ, oldL));
     }
 
     /** Validates a length parameter for a link kind: any finite offset for planes, &gt; 0 for attractors, else &ge; 0. */
@@ -193,7 +196,7 @@ public final class ParamEditor {
         Check.finite(op, c.dir.linkName(id), "pos", pos);
         double old = engine.planePosition(id);
         c.writes().setPlanePosition(id, pos);
-        c.guard.afterChange(() -> engine.setPlanePosition(id, old));
+        guard.afterChange(() -> engine.setPlanePosition(id, old));
     }
 
     /** @return the attraction factor of an attractor (REAL_UNITS: N·m²). */
@@ -207,7 +210,7 @@ public final class ParamEditor {
         Check.finite(op, c.dir.linkName(id), "attr", attr);
         double old = engine.attraction(id);
         c.writes().setAttraction(id, c.units().forceIn(attr));
-        c.guard.afterChange(() -> engine.setAttraction(id, old));
+        guard.afterChange(() -> engine.setAttraction(id, old));
     }
 
     /** @return the axis (0 = x, 1 = y, 2 = z) of a plane contact. */

@@ -9,9 +9,10 @@ import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.Vect3D;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.PaperLeniency;
 import tactus.internal.model.UnitScale;
+import tactus.internal.model.ModelBase;
+import tactus.internal.stability.StabilityGuard;
 
 /**
  * Named subsets of masses and of interactions, grouped parameter changes on them, and the contact groups
@@ -20,14 +21,20 @@ import tactus.internal.model.UnitScale;
  */
 public final class SubsetBook {
     private static final String[] PARAMS = {"mass", "stiffness", "damping", "dist"};
-    private final ModelCore c;
+    private final ModelBase c;
+    private final ParamEditor params;
+    private final TopologyEditor topology;
+    private final StabilityGuard guard;
     private final Engine engine;
     private final Subsets mats = new Subsets();
     private final Subsets links = new Subsets();
     /** Contact groups by mass-subset name, in creation order, with their engine group ids. */
     private final LinkedHashMap<String, Integer> groups = new LinkedHashMap<>();
 
-    public SubsetBook(ModelCore core) {
+    public SubsetBook(ModelBase core, ParamEditor params, TopologyEditor topology, StabilityGuard guard) {
+        this.params = params;
+        this.topology = topology;
+        this.guard = guard;
         this.c = core;
         this.engine = core.engine;
     }
@@ -197,16 +204,16 @@ public final class SubsetBook {
             checkMember(op, isMat, id, param, value);
         }
         List<Runnable> undo = new ArrayList<>();
-        c.guard.defer();
+        guard.defer();
         try {
             for (int id : members) {
                 undo.add(snapshot(isMat, id));
                 apply(op, isMat, id, param, value);
             }
         } finally {
-            c.guard.resume();
+            guard.resume();
         }
-        c.guard.afterChange(() -> undo.forEach(Runnable::run));
+        guard.afterChange(() -> undo.forEach(Runnable::run));
     }
 
     /** @return the value of a parameter for the first member of a subset, in model units. */
@@ -270,13 +277,13 @@ public final class SubsetBook {
     private void apply(String op, boolean isMat, int id, String param, double value) {
         if (isMat) {
             if ("mass".equals(param)) {
-                c.params.setMass(op, id, value);
+                params.setMass(op, id, value);
             } else {
-                c.params.setOsc(op, id, "stiffness".equals(param) ? value : Double.NaN,
+                params.setOsc(op, id, "stiffness".equals(param) ? value : Double.NaN,
                         "damping".equals(param) ? value : Double.NaN);
             }
         } else {
-            c.params.setLink(op, id, "stiffness".equals(param) ? value : Double.NaN,
+            params.setLink(op, id, "stiffness".equals(param) ? value : Double.NaN,
                     "damping".equals(param) ? value : Double.NaN, "dist".equals(param) ? value : Double.NaN);
         }
     }
@@ -325,11 +332,11 @@ public final class SubsetBook {
         UnitScale u = c.units();
         int gid = engine.addContactGroup(memberIds(subset), threshold, u.stiffnessIn(K), u.dampingIn(Z));
         groups.put(subset, gid);
-        c.guard.afterChange(() -> {
+        guard.afterChange(() -> {
             engine.removeContactGroup(gid);
             groups.remove(subset);
         });
-        c.topology.compileIfRunning();
+        topology.compileIfRunning();
     }
 
     public void setContactGroupParams(String op, String subset, double threshold, double K, double Z) {
@@ -337,14 +344,14 @@ public final class SubsetBook {
         double[] old = engine.contactGroupParams(gid);
         UnitScale u = c.units();
         engine.setContactGroupParams(gid, threshold, u.stiffnessIn(K), u.dampingIn(Z));
-        c.guard.afterChange(() -> engine.setContactGroupParams(gid, old[0], old[1], old[2]));
-        c.topology.compileIfRunning();
+        guard.afterChange(() -> engine.setContactGroupParams(gid, old[0], old[1], old[2]));
+        topology.compileIfRunning();
     }
 
     public void removeContactGroup(String op, String subset) {
         engine.removeContactGroup(requireGroup(op, subset));
         groups.remove(subset);
-        c.topology.compileIfRunning();
+        topology.compileIfRunning();
     }
 
     public boolean hasContactGroup(String subset) {
@@ -384,7 +391,7 @@ public final class SubsetBook {
         Integer gid = groups.get(subset);
         if (gid != null) {
             engine.setContactGroupMembers(gid, memberIds(subset));
-            c.topology.compileIfRunning();
+            topology.compileIfRunning();
         }
     }
 }

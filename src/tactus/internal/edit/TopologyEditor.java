@@ -2,8 +2,9 @@ package tactus.internal.edit;
 
 import tactus.engine.Engine;
 import tactus.engine.MassKind;
-import tactus.Ground3D;
-import tactus.internal.model.ModelCore;
+import tactus.internal.model.ModelBase;
+import tactus.internal.snapshot.SnapshotWriter;
+import tactus.internal.stability.DivergenceWatch;
 
 /**
  * Removes modules, turns masses into fixed points and clears the model, keeping the directory, the subsets,
@@ -12,10 +13,16 @@ import tactus.internal.model.ModelCore;
  * the model or exchange with it (audio, haptics) never compile. The caller holds the model's lock.
  */
 public final class TopologyEditor {
-    private final ModelCore c;
+    private final ModelBase c;
+    private final SnapshotWriter snapshots;
+    private final DivergenceWatch watch;
+    /** Set once by ModelCore (the subset book is made after this editor). */
+    public SubsetBook subsets;
     private final Engine engine;
 
-    public TopologyEditor(ModelCore core) {
+    public TopologyEditor(ModelBase core, SnapshotWriter snapshots, DivergenceWatch watch) {
+        this.snapshots = snapshots;
+        this.watch = watch;
         this.c = core;
         this.engine = core.engine;
     }
@@ -30,16 +37,16 @@ public final class TopologyEditor {
         if (c.initialized) {
             engine.compile();
             if (engine.isHoldingTopology()) {
-                c.snapshots.topologyEdited(); // the install publishes the new topology
+                snapshots.topologyEdited(); // the install publishes the new topology
             } else {
-                c.snapshots.topologyChanged();
+                snapshots.topologyChanged();
             }
         }
     }
 
     public void removeLink(int id) {
         engine.removeLink(id);
-        c.subsets.forgetLink(id);
+        subsets.forgetLink(id);
         c.dir.forgetLink(id);
         compileIfRunning();
     }
@@ -49,15 +56,15 @@ public final class TopologyEditor {
         for (int l : c.dir.links.ids()) {
             if (engine.linkMassA(l) == id || engine.linkMassB(l) == id) {
                 engine.removeLink(l);
-                c.subsets.forgetLink(l);
+                subsets.forgetLink(l);
                 c.dir.forgetLink(l);
             }
         }
         engine.removeMass(id);
         c.dir.forgetMass(id);
-        c.subsets.forgetMass(id);
+        subsets.forgetMass(id);
         if (wasDiverged) {
-            c.watch.clear();
+            watch.clear();
         }
         compileIfRunning();
     }
@@ -66,9 +73,9 @@ public final class TopologyEditor {
      * Turns a mass into a fixed point at its current position; its interactions stay attached. It cannot make a
      * stable model unstable, so it is never refused.
      */
-    public Ground3D makeFixed(int id) {
+    public Object makeFixed(int id) {
         engine.makeFixed(id);
-        Ground3D h = (Ground3D) c.dir.storeMassHandle(c.model, id, MassKind.GROUND3D);
+        Object h = c.dir.storeMassHandle(id, MassKind.GROUND3D);
         // no stability check: fixing a mass removes a row and a column of the symmetric form of M^-1(K + 2Z),
         // so by eigenvalue interlacing its largest eigenvalue cannot grow
         compileIfRunning();
@@ -79,9 +86,9 @@ public final class TopologyEditor {
     public void clear() {
         c.dir.clear();
         engine.clear();
-        c.subsets.clear();
-        c.clearControllers();
-        c.watch.clear();
+        subsets.clear();
+        c.ramps.clear();
+        watch.clear();
         compileIfRunning();
     }
 }

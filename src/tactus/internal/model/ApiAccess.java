@@ -1,20 +1,13 @@
 package tactus.internal.model;
 
 import tactus.DivergenceException;
-import tactus.Interaction;
-import tactus.Mass;
-import tactus.ModelSnapshot;
-import tactus.Module;
-import tactus.PhysicalModel;
 import tactus.StabilityReport;
 import tactus.UnstableModelException;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
-import tactus.internal.read.SnapshotBuffer;
 
 /**
- * The few doors of the API types that only the machinery may open: making and retiring a module handle, making
- * the snapshot view of a buffer, and making the API's exceptions and stability report. They stay package-private
+ * The few doors of the API types that only the machinery may open: what model a handle belongs to and its id,
+ * the snapshot view of a buffer, and the API's exceptions and stability report. Handles and views are typed
+ * {@code Object} here, so that the rooms below never name the API classes that call them. They stay package-private
  * in {@code tactus} (a sketch cannot call them); the package gives this object to the machinery once, when
  * {@link PhysicalModel} is loaded. Not API.
  */
@@ -37,26 +30,17 @@ public abstract class ApiAccess {
         return doors;
     }
 
-    /** @return a new handle of the kind's class on a mass of the model. */
-    public abstract Mass newMassHandle(PhysicalModel model, int id, MassKind kind);
-
-    /** @return a new handle of the kind's class on an interaction of the model. */
-    public abstract Interaction newLinkHandle(PhysicalModel model, int id, LinkKind kind);
-
-    /** @return the model a handle belongs to. */
-    public abstract PhysicalModel modelOf(Module handle);
+    /** @return the rooms of the model a handle belongs to (compare with a model's own). */
+    public abstract Object modelOf(Object handle);
 
     /** @return the engine id of a handle's module. */
-    public abstract int idOf(Module handle);
+    public abstract int idOf(Object handle);
 
     /** Throws the handle's {@code IllegalStateException} if its module is no longer part of its model. */
-    public abstract void checkLive(Module handle);
+    public abstract void checkLive(Object handle);
 
-    /** Marks a handle as no longer part of its model: every later call on it throws. */
-    public abstract void retire(Module handle);
-
-    /** @return the public, read-only view of a snapshot buffer. */
-    public abstract ModelSnapshot newSnapshotView(SnapshotBuffer buffer);
+    /** @return the public, read-only view ({@code ModelSnapshot}) of a snapshot buffer. */
+    public abstract Object newSnapshotView(Object buffer);
 
     /** @return the exception of a change refused under {@code StabilityPolicy.THROW}. */
     public abstract UnstableModelException unstable(String message, StabilityReport report);

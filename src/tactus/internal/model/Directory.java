@@ -4,9 +4,6 @@ import java.util.Arrays;
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
-import tactus.Interaction;
-import tactus.Mass;
-import tactus.PhysicalModel;
 
 /**
  * The model's directory: names, insertion-order indices and handles of the live masses and interactions, and
@@ -18,11 +15,13 @@ public final class Directory {
     public final Registry mats = new Registry(true);
     public final Registry links = new Registry(false);
     private final Engine engine;
-    private Mass[] massHandles = new Mass[16];
-    private Interaction[] linkHandles = new Interaction[16];
+    private final HandleFactory handles;
+    private Object[] massHandles = new Object[16];
+    private Object[] linkHandles = new Object[16];
 
-    public Directory(Engine engine) {
+    public Directory(Engine engine, HandleFactory handles) {
         this.engine = engine;
+        this.handles = handles;
     }
 
     // ---------------------------------------------------------------- look-ups with user-facing errors
@@ -101,60 +100,60 @@ public final class Directory {
 
     // ---------------------------------------------------------------- registration and handles
 
-    public Mass registerMass(PhysicalModel model, String name, int id, MassKind kind) {
+    public Object registerMass(String name, int id, MassKind kind) {
         mats.add(name, id);
-        return storeMassHandle(model, id, kind);
+        return storeMassHandle(id, kind);
     }
 
     /** Replaces the handle of a live mass (its kind changed, for example to a fixed point). */
-    public Mass storeMassHandle(PhysicalModel model, int id, MassKind kind) {
+    public Object storeMassHandle(int id, MassKind kind) {
         if (id >= massHandles.length) {
             massHandles = Arrays.copyOf(massHandles, Math.max(id + 1, massHandles.length * 2));
         }
         if (massHandles[id] != null) {
-            ApiAccess.get().retire(massHandles[id]);
+            handles.retire(massHandles[id]);
         }
-        Mass h = ApiAccess.get().newMassHandle(model, id, kind);
+        Object h = handles.newMass(id, kind);
         massHandles[id] = h;
         return h;
     }
 
-    public Interaction registerLink(PhysicalModel model, String name, int id, LinkKind kind) {
+    public Object registerLink(String name, int id, LinkKind kind) {
         links.add(name, id);
         if (id >= linkHandles.length) {
             linkHandles = Arrays.copyOf(linkHandles, Math.max(id + 1, linkHandles.length * 2));
         }
-        Interaction h = ApiAccess.get().newLinkHandle(model, id, kind);
+        Object h = handles.newLink(id, kind);
         linkHandles[id] = h;
         return h;
     }
 
-    public Mass massHandle(int id) {
+    public Object massHandle(int id) {
         return massHandles[id];
     }
 
-    public Interaction linkHandle(int id) {
+    public Object linkHandle(int id) {
         return linkHandles[id];
     }
 
     public void forgetMass(int id) {
         mats.remove(id);
-        ApiAccess.get().retire(massHandles[id]);
+        handles.retire(massHandles[id]);
         massHandles[id] = null;
     }
 
     public void forgetLink(int id) {
         links.remove(id);
-        ApiAccess.get().retire(linkHandles[id]);
+        handles.retire(linkHandles[id]);
         linkHandles[id] = null;
     }
 
     public void clear() {
         for (int id : mats.ids()) {
-            ApiAccess.get().retire(massHandles[id]);
+            handles.retire(massHandles[id]);
         }
         for (int id : links.ids()) {
-            ApiAccess.get().retire(linkHandles[id]);
+            handles.retire(linkHandles[id]);
         }
         Arrays.fill(massHandles, null);
         Arrays.fill(linkHandles, null);

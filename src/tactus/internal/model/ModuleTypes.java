@@ -2,25 +2,6 @@ package tactus.internal.model;
 
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
-import tactus.Attractor3D;
-import tactus.Bubble3D;
-import tactus.Contact3D;
-import tactus.Damper3D;
-import tactus.Ground1D;
-import tactus.Ground3D;
-import tactus.HapticInput3D;
-import tactus.Mass1D;
-import tactus.Mass2DPlane;
-import tactus.Mass3D;
-import tactus.Mass3DSimple;
-import tactus.Osc1D;
-import tactus.Osc3D;
-import tactus.PlaneContact3D;
-import tactus.PosInput3D;
-import tactus.Rope3D;
-import tactus.Spring3D;
-import tactus.SpringDamper1D;
-import tactus.SpringDamper3D;
 import tactus.linkModuleType;
 import tactus.matModuleType;
 

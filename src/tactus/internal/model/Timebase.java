@@ -3,7 +3,6 @@ package tactus.internal.model;
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.Vect3D;
-import tactus.internal.stability.StabilityGuard;
 import tactus.paramSystem;
 
 /**
@@ -23,8 +22,8 @@ public final class Timebase {
     private double gravity;
     private final Vect3D gravityDir = new Vect3D(0, 0, 1);
     private double friction;
-    /** The model's rooms (set once by ModelCore), for the engine writes of the medium. */
-    public ModelCore core;
+    /** Where the current thread's engine writes go (set once by ModelBase), for the writes of the medium. */
+    public java.util.function.Supplier<EngineWrites> writes;
 
     public Timebase(Engine engine, Directory dir, paramSystem system, int simRate, int dispRate) {
         this.engine = engine;
@@ -61,13 +60,13 @@ public final class Timebase {
      *
      * @param groupIds the engine ids of the live contact groups
      */
-    public void setSimRate(int rate, int[] groupIds, StabilityGuard guard) {
+    public void setSimRate(int rate, int[] groupIds, java.util.function.Consumer<Runnable> check) {
         int old = simRate;
         double ratio = (double) old / rate;
         boolean rescale = units.isReal() && ratio != 1.0;
         Runnable restore = rescale ? rescaleCoefficients(ratio, groupIds) : () -> { };
         applyRate(rate);
-        guard.afterChange(() -> {
+        check.accept(() -> {
             restore.run();
             applyRate(old);
         });
@@ -179,7 +178,7 @@ public final class Timebase {
 
     private void applyMedium() {
         double g = units.accelerationIn(gravity);
-        EngineWrites w = core != null ? core.writes() : EngineWrites.direct(engine);
+        EngineWrites w = writes != null ? writes.get() : EngineWrites.direct(engine);
         w.setMedium(-g * gravityDir.x, -g * gravityDir.y, -g * gravityDir.z, units.dampingIn(friction));
     }
 }

@@ -7,13 +7,14 @@ import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.Vect3D;
 import tactus.internal.edit.ParamEditor;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.ModuleTypes;
 import tactus.internal.model.PaperLeniency;
 import tactus.internal.model.Registry;
 import tactus.internal.model.UnitScale;
-import tactus.internal.realtime.RoleScratch;
 import tactus.matModuleType;
+import tactus.internal.edit.SubsetBook;
+import tactus.internal.model.ModelBase;
+import tactus.internal.stability.StabilityGuard;
 
 /**
  * The index-based queries and name-pattern edits of the paper's engine, for sketches written against it: link
@@ -21,12 +22,18 @@ import tactus.matModuleType;
  * parameter changes by name pattern or along x. The caller holds the model's lock.
  */
 public final class PaperQueries {
-    private final ModelCore c;
+    private final ModelBase c;
+    private final ParamEditor params;
+    private final SubsetBook subsets;
+    private final StabilityGuard guard;
     private final Engine engine;
     /** Scratch vectors, one for the realtime owner and one for lock holders. */
     private final RoleScratch scratch;
 
-    public PaperQueries(ModelCore core) {
+    public PaperQueries(ModelBase core, ParamEditor params, SubsetBook subsets, StabilityGuard guard) {
+        this.params = params;
+        this.subsets = subsets;
+        this.guard = guard;
         this.c = core;
         this.engine = core.engine;
         this.scratch = new RoleScratch(core);
@@ -81,7 +88,7 @@ public final class PaperQueries {
 
     /** @return the distance of an oscillator from its rest point, in length units. */
     public double oscDisplacement(String op, int massId) {
-        c.params.requireOsc(op, massId);
+        params.requireOsc(op, massId);
         double[] tmp = scratch.get();
         engine.position(massId, tmp);
         double dx = tmp[0] - engine.restPosition(massId, 0);
@@ -161,7 +168,7 @@ public final class PaperQueries {
 
     /** Sets the inertia of every mass whose name contains {@code tag}; checked first, analysed once. */
     public void setMassForName(String op, String tag, double mass) {
-        c.subsets.changeParamOf(op, true, c.subsets.lenientMembers(op, true, matching(c.dir.mats, tag), "mass"), "mass",
+        subsets.changeParamOf(op, true, subsets.lenientMembers(op, true, matching(c.dir.mats, tag), "mass"), "mass",
                 mass);
     }
 
@@ -179,18 +186,18 @@ public final class PaperQueries {
         }
         List<Runnable> undo = new ArrayList<>();
         UnitScale u = c.units();
-        c.guard.defer();
+        guard.defer();
         try {
             for (int id : ids) {
                 LinkKind kind = engine.linkKind(id);
-                undo.add(c.subsets.snapshot(false, id));
+                undo.add(subsets.snapshot(false, id));
                 c.writes().setLinkParams(id, kind.hasStiffness() ? u.stiffnessIn(K) : Double.NaN,
                         kind.hasDamping() ? u.dampingIn(Z) : Double.NaN, kind.hasLength() ? dist : Double.NaN);
             }
         } finally {
-            c.guard.resume();
+            guard.resume();
         }
-        c.guard.afterChange(() -> undo.forEach(Runnable::run));
+        guard.afterChange(() -> undo.forEach(Runnable::run));
     }
 
     /**
@@ -198,12 +205,12 @@ public final class PaperQueries {
      * from it), at rest, in subset order.
      */
     public void spaceAlongX(String op, Vect3D center, double d, String subset) {
-        if (subset != null && !c.subsets.isMatSubset(subset)) {
+        if (subset != null && !subsets.isMatSubset(subset)) {
             c.lenient.forgive(PaperLeniency.Kind.NO_SUCH_SUBSET, op, subset, "no such mass subset",
                     "nothing was moved");
             return;
         }
-        int[] ids = c.subsets.memberIds(c.subsets.requireMatSubset(op, subset));
+        int[] ids = subsets.memberIds(subsets.requireMatSubset(op, subset));
         int n = ids.length;
         for (int k = 0; k < n; k++) {
             c.writes().setPosition(ids[k], center.x + d * (k - (n - 1) / 2.0), center.y, center.z);

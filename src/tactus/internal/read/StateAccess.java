@@ -6,12 +6,12 @@ import tactus.engine.MassKind;
 import tactus.engine.StepPlan;
 import tactus.Vect3D;
 import tactus.internal.model.Check;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.PaperLeniency;
 import tactus.internal.model.UnitScale;
-import tactus.internal.realtime.ForceTaps;
-import tactus.internal.realtime.Ownership;
-import tactus.internal.realtime.RoleScratch;
+import tactus.internal.edit.ParamEditor;
+import tactus.internal.edit.TopologyEditor;
+import tactus.internal.model.ModelBase;
+import tactus.internal.model.RealtimeMode;
 
 /**
  * Reads and writes the simulated state in the model's units: positions, velocities (always in units per
@@ -21,12 +21,16 @@ import tactus.internal.realtime.RoleScratch;
  * own). The reads never write the engine.
  */
 public final class StateAccess {
-    private final ModelCore c;
+    private final ModelBase c;
+    private final ParamEditor params;
+    private final TopologyEditor topology;
     private final Engine engine;
     /** Scratch vectors, one for the realtime owner and one for lock holders. */
     private final RoleScratch scratch;
 
-    public StateAccess(ModelCore core) {
+    public StateAccess(ModelBase core, ParamEditor params, TopologyEditor topology) {
+        this.params = params;
+        this.topology = topology;
         this.c = core;
         this.engine = core.engine;
         this.scratch = new RoleScratch(core);
@@ -72,7 +76,7 @@ public final class StateAccess {
 
     /** Sets the velocity (units per second) of an inertial mass, keeping its position. */
     public void setVelocity(String op, int id, Vect3D vel) {
-        c.params.requireInertial(op, id);
+        params.requireInertial(op, id);
         UnitScale u = c.units();
         c.writes().setVelocity(id, u.velocityIn(vel.x), u.velocityIn(vel.y), u.velocityIn(vel.z));
     }
@@ -92,13 +96,13 @@ public final class StateAccess {
         }
         UnitScale u = c.units();
         engine.driveVelocity(id, u.velocityIn(vx), u.velocityIn(vy), u.velocityIn(vz));
-        c.topology.compileIfRunning();
+        topology.compileIfRunning();
     }
 
     /** Releases a mass from velocity control (nothing happens if it is not under control). */
     public void stopDriving(int id) {
         engine.stopDriving(id);
-        c.topology.compileIfRunning();
+        topology.compileIfRunning();
     }
 
     public void requireInput(String op, int id) {
@@ -139,20 +143,20 @@ public final class StateAccess {
      */
     public long takeAvatarForceCounted(int id, Vect3D out) {
         double[] tmp = scratch.get();
-        Ownership o = c.own;
+        RealtimeMode o = c.own;
         long n;
         double x;
         double y;
         double z;
         if (o != null && !o.isOwnerThread()) {
-            n = o.taps.take(engine, o.taps.tap(id), tmp);
+            n = o.takeTappedForce(id, tmp, true);
             x = tmp[0];
             y = tmp[1];
             z = tmp[2];
         } else {
-            ForceTaps.Tap t = o == null ? null : o.taps.find(id);
-            if (t != null) {
-                n = o.taps.take(engine, t, tmp);
+            long tapped = o == null ? -1 : o.takeTappedForce(id, tmp, false);
+            if (tapped >= 0) {
+                n = tapped;
                 x = tmp[0];
                 y = tmp[1];
                 z = tmp[2];
@@ -182,7 +186,7 @@ public final class StateAccess {
      *     otherwise {@link Engine#planForReading()}, which compiles only a model with no current plan
      */
     private StepPlan planToRead() {
-        Ownership o = c.own;
+        RealtimeMode o = c.own;
         if (o != null && !o.isOwnerThread()) {
             StepPlan live = engine.livePlan();
             if (live != null) {

@@ -2,7 +2,7 @@ package tactus.internal.realtime;
 
 import java.util.concurrent.locks.LockSupport;
 import tactus.StabilityPolicy;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
 
 /**
  * The stability analysis of a realtime-stepped model ({@link Ownership}): runs the analysis of changes posted under

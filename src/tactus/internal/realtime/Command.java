@@ -1,6 +1,7 @@
 package tactus.internal.realtime;
 
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
+
 
 /**
  * A change of an audio-owned model, prepared by the thread that asked for it and applied by the thread that steps

@@ -1,7 +1,7 @@
 package tactus.internal.realtime;
 
 import tactus.engine.Engine;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
 
 /**
  * The second half of a structural change of an audio-owned model: swaps in the step plan that the calling thread

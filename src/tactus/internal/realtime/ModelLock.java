@@ -2,7 +2,7 @@ package tactus.internal.realtime;
 
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
 
 /**
  * How a facade call gets in and out of a model, and how the realtime mode begins and ends: the model's fair lock

@@ -10,7 +10,8 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
 import tactus.StabilityPolicy;
 import tactus.internal.model.EngineWrites;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
+import tactus.internal.model.RealtimeMode;
 
 /**
  * The realtime-stepping mode of one model ({@link PhysicalModel#beginRealtimeStepping()}): exactly one thread, the
@@ -38,7 +39,7 @@ import tactus.internal.model.ModelCore;
  * </ul>
  * Every field without a lock is either confined to one role, guarded by the gate, or volatile/atomic.
  */
-public final class Ownership {
+public final class Ownership implements RealtimeMode {
     /** An owner that has not begun a stepping call for this long is idle: another thread may take its role. */
     public static final long IDLE_NANOS = 250_000_000L;
     /** The longest an editor waits for the owner to apply its commands before it gives up with an exception. */
@@ -116,6 +117,7 @@ public final class Ownership {
     // ---------------------------------------------------------------- roles
 
     /** @return true when the current thread holds the stepping role. */
+    @Override
     public boolean isOwnerThread() {
         return owner == Thread.currentThread();
     }
@@ -141,6 +143,7 @@ public final class Ownership {
     }
 
     /** @return where the current thread's engine writes go. */
+    @Override
     public EngineWrites writes(EngineWrites direct) {
         Thread t = Thread.currentThread();
         if (t == preparer && t != applier) {
@@ -156,6 +159,7 @@ public final class Ownership {
      * The stability guard asks what to do with a change: returns true when the change was taken care of here
      * (collected for a later analysis, or not analysed at all), false when the guard should analyse it at once.
      */
+    @Override
     public boolean interceptCheck(Runnable undo) {
         Thread t = Thread.currentThread();
         if (t == applier) {
@@ -181,6 +185,7 @@ public final class Ownership {
     }
 
     /** @return true when the current thread's deferral of checks must be ignored (it is not the guard's to count). */
+    @Override
     public boolean ignoresDeferral() {
         Thread t = Thread.currentThread();
         return t == applier || t == preparer || t == owner;
@@ -711,5 +716,16 @@ public final class Ownership {
     /** @return true when the owner asked to end the mode and has given the role up: close at the next entry. */
     public boolean endPending() {
         return ending && !closed;
+    }
+
+    @Override
+    public long takeTappedForce(int id, double[] xyz, boolean create) {
+        ForceTaps.Tap t = create ? taps.tap(id) : taps.find(id);
+        return t == null ? -1 : taps.take(core.engine, t, xyz);
+    }
+
+    @Override
+    public void countDroppedRampMembers(int n) {
+        droppedRampMembers += n;
     }
 }

@@ -2,9 +2,10 @@ package tactus.internal.realtime;
 
 import tactus.Vect3D;
 import tactus.internal.model.EngineWrites;
-import tactus.internal.model.ModelCore;
 import tactus.internal.model.PaperLeniency;
 import tactus.internal.model.UnitScale;
+import tactus.internal.ModelCore;
+import tactus.internal.model.RealtimeMode;
 
 /**
  * The members of a subset that a {@link ParamController} ramps, resolved once (on the thread that triggers the ramp,
@@ -112,9 +113,9 @@ public final class RampTargets {
             }
         }
         if (kept < n) {
-            Ownership o = c.own;
+            RealtimeMode o = c.own;
             if (o != null) {
-                o.droppedRampMembers += n - kept;
+                o.countDroppedRampMembers(n - kept);
             }
             n = kept;
         }

@@ -3,7 +3,7 @@ package tactus.internal.realtime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
 
 /**
  * A structural change of an audio-owned model (adding or removing modules, subsets, contact groups, rates,

@@ -1,9 +1,9 @@
 package tactus.internal.realtime;
 
 import java.util.function.IntConsumer;
-import tactus.internal.model.ModelCore;
-import tactus.internal.read.SnapshotBuffer;
-import tactus.internal.read.SnapshotWriter;
+import tactus.internal.ModelCore;
+import tactus.internal.snapshot.SnapshotBuffer;
+import tactus.internal.snapshot.SnapshotWriter;
 
 /**
  * The stepping calls of a model ({@code draw_physics}, {@code computeStep}, {@code computeNSteps}) in both modes:
@@ -52,7 +52,7 @@ public final class Stepping {
                 boolean ramping = core.ramping();
                 int ran;
                 if (ramping) {
-                    core.advanceRamps();
+                    advanceRamps();
                     ran = core.engine.step(1);
                 } else {
                     ran = core.engine.step(n - done);
@@ -178,7 +178,7 @@ public final class Stepping {
         while (done < n) {
             boolean ramping = core.ramping();
             if (ramping) {
-                core.advanceRamps();
+                advanceRamps();
             }
             int ran = core.engine.step(1);
             core.snapshots.afterSteps(ran);
@@ -198,6 +198,23 @@ public final class Stepping {
         }
         core.guard.afterChange(null);
         core.watch.check();
+    }
+
+    /** Advances every running ramp by one step, with the stability check deferred to the end of the batch. */
+    private void advanceRamps() {
+        Ownership o = lock.mode();
+        if (o != null) {
+            o.inRamp = true;
+        }
+        core.guard.defer();
+        try {
+            core.ramps.advanceAll();
+        } finally {
+            core.guard.resume();
+            if (o != null) {
+                o.inRamp = false;
+            }
+        }
     }
 
     /** @return the steps of one slice of a locked-mode batch: about {@link #SLICE_ELEMENTS} element updates. */
@@ -254,7 +271,7 @@ public final class Stepping {
     private void changeSimRate(int rate) {
         checkSimRate(rate);
         lock.structuralDo(() -> {
-            core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
+            core.time.setSimRate(rate, core.subsets.groupIds(), core.guard::afterChange);
         });
     }
 

@@ -3,7 +3,7 @@ package tactus.internal.realtime;
 import java.util.Arrays;
 import tactus.engine.Engine;
 import tactus.internal.model.EngineWrites;
-import tactus.internal.model.ModelCore;
+import tactus.internal.ModelCore;
 
 /**
  * A prepared parameter or state change: the engine writes a facade call made, already validated and converted to

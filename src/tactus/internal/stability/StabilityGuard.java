@@ -5,12 +5,10 @@ import tactus.engine.StabilityAnalyzer;
 import tactus.engine.StepPlan;
 import tactus.StabilityPolicy;
 import tactus.StabilityReport;
-import tactus.UnstableModelException;
-import tactus.internal.edit.SubsetBook;
 import tactus.internal.model.ApiAccess;
 import tactus.internal.model.Directory;
 import tactus.internal.model.Timebase;
-import tactus.internal.realtime.Ownership;
+import tactus.internal.model.RealtimeMode;
 
 /**
  * The automatic stability check of a model: after {@link PhysicalModel#init()}, every parameter or topology
@@ -24,20 +22,20 @@ public final class StabilityGuard {
     private final Engine engine;
     private final Directory dir;
     private final Timebase time;
-    private final SubsetBook subsets;
+    /** The names of the live contact groups, for messages (set once by ModelCore: the subsets are made after the guard). */
+    public java.util.function.Supplier<String[]> groupNames = () -> new String[0];
     private StabilityPolicy policy = StabilityPolicy.WARN;
     private int maxContacts = StabilityAnalyzer.DEFAULT_MAX_CONTACTS;
     private boolean armed;
     private int deferred;
     private String lastWarning;
     /** The realtime-stepping mode of the model, or null. */
-    public volatile Ownership own;
+    public volatile RealtimeMode own;
 
-    public StabilityGuard(Engine engine, Directory dir, Timebase time, SubsetBook subsets) {
+    public StabilityGuard(Engine engine, Directory dir, Timebase time) {
         this.engine = engine;
         this.dir = dir;
         this.time = time;
-        this.subsets = subsets;
     }
 
     /** Starts checking every later change (called by init()); the model as it is now is checked at once. */
@@ -66,14 +64,14 @@ public final class StabilityGuard {
 
     /** Suspends the check until the matching {@link #resume()}: for changes made as one batch. */
     public void defer() {
-        Ownership o = own;
+        RealtimeMode o = own;
         if (o == null || !o.ignoresDeferral()) {
             deferred++;
         }
     }
 
     public void resume() {
-        Ownership o = own;
+        RealtimeMode o = own;
         if (o == null || !o.ignoresDeferral()) {
             deferred--;
         }
@@ -84,7 +82,7 @@ public final class StabilityGuard {
      * null for a check of the model as built) and an exception is thrown.
      */
     public void afterChange(Runnable undo) {
-        Ownership o = own;
+        RealtimeMode o = own;
         if (o != null && o.interceptCheck(undo)) {
             return; // realtime stepping: collected for the editor, analysed later, or a ramp step
         }
@@ -137,7 +135,7 @@ public final class StabilityGuard {
      *     thread, the WARN helper thread) it is the live plan as it is, never compiled or re-selected there.
      */
     private StepPlan planToAnalyse() {
-        Ownership o = own;
+        RealtimeMode o = own;
         if (o != null && !o.isOwnerThread()) {
             StepPlan live = engine.livePlan();
             if (live != null) {
@@ -152,11 +150,11 @@ public final class StabilityGuard {
     }
 
     private String message(tactus.engine.StabilityReport r, StepPlan p) {
-        return StabilityMessages.describe(r, p, engine, dir, time.units, maxContacts, subsets.groupNames());
+        return StabilityMessages.describe(r, p, engine, dir, time.units, maxContacts, groupNames.get());
     }
 
     private StabilityReport facadeReport(tactus.engine.StabilityReport r) {
-        String[] groups = subsets.groupNames();
+        String[] groups = groupNames.get();
         return ApiAccess.get().stabilityReport(r, StabilityMessages.culprit(r, engine, dir, groups),
                 StabilityMessages.negativeDampingModule(r, engine, dir));
     }

@@ -1,4 +1,4 @@
-package tactus.internal.read;
+package tactus.internal.snapshot;
 
 import java.util.concurrent.atomic.AtomicInteger;
 

@@ -1,13 +1,12 @@
-package tactus.internal.read;
+package tactus.internal.snapshot;
 
-import tactus.ModelSnapshot;
 import tactus.internal.model.ApiAccess;
 import tactus.linkModuleType;
 import tactus.matModuleType;
 
 /**
  * One buffer of the snapshot exchange: the arrays a {@link SnapshotWriter} fills and the public
- * {@link ModelSnapshot} reads (its {@link #view}). Not API.
+ * {@code tactus.ModelSnapshot} reads (its {@link #view}). Not API.
  */
 public final class SnapshotBuffer {
     public long step = -1;
@@ -39,7 +38,7 @@ public final class SnapshotBuffer {
     /** True when this copy carries every mass's velocity and force. */
     public boolean motion;
     /** The public view of this buffer, made once. */
-    public final ModelSnapshot view;
+    public final Object view;
 
     SnapshotBuffer(SnapshotExchange exchange) {
         this.exchange = exchange;

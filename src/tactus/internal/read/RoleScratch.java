@@ -1,6 +1,7 @@
-package tactus.internal.realtime;
+package tactus.internal.read;
 
-import tactus.internal.model.ModelCore;
+import tactus.internal.model.ModelBase;
+import tactus.internal.model.RealtimeMode;
 
 /**
  * A three-element scratch vector for each side of a realtime-stepped model: one for its owner (the stepping thread,
@@ -8,17 +9,17 @@ import tactus.internal.model.ModelCore;
  * lock holder's read may run at the same time; with one shared vector each could return the other's value.
  */
 public final class RoleScratch {
-    private final ModelCore core;
+    private final ModelBase core;
     private final double[] owner = new double[3];
     private final double[] locked = new double[3];
 
-    public RoleScratch(ModelCore core) {
+    public RoleScratch(ModelBase core) {
         this.core = core;
     }
 
     /** @return the calling thread's scratch vector: the owner's own while the model is stepped in realtime. */
     public double[] get() {
-        Ownership o = core.own;
+        RealtimeMode o = core.own;
         return o != null && o.isOwnerThread() ? owner : locked;
     }
 }

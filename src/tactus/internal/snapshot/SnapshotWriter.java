@@ -1,10 +1,10 @@
-package tactus.internal.read;
+package tactus.internal.snapshot;
 
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.internal.model.Directory;
-import tactus.internal.model.ModelCore;
+import tactus.internal.model.ModelBase;
 import tactus.internal.model.ModuleTypes;
 import tactus.internal.model.UnitScale;
 import tactus.linkModuleType;
@@ -35,7 +35,7 @@ public final class SnapshotWriter {
     /** Link shapes, for the reader's elongation: distance in 3D, along z (1D), or to a plane on axis 0, 1, 2. */
     public static final int SHAPE_3D = 0, SHAPE_1D = 1, SHAPE_PLANE = 2;
 
-    private final ModelCore c;
+    private final ModelBase c;
     private final Engine engine;
     public final SnapshotExchange exchange = new SnapshotExchange();
     private final double[] tmp = new double[3];
@@ -86,7 +86,7 @@ public final class SnapshotWriter {
     public long linksCopied;
     public long linkWalks;
 
-    public SnapshotWriter(ModelCore core) {
+    public SnapshotWriter(ModelBase core) {
         this.c = core;
         this.engine = core.engine;
     }
