@@ -133,10 +133,6 @@ public class ParamController extends AbstractController {
         ramping = true;
     }
 
-    /** @return the target of the last ramp (or the initial value): where the next ramp starts. */
-    float lastTarget() {
-        return previous;
-    }
 
     /** @return true while a ramp is running. */
     public boolean isRamping() {

@@ -37,8 +37,8 @@ import tactus.internal.calls.ControllerBook;
  * thread's changes are queued for it, whatever lock that thread holds (docs/architecture.md, Threads). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
- * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
- * subsets, stability guard, builder, editors, state access).
+ * This class is the paper's surface and nothing else: each call is documented here and handed in a line to the
+ * machinery in {@code tactus.internal} (not API; docs/architecture.md, "Inside tactus").
  */
 public class PhysicalModel {
     /** The library version. */
@@ -920,7 +920,7 @@ public class PhysicalModel {
 
     /** Sets the inertia of every mass whose name contains {@code tag} (a substring match). */
     public void setMatParamsForName(String tag, double mass) {
-        query.setMatParamsForName(tag, mass);
+        param.setMatParamsForName(tag, mass);
     }
 
     /**
@@ -928,7 +928,7 @@ public class PhysicalModel {
      * contains {@code tag} (a substring match), each where the kind has it.
      */
     public void setLinkParamsForName(String tag, double K, double Z, double dist) {
-        query.setLinkParamsForName(tag, K, Z, dist);
+        param.setLinkParamsForName(tag, K, Z, dist);
     }
 
     /**
@@ -936,7 +936,7 @@ public class PhysicalModel {
      * z taken from it), at rest, in subset order.
      */
     public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
-        query.changeDistXBetweenSubset(center, dist, subset);
+        build.changeDistXBetweenSubset(center, dist, subset);
     }
 
     /**

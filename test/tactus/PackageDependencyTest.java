@@ -105,6 +105,32 @@ class PackageDependencyTest {
         }
     }
 
+    /**
+     * Processing's "Sketch, Import Library" inserts one import per package of the library, or the packages that
+     * library.properties lists as {@code imports}: those must be every package of src/ but the machinery's.
+     */
+    @Test
+    void importLibraryLeavesTheMachineryOut() throws IOException {
+        java.util.Set<String> packages = new java.util.TreeSet<>();
+        try (Stream<Path> all = Files.walk(Paths.get("src"))) {
+            for (Path p : (Iterable<Path>) all.filter(f -> f.toString().endsWith(".java"))::iterator) {
+                Matcher pm = PACKAGE.matcher(new String(Files.readAllBytes(p), StandardCharsets.UTF_8));
+                if (pm.find() && !pm.group(1).startsWith("tactus.internal")) {
+                    packages.add(pm.group(1));
+                }
+            }
+        }
+        String imports = null;
+        for (String line : Files.readAllLines(Paths.get("library.properties"), StandardCharsets.UTF_8)) {
+            if (line.startsWith("imports=")) {
+                imports = line.substring("imports=".length());
+            }
+        }
+        assertTrue(imports != null, "library.properties must list the packages Import Library inserts (imports=)");
+        assertTrue(packages.equals(new java.util.TreeSet<>(List.of(imports.split(",")))),
+                "library.properties imports= must be " + String.join(",", packages) + ", got " + imports);
+    }
+
     @Test
     void theRuleCatchesAForbiddenImport() {
         assertTrue(!allowed("tactus.engine", "tactus.PhysicalModel"), "the engine may not import the facade");

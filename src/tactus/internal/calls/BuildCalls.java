@@ -31,7 +31,11 @@ import tactus.internal.model.PaperLeniency;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
 
-/** The facade calls that build and edit a model: adding masses and interactions, tuning oscillators, removals, subsets and their grouped parameters, contact groups. Each enters the model once and hands the work to its room. Not API. */
+/**
+ * The facade calls that build and edit a model: adding masses and interactions, tuning oscillators, removals,
+ * subsets and their grouped parameters, contact groups. Each enters the model once and hands the work to its room.
+ * Not API.
+ */
 public final class BuildCalls extends Calls {
     public BuildCalls(ModelCore core, ModelLock gate) {
         super(core, gate);
@@ -424,5 +428,16 @@ public final class BuildCalls extends Calls {
         Check.positive(op, subset, "threshold", threshold);
         Check.finite(op, subset, "K", K);
         Check.finite(op, subset, "Z", Z);
+    }
+
+    public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
+        Check.vector("changeDistXBetweenSubset", subset, "center", center);
+        Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
+        enterChange();
+        try {
+            core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
+        } finally {
+            exit();
+        }
     }
 }

@@ -5,7 +5,11 @@ import tactus.internal.model.Check;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
 
-/** The facade calls on module parameters: masses, oscillator stiffness and damping, interaction lengths, stiffness and damping. Each enters the model once and hands the work to its room. Not API. */
+/**
+ * The facade calls on module parameters: masses, oscillator stiffness and damping, interaction lengths, stiffness
+ * and damping, and the paper's edits by name pattern. Each enters the model once and hands the work to its room.
+ * Not API.
+ */
 public final class ParamCalls extends Calls {
     public ParamCalls(ModelCore core, ModelLock gate) {
         super(core, gate);
@@ -330,6 +334,29 @@ public final class ParamCalls extends Calls {
         enterChange();
         try {
             core.params.setLink("setLinkParams", core.dir.linkId("setLinkParams", name), K, Z, dist);
+        } finally {
+            exit();
+        }
+    }
+
+    public void setMatParamsForName(String tag, double mass) {
+        Check.name("setMatParamsForName", tag);
+        enterChange();
+        try {
+            core.paper.setMassForName("setMatParamsForName", tag, mass);
+        } finally {
+            exit();
+        }
+    }
+
+    public void setLinkParamsForName(String tag, double K, double Z, double dist) {
+        Check.name("setLinkParamsForName", tag);
+        Check.finite("setLinkParamsForName", tag, "K", K);
+        Check.finite("setLinkParamsForName", tag, "Z", Z);
+        Check.finite("setLinkParamsForName", tag, "dist", dist);
+        enterChange();
+        try {
+            core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
         } finally {
             exit();
         }

@@ -7,12 +7,14 @@ import tactus.ParamController;
 import tactus.Vect3D;
 import tactus.linkModuleType;
 import tactus.matModuleType;
-import tactus.internal.model.Check;
 import tactus.internal.model.ModuleTypes;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
 
-/** The facade calls that look a model up: names, indices and types, the paper engine's index queries and name-pattern edits, controllers, energies. Each enters the model once and hands the work to its room. Not API. */
+/**
+ * The facade calls that look a model up: names, indices and types, the paper engine's index queries, the
+ * controllers, the energies. Each enters the model once and hands the work to its room. Not API.
+ */
 public final class QueryCalls extends Calls {
     private final ControllerBook controllers;
 
@@ -356,39 +358,8 @@ public final class QueryCalls extends Calls {
         }
     }
 
-    public void setMatParamsForName(String tag, double mass) {
-        Check.name("setMatParamsForName", tag);
-        enterChange();
-        try {
-            core.paper.setMassForName("setMatParamsForName", tag, mass);
-        } finally {
-            exit();
-        }
-    }
 
-    public void setLinkParamsForName(String tag, double K, double Z, double dist) {
-        Check.name("setLinkParamsForName", tag);
-        Check.finite("setLinkParamsForName", tag, "K", K);
-        Check.finite("setLinkParamsForName", tag, "Z", Z);
-        Check.finite("setLinkParamsForName", tag, "dist", dist);
-        enterChange();
-        try {
-            core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
-        } finally {
-            exit();
-        }
-    }
 
-    public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
-        Check.vector("changeDistXBetweenSubset", subset, "center", center);
-        Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
-        enterChange();
-        try {
-            core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
-        } finally {
-            exit();
-        }
-    }
 
     /** Adds or replaces a named parameter controller, made by the facade. */
     public void addParamController(String name, ParamController pc) {

@@ -10,7 +10,10 @@ import tactus.internal.read.PlanLabels;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
 
-/** The facade calls that set and read how a model runs: rates, threads, the medium, strictness, the stability policy and the divergence watch. Each enters the model once and hands the work to its room. Not API. */
+/**
+ * The facade calls that set and read how a model runs: rates, threads, the medium, strictness, the stability
+ * policy and the divergence watch. Each enters the model once and hands the work to its room. Not API.
+ */
 public final class SettingsCalls extends Calls {
     public SettingsCalls(ModelCore core, ModelLock gate) {
         super(core, gate);

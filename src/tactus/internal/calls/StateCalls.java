@@ -5,7 +5,10 @@ import tactus.internal.model.Check;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
 
-/** The facade calls on the state of masses: positions, velocities, forces, impulses and velocity control, and the haptic avatar. Each enters the model once and hands the work to its room. Not API. */
+/**
+ * The facade calls on the state of masses: positions, velocities, forces, impulses and velocity control, and the
+ * haptic avatar. Each enters the model once and hands the work to its room. Not API.
+ */
 public final class StateCalls extends Calls {
     public StateCalls(ModelCore core, ModelLock gate) {
         super(core, gate);
