@@ -2,6 +2,7 @@ package tactus;
 
 import java.util.HashMap;
 import java.util.Map;
+import tactus.internal.model.PaperLeniency;
 
 /**
  * The base of the paper engine's parameter controllers: it names a subset and one of its parameters ("mass",

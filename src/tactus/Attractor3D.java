@@ -1,28 +1,31 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /** Inverse-square attraction between two masses, f = -A / d^2, while d exceeds a limit distance. */
 public final class Attractor3D extends Interaction {
-    Attractor3D(PhysicalModel model, int id) {
-        super(model, id);
+    Attractor3D(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** @return the attraction factor A (REAL_UNITS: N·m^2); negative values repel. */
     public double getAttraction() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.params.attraction("getAttraction", id);
+            return core.params.attraction("getAttraction", id);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Sets the attraction factor A (REAL_UNITS: N·m^2). */
     public void setAttraction(double a) {
-        model.enter(this);
+        enter();
         try {
-            model.core.params.setAttraction("setAttraction", id, a);
+            core.params.setAttraction("setAttraction", id, a);
         } finally {
-            model.exit();
+            exit();
         }
     }
 

@@ -1,13 +1,16 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /**
  * An interaction with a stiffness K, a damping Z and a length parameter: the spring-damper family
  * (springs, ropes, contacts, bubbles, 1D spring-dampers). The length is a rest length, a contact
  * threshold or a bubble radius depending on the type.
  */
 public abstract class ElasticInteraction extends Interaction {
-    ElasticInteraction(PhysicalModel model, int id) {
-        super(model, id);
+    ElasticInteraction(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** @return the stiffness (REAL_UNITS: N/m). */

@@ -1,23 +1,26 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /**
  * The haptic avatar: a mass-type module whose position follows the device position through an
  * exponentially weighted moving average (weight 1/smoothing per step) and which accumulates the
  * force the model applies to it, over as many steps as run, until {@link #takeForce()} reads it.
  */
 public final class HapticInput3D extends Mass {
-    HapticInput3D(PhysicalModel model, int id) {
-        super(model, id);
+    HapticInput3D(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** Sets the device position the avatar follows, in model units. */
     public void setDevicePosition(Vect3D pos) {
         checkVector("setDevicePosition", "pos", pos);
-        model.enter(this);
+        enter();
         try {
-            model.core.state.setInputTarget(id, pos.x, pos.y, pos.z);
+            core.state.setInputTarget(id, pos.x, pos.y, pos.z);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
@@ -31,11 +34,11 @@ public final class HapticInput3D extends Mass {
      * resets the accumulator, and returns {@code out}.
      */
     public Vect3D takeForce(Vect3D out) {
-        model.enter(this);
+        enter();
         try {
-            return model.core.state.takeAvatarForce(id, out);
+            return core.state.takeAvatarForce(id, out);
         } finally {
-            model.exit();
+            exit();
         }
     }
 }

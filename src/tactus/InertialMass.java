@@ -1,39 +1,42 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /** A mass-type module that integrates forces: it has an inertia and a velocity that can be set. */
 public abstract class InertialMass extends Mass {
-    InertialMass(PhysicalModel model, int id) {
-        super(model, id);
+    InertialMass(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** @return the inertia (REAL_UNITS: kg). */
     public double getMass() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.params.mass("getMass", id);
+            return core.params.mass("getMass", id);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Sets the inertia, finite and &gt; 0 (REAL_UNITS: kg). */
     public void setMass(double mass) {
-        model.enter(this);
+        enter();
         try {
-            model.core.params.setMass("setMass", id, mass);
+            core.params.setMass("setMass", id, mass);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Sets the velocity in units per second, keeping the position. */
     public void setVelocity(Vect3D vel) {
         checkVector("setVelocity", "vel", vel);
-        model.enter(this);
+        enter();
         try {
-            model.core.state.setVelocity("setVelocity", id, vel);
+            core.state.setVelocity("setVelocity", id, vel);
         } finally {
-            model.exit();
+            exit();
         }
     }
 }

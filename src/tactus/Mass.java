@@ -1,6 +1,7 @@
 package tactus;
 
-import tactus.engine.MassKind;
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
 
 /**
  * A handle on one mass-type module of a {@link PhysicalModel}: a thin view onto its slot in the
@@ -8,54 +9,28 @@ import tactus.engine.MassKind;
  * mass is turned into a fixed point; after that every method throws {@link IllegalStateException}.
  */
 public abstract class Mass extends Module {
-    Mass(PhysicalModel model, int id) {
-        super(model, id);
+    Mass(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
-    static Mass create(PhysicalModel model, int id, MassKind kind) {
-        switch (kind) {
-            case MASS3D:
-                return new Mass3D(model, id);
-            case MASS3D_SIMPLE:
-                return new Mass3DSimple(model, id);
-            case MASS2D_PLANE:
-                return new Mass2DPlane(model, id);
-            case MASS1D:
-                return new Mass1D(model, id);
-            case OSC3D:
-                return new Osc3D(model, id);
-            case OSC1D:
-                return new Osc1D(model, id);
-            case HAPTIC_INPUT3D:
-                return new HapticInput3D(model, id);
-            case POS_INPUT3D:
-                return new PosInput3D(model, id);
-            case GROUND3D:
-                return new Ground3D(model, id);
-            case GROUND1D:
-                return new Ground1D(model, id);
-            default:
-                throw new IllegalStateException("no handle for " + kind);
-        }
-    }
 
     @Override
     public String getName() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.dir.massName(id);
+            return core.dir.massName(id);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     @Override
     public String getType() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.dir.massKind(id).label();
+            return core.dir.massKind(id).label();
         } finally {
-            model.exit();
+            exit();
         }
     }
 
@@ -66,42 +41,42 @@ public abstract class Mass extends Module {
 
     /** Writes the current position into {@code out} without allocating, and returns it. */
     public Vect3D getPosition(Vect3D out) {
-        model.enter(this);
+        enter();
         try {
-            return model.core.state.position(id, out);
+            return core.state.position(id, out);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** @return the velocity over the last step, in units per second. */
     public Vect3D getVelocity() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.state.velocity(id, new Vect3D());
+            return core.state.velocity(id, new Vect3D());
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** @return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N). */
     public Vect3D getForce() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.state.force(id, new Vect3D());
+            return core.state.force(id, new Vect3D());
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Moves this mass to a position with zero velocity (see {@link PhysicalModel#setMatPosition}). */
     public void setPosition(Vect3D pos) {
         checkVector("setPosition", "pos", pos);
-        model.enter(this);
+        enter();
         try {
-            model.core.state.setPosition(id, pos);
+            core.state.setPosition(id, pos);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
@@ -110,11 +85,11 @@ public abstract class Mass extends Module {
         checkFinite("applyForce", "fx", fx);
         checkFinite("applyForce", "fy", fy);
         checkFinite("applyForce", "fz", fz);
-        model.enter(this);
+        enter();
         try {
-            model.core.state.addImpulse(id, fx, fy, fz);
+            core.state.addImpulse(id, fx, fy, fz);
         } finally {
-            model.exit();
+            exit();
         }
     }
 }

@@ -1,8 +1,11 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /** A mass that moves along z only; x and y keep their initial values. */
 public final class Mass1D extends InertialMass {
-    Mass1D(PhysicalModel model, int id) {
-        super(model, id);
+    Mass1D(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 }

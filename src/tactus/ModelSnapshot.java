@@ -1,5 +1,9 @@
 package tactus;
 
+import tactus.internal.snapshot.SnapshotBuffer;
+import tactus.internal.snapshot.SnapshotWriter;
+
+
 /**
  * A consistent copy of a model's state at one step, for drawing: every mass's position, type and name index
  * (and, on request, velocity and force: {@link #requestMotion}), and, unless the reader declined them
@@ -12,35 +16,10 @@ package tactus;
  * {@link PhysicalModel#getMatPosAt(int)}.
  */
 public final class ModelSnapshot {
-    long step = -1;
-    int masses;
-    int links;
-    double[] pos = new double[0];
-    double[] vel = new double[0];
-    double[] force = new double[0];
-    matModuleType[] massTypes = new matModuleType[0];
-    int[] ends = new int[0];
-    /** Per interaction: how its distance is measured ({@link SnapshotWriter#SHAPE_3D} and so on). */
-    int[] shapes = new int[0];
-    /** Per interaction: its length parameter, and for a plane contact its plane coordinate. */
-    double[] length = new double[0];
-    double[] plane = new double[0];
-    linkModuleType[] linkTypes = new linkModuleType[0];
-    /** The topology version whose mass types, and interaction ends, types and shapes, this buffer holds. */
-    int massVersion = -1;
-    int linkVersion = -1;
-    /** The mass cache stamp for which the velocities and forces of every mass but the avatars are zero. */
-    int zeroStamp = -1;
-    /** The link cache stamp and the engine's count of link parameter edits when the lengths were copied. */
-    int lengthsCopied = -1;
-    long lengthEdits = -1;
-    boolean hasLinks;
+    private final SnapshotBuffer buf;
 
-    final SnapshotExchange owner;
-    boolean motion;
-
-    ModelSnapshot(SnapshotExchange owner) {
-        this.owner = owner;
+    ModelSnapshot(SnapshotBuffer buf) {
+        this.buf = buf;
     }
 
     /**
@@ -51,7 +30,7 @@ public final class ModelSnapshot {
      * @param on true to include velocities and forces of every mass
      */
     public void requestMotion(boolean on) {
-        owner.motion = on;
+        buf.exchange.motion = on;
     }
 
     /**
@@ -62,7 +41,7 @@ public final class ModelSnapshot {
      * @param on true to include the interactions
      */
     public void requestLinks(boolean on) {
-        owner.links = on;
+        buf.exchange.links = on;
     }
 
     /**
@@ -70,7 +49,7 @@ public final class ModelSnapshot {
      *     ({@link #requestLinks}), and {@link #getNumberOfLinks()} is then 0
      */
     public boolean hasLinks() {
-        return hasLinks;
+        return buf.hasLinks;
     }
 
     /**
@@ -78,58 +57,58 @@ public final class ModelSnapshot {
      *         forces (the other masses then read 0)
      */
     public boolean hasMotion() {
-        return motion;
+        return buf.motion;
     }
 
     /** @return the step count at which the copy was taken, or -1 before the first publication. */
     public long getStep() {
-        return step;
+        return buf.step;
     }
 
     /** @return the number of masses in the copy. */
     public int getNumberOfMats() {
-        return masses;
+        return buf.masses;
     }
 
     /** @return the number of interactions in the copy (0 when it carries none: {@link #hasLinks()}). */
     public int getNumberOfLinks() {
-        return links;
+        return buf.links;
     }
 
     /** @return the x coordinate of mass {@code i}, in model length units. */
     public double x(int i) {
-        return pos[3 * checkMass(i)];
+        return buf.pos[3 * checkMass(i)];
     }
 
     /** @return the y coordinate of mass {@code i}. */
     public double y(int i) {
-        return pos[3 * checkMass(i) + 1];
+        return buf.pos[3 * checkMass(i) + 1];
     }
 
     /** @return the z coordinate of mass {@code i}. */
     public double z(int i) {
-        return pos[3 * checkMass(i) + 2];
+        return buf.pos[3 * checkMass(i) + 2];
     }
 
     /** @return the x component of the velocity of mass {@code i}, in length units per second. */
     public double vx(int i) {
-        return vel[3 * checkMass(i)];
+        return buf.vel[3 * checkMass(i)];
     }
 
     /** @return the y component of the velocity of mass {@code i}, in length units per second. */
     public double vy(int i) {
-        return vel[3 * checkMass(i) + 1];
+        return buf.vel[3 * checkMass(i) + 1];
     }
 
     /** @return the z component of the velocity of mass {@code i}, in length units per second. */
     public double vz(int i) {
-        return vel[3 * checkMass(i) + 2];
+        return buf.vel[3 * checkMass(i) + 2];
     }
 
     /** @return the speed of mass {@code i} (the norm of its velocity over the last step), length units per second. */
     public double speed(int i) {
         int q = 3 * checkMass(i);
-        return Math.sqrt(vel[q] * vel[q] + vel[q + 1] * vel[q + 1] + vel[q + 2] * vel[q + 2]);
+        return Math.sqrt(buf.vel[q] * buf.vel[q] + buf.vel[q + 1] * buf.vel[q + 1] + buf.vel[q + 2] * buf.vel[q + 2]);
     }
 
     /**
@@ -138,44 +117,44 @@ public final class ModelSnapshot {
      *         taken (what the device is being sent), for fixed and driven masses 0
      */
     public double fx(int i) {
-        return force[3 * checkMass(i)];
+        return buf.force[3 * checkMass(i)];
     }
 
     /** @return the y component of the force on mass {@code i} (see {@link #fx(int)}). */
     public double fy(int i) {
-        return force[3 * checkMass(i) + 1];
+        return buf.force[3 * checkMass(i) + 1];
     }
 
     /** @return the z component of the force on mass {@code i} (see {@link #fx(int)}). */
     public double fz(int i) {
-        return force[3 * checkMass(i) + 2];
+        return buf.force[3 * checkMass(i) + 2];
     }
 
     /** @return the norm of the force on mass {@code i} (see {@link #fx(int)}). */
     public double forceNorm(int i) {
         int q = 3 * checkMass(i);
-        return Math.sqrt(force[q] * force[q] + force[q + 1] * force[q + 1] + force[q + 2] * force[q + 2]);
+        return Math.sqrt(buf.force[q] * buf.force[q] + buf.force[q + 1] * buf.force[q + 1] + buf.force[q + 2] * buf.force[q + 2]);
     }
 
     /** Writes the position of mass {@code i} into {@code out} and returns it. */
     public Vect3D getMatPos(int i, Vect3D out) {
         int q = 3 * checkMass(i);
-        return out.set(pos[q], pos[q + 1], pos[q + 2]);
+        return out.set(buf.pos[q], buf.pos[q + 1], buf.pos[q + 2]);
     }
 
     /** @return the type of mass {@code i}. */
     public matModuleType getMatType(int i) {
-        return massTypes[checkMass(i)];
+        return buf.massTypes[checkMass(i)];
     }
 
     /** @return the index of the first mass of interaction {@code l}. */
     public int getLinkMat1Idx(int l) {
-        return ends[2 * checkLink(l)];
+        return buf.ends[2 * checkLink(l)];
     }
 
     /** @return the index of the second mass of interaction {@code l} (the first again for a plane contact). */
     public int getLinkMat2Idx(int l) {
-        return ends[2 * checkLink(l) + 1];
+        return buf.ends[2 * checkLink(l) + 1];
     }
 
     /**
@@ -186,68 +165,47 @@ public final class ModelSnapshot {
      */
     public double getLinkElongation(int l) {
         int k = checkLink(l);
-        int a = 3 * ends[2 * k];
-        int shape = shapes[k];
+        int a = 3 * buf.ends[2 * k];
+        int shape = buf.shapes[k];
         double d;
         if (shape >= SnapshotWriter.SHAPE_PLANE) {
-            d = pos[a + shape - SnapshotWriter.SHAPE_PLANE] - plane[k];
+            d = buf.pos[a + shape - SnapshotWriter.SHAPE_PLANE] - buf.plane[k];
         } else {
-            int b = 3 * ends[2 * k + 1];
+            int b = 3 * buf.ends[2 * k + 1];
             if (shape == SnapshotWriter.SHAPE_1D) {
-                d = pos[a + 2] - pos[b + 2];
+                d = buf.pos[a + 2] - buf.pos[b + 2];
             } else {
-                double dx = pos[a] - pos[b];
-                double dy = pos[a + 1] - pos[b + 1];
-                double dz = pos[a + 2] - pos[b + 2];
+                double dx = buf.pos[a] - buf.pos[b];
+                double dy = buf.pos[a + 1] - buf.pos[b + 1];
+                double dz = buf.pos[a + 2] - buf.pos[b + 2];
                 d = Math.sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
-        return d - length[k];
+        return d - buf.length[k];
     }
 
     /** @return the type of interaction {@code l}. */
     public linkModuleType getLinkType(int l) {
-        return linkTypes[checkLink(l)];
+        return buf.linkTypes[checkLink(l)];
     }
 
     private int checkMass(int i) {
-        if (i < 0 || i >= masses) {
-            throw new IndexOutOfBoundsException("snapshot mass index " + i + " out of range 0.." + (masses - 1));
+        if (i < 0 || i >= buf.masses) {
+            throw new IndexOutOfBoundsException("snapshot mass index " + i + " out of range 0.." + (buf.masses - 1));
         }
         return i;
     }
 
     private int checkLink(int l) {
-        if (!hasLinks && step >= 0) {
+        if (!buf.hasLinks && buf.step >= 0) {
             throw new IllegalStateException("snapshot link " + l + ": this copy carries no interactions (the "
                     + "reader asked for masses only with requestLinks(false); call requestLinks(true))");
         }
-        if (l < 0 || l >= links) {
-            throw new IndexOutOfBoundsException("snapshot link index " + l + " out of range 0.." + (links - 1));
+        if (l < 0 || l >= buf.links) {
+            throw new IndexOutOfBoundsException("snapshot link index " + l + " out of range 0.." + (buf.links - 1));
         }
         return l;
     }
 
     /** Makes room for a model of this size; allocates only when the model grew. */
-    void ensure(int nMass, int nLink) {
-        if (massTypes.length < nMass) {
-            int cap = Math.max(nMass, massTypes.length * 3 / 2 + 8);
-            pos = new double[3 * cap];
-            vel = new double[3 * cap];
-            force = new double[3 * cap];
-            massTypes = new matModuleType[cap];
-            massVersion = -1;
-            zeroStamp = -1;
-        }
-        if (linkTypes.length < nLink) {
-            int cap = Math.max(nLink, linkTypes.length * 3 / 2 + 8);
-            ends = new int[2 * cap];
-            shapes = new int[cap];
-            length = new double[cap];
-            plane = new double[cap];
-            linkTypes = new linkModuleType[cap];
-            linkVersion = -1;
-            lengthsCopied = -1;
-        }
-    }
 }

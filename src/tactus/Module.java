@@ -1,18 +1,38 @@
 package tactus;
 
+import tactus.internal.model.Check;
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /**
  * A handle on one module (a mass or an interaction) of a {@link PhysicalModel}: a thin view onto its slot
  * in the engine's arrays. A handle stays valid until its module leaves the model (removed, cleared, or a
  * mass turned into a fixed point); after that every method throws {@link IllegalStateException}.
  */
 public abstract class Module {
-    final PhysicalModel model;
+    /** The model's rooms and its way in: a handle calls them directly, as the facade does. */
+    final ModelCore core;
+    final ModelLock gate;
     final int id;
     private volatile boolean valid = true;
 
-    Module(PhysicalModel model, int id) {
-        this.model = model;
+    Module(ModelCore core, ModelLock gate, int id) {
+        this.core = core;
+        this.gate = gate;
         this.id = id;
+    }
+
+    /** Enters the model for a call of this handle, and checks, once in, that the module is still part of it. */
+    void enter() {
+        gate.enter();
+        if (!valid) {
+            gate.exit();
+            checkValid();
+        }
+    }
+
+    void exit() {
+        gate.exit();
     }
 
     void invalidate() {

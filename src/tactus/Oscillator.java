@@ -1,53 +1,56 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /**
  * A mass tied to its rest position by an internal spring and damper (Osc3D, Osc1D). Parameter
  * changes take effect at the next step.
  */
 public abstract class Oscillator extends InertialMass {
-    Oscillator(PhysicalModel model, int id) {
-        super(model, id);
+    Oscillator(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** @return the internal stiffness (REAL_UNITS: N/m). */
     public double getStiffness() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.params.oscStiffness("getStiffness", id);
+            return core.params.oscStiffness("getStiffness", id);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Sets the internal stiffness (REAL_UNITS: N/m). */
     public void setStiffness(double K) {
         checkFinite("setStiffness", "K", K);
-        model.enter(this);
+        enter();
         try {
-            model.core.params.setOsc("setStiffness", id, K, Double.NaN);
+            core.params.setOsc("setStiffness", id, K, Double.NaN);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** @return the internal damping (REAL_UNITS: N·s/m). */
     public double getDamping() {
-        model.enter(this);
+        enter();
         try {
-            return model.core.params.oscDamping("getDamping", id);
+            return core.params.oscDamping("getDamping", id);
         } finally {
-            model.exit();
+            exit();
         }
     }
 
     /** Sets the internal damping (REAL_UNITS: N·s/m). */
     public void setDamping(double Z) {
         checkFinite("setDamping", "Z", Z);
-        model.enter(this);
+        enter();
         try {
-            model.core.params.setOsc("setDamping", id, Double.NaN, Z);
+            core.params.setOsc("setDamping", id, Double.NaN, Z);
         } finally {
-            model.exit();
+            exit();
         }
     }
 }

@@ -1,5 +1,10 @@
 package tactus;
 
+import tactus.internal.realtime.Command;
+import tactus.internal.realtime.Ownership;
+import tactus.internal.realtime.RampTargets;
+import tactus.internal.ModelCore;
+
 /**
  * Ramps one parameter of a subset to a target over a set time, one simulation step at a time, as the paper's
  * engine does for parameter changes driven by MIDI or the GUI. Create it with
@@ -56,7 +61,7 @@ public class ParamController extends AbstractController {
         if ("distX".equals(param) && center == null) {
             center = pm.getBarycenterOfSubset(subsetName);
         }
-        if (pm.postRamp(this, target, steps, center)) {
+        if (postRamp(target, steps)) {
             return; // realtime stepping: the stepping thread starts the ramp between two steps
         }
         rampSteps = steps;
@@ -73,6 +78,51 @@ public class ParamController extends AbstractController {
      * Starts a ramp from the last target to {@code target} over {@code steps} steps without allocating: what
      * {@link #triggerRamp(float)} does on the thread that steps a realtime-stepped model.
      */
+    /**
+     * Queues the start of this ramp when the model is stepped in realtime by another thread.
+     *
+     * @return false when the caller should start the ramp itself (no realtime stepping, or it is the owner)
+     */
+    private boolean postRamp(float target, long steps) {
+        Ownership o = (Ownership) pm.core.own;
+        if (o == null || o.isOwnerThread()) {
+            return false;
+        }
+        pm.gate.enterChange();
+        try {
+            RampTargets t = RampTargets.resolve(pm.core, subsetName, param, previous, target, center);
+            Ownership now = (Ownership) pm.core.own;
+            if (now == null) {
+                return false; // the mode ended while this thread waited for the lock
+            }
+            now.post(new RampStart(this, target, steps, t));
+        } finally {
+            pm.gate.exit();
+        }
+        return true;
+    }
+
+    /** The owner's half of {@link #postRamp}: starts the ramp between two steps. */
+    private static final class RampStart extends Command {
+        private final ParamController pc;
+        private final float target;
+        private final long steps;
+        private final RampTargets targets;
+
+        RampStart(ParamController pc, float target, long steps, RampTargets targets) {
+            this.pc = pc;
+            this.target = target;
+            this.steps = steps;
+            this.targets = targets;
+        }
+
+        @Override
+        public boolean apply(ModelCore c) {
+            pc.startRamp(target, steps, targets);
+            return true;
+        }
+    }
+
     void startRamp(float target, long steps, RampTargets resolved) {
         targets = resolved;
         rampSteps = steps;
@@ -83,10 +133,6 @@ public class ParamController extends AbstractController {
         ramping = true;
     }
 
-    /** @return the target of the last ramp (or the initial value): where the next ramp starts. */
-    float lastTarget() {
-        return previous;
-    }
 
     /** @return true while a ramp is running. */
     public boolean isRamping() {

@@ -1,10 +1,18 @@
 package tactus;
 
 import java.util.concurrent.locks.Lock;
-import java.util.concurrent.locks.ReentrantLock;
 import processing.core.PVector;
-import tactus.engine.LinkKind;
-import tactus.engine.MassKind;
+import tactus.internal.model.Check;
+import tactus.internal.calls.BuildCalls;
+import tactus.internal.calls.ParamCalls;
+import tactus.internal.calls.QueryCalls;
+import tactus.internal.calls.SettingsCalls;
+import tactus.internal.calls.StateCalls;
+import tactus.internal.model.ApiAccess;
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.realtime.Stepping;
+import tactus.internal.ModelCore;
+import tactus.internal.calls.ControllerBook;
 
 /**
  * A mass-interaction physical model: masses and interactions addressed by name, simulated at a fixed rate with
@@ -29,17 +37,29 @@ import tactus.engine.MassKind;
  * thread's changes are queued for it, whatever lock that thread holds (docs/architecture.md, Threads). Long stepping
  * batches ({@link #draw_physics()}, {@link #computeNSteps(int)}) let a waiting thread in between two slices of
  * about 65,000 element updates, so that a parameter change from another thread never waits for a whole batch.
- * This class is a thin surface: the work is done by package-private parts (directory, clock and units,
- * subsets, stability guard, builder, editors, state access).
+ * This class is the paper's surface and nothing else: each call is documented here and handed in a line to the
+ * machinery in {@code tactus.internal} (not API; docs/architecture.md, "Inside tactus").
  */
 public class PhysicalModel {
     /** The library version. */
     public static final String VERSION = "0.2.0";
-    /** Element updates (masses plus interactions) after which a stepping batch lets a waiting thread in. */
-    private static final int SLICE_ELEMENTS = 65_536;
 
-    private final ReentrantLock lock = new ReentrantLock(true);
+    static {
+        ApiAccess.install(new ApiDoors());
+    }
+
     final ModelCore core;
+    /** How calls get in and out: the lock, or the owner's gate in realtime mode. */
+    final ModelLock gate;
+    /** The stepping calls, in both modes. */
+    private final Stepping stepping;
+    /** The rest of each call, by concern: once in the model, each hands the work to its room. */
+    private final SettingsCalls settings;
+    private final BuildCalls build;
+    private final QueryCalls query;
+    private final StateCalls state;
+    private final ParamCalls param;
+    private final ControllerBook controllers = new ControllerBook();
 
     /**
      * Creates an empty model.
@@ -58,7 +78,18 @@ public class PhysicalModel {
         if (system == null) {
             throw new IllegalArgumentException("PhysicalModel: the unit system must not be null");
         }
-        core = new ModelCore(this, system, simRate, displayRate);
+        ModuleHandles handles = new ModuleHandles();
+        core = new ModelCore(system, simRate, displayRate, handles);
+        gate = new ModelLock(core);
+        handles.core = core;
+        handles.gate = gate;
+        core.ramps = controllers;
+        stepping = new Stepping(core, gate);
+        settings = new SettingsCalls(core, gate);
+        build = new BuildCalls(core, gate);
+        query = new QueryCalls(core, gate, controllers);
+        state = new StateCalls(core, gate);
+        param = new ParamCalls(core, gate);
     }
 
     /** Creates an empty model in algorithmic units. */
@@ -88,17 +119,12 @@ public class PhysicalModel {
      *     other, in call order)
      */
     public Lock getLock() {
-        return lock;
+        return gate.lock();
     }
 
     /** @return the unit system of this model. */
     public paramSystem getParamSystem() {
-        enter();
-        try {
-            return core.units().isReal() ? paramSystem.REAL_UNITS : paramSystem.ALGO_UNITS;
-        } finally {
-            exit();
-        }
+        return settings.getParamSystem();
     }
 
     /**
@@ -106,128 +132,7 @@ public class PhysicalModel {
      * change: a spring of 1000 N/m read back in ALGO_UNITS gives its per-step stiffness, 1000 / fs².
      */
     public void setParamSystem(paramSystem system) {
-        if (system == null) {
-            throw new IllegalArgumentException("setParamSystem: the unit system must not be null");
-        }
-        structuralDo(() -> {
-            core.time.setParamSystem(system);
-        });
-    }
-
-    // =================================================================== locking, for the facade and its handles
-
-    /** Commands dropped in realtime modes that have ended (see {@link #getDroppedCommands()}); volatile for readers. */
-    private volatile long droppedInEndedModes;
-    /** Nesting of the facade calls of the thread that holds the lock (guarded by the lock). */
-    private int editDepth;
-    /** The realtime mode the outermost facade call of the lock holder began an edit in, or null (guarded by it). */
-    private Ownership editOwn;
-
-    /**
-     * Enters a facade call. While the model is stepped in realtime ({@link #beginRealtimeStepping()}), the owner
-     * takes no lock (it holds the mode's gate for the call); any other thread takes the lock, and its outermost
-     * facade call, whatever locks it already holds ({@link #getLock()} included), first waits until the changes it
-     * queued earlier are applied, then prepares its own change as a command (see {@link Ownership}).
-     */
-    void enter() {
-        enter(false);
-    }
-
-    /**
-     * Enters a facade call that makes a parameter or state change. While the model is stepped in realtime, the change
-     * is prepared without waiting for earlier queued changes to be applied (under THROW it does wait, so that its
-     * undo is exact): a run of setters returns at once, in order.
-     */
-    void enterChange() {
-        enter(true);
-    }
-
-    private void enter(boolean change) {
-        Ownership o = core.own;
-        if (o != null && o.isOwnerThread() && o.enterAsOwner()) {
-            return;
-        }
-        lock.lock();
-        if (editDepth++ > 0) {
-            return;
-        }
-        try {
-            o = core.own;
-            if (o != null && o.endPending()) {
-                endMode(o); // the owner ended the mode from inside a stepping call: finish it here
-                o = null;
-            }
-            editOwn = o;
-            if (o != null) {
-                if (change) {
-                    o.beginChange();
-                } else {
-                    o.beginEdit();
-                }
-            }
-        } catch (RuntimeException | Error e) {
-            editDepth--;
-            editOwn = null;
-            lock.unlock();
-            throw e;
-        }
-    }
-
-    /** Takes the lock and checks, under it, that a handle's module is still part of the model. */
-    void enter(Module handle) {
-        enter();
-        if (!handle.isValid()) {
-            exit();
-            handle.checkValid();
-        }
-    }
-
-    /** Leaves a facade call; the outermost call of an editor of a realtime-stepped model posts what it prepared. */
-    void exit() {
-        Ownership o = core.own;
-        if (o != null && o.ownerInCall()) {
-            o.exitAsOwner();
-            return;
-        }
-        if (!lock.isHeldByCurrentThread()) {
-            return;
-        }
-        try {
-            if (--editDepth == 0) {
-                Ownership e = editOwn;
-                editOwn = null;
-                if (e != null) {
-                    e.endEdit();
-                }
-            }
-        } finally {
-            lock.unlock();
-        }
-    }
-
-    /**
-     * Runs a structural change (modules, subsets, groups, rates, divergence settings): under the lock, or, while the
-     * model is stepped in realtime, as a command the stepping thread runs between two steps while this thread waits
-     * (its stability analysis then runs here).
-     */
-    private <T> T structural(java.util.function.Supplier<T> body) {
-        enter();
-        try {
-            Ownership o = core.own;
-            if (o == null || o.ownerInCall() || o.isApplying()) {
-                return body.get(); // not realtime, or already on the thread that applies changes
-            }
-            return o.run(body);
-        } finally {
-            exit();
-        }
-    }
-
-    private void structuralDo(Runnable body) {
-        structural(() -> {
-            body.run();
-            return null;
-        });
+        settings.setParamSystem(system);
     }
 
     // =================================================================== realtime stepping
@@ -246,15 +151,7 @@ public class PhysicalModel {
      * which calls are queued and when they apply. Calling it again does nothing.
      */
     public void beginRealtimeStepping() {
-        enter();
-        try {
-            if (core.own == null) {
-                core.snapshots.publishIfDirty(); // from now on only the owner may publish
-                core.setOwnership(new Ownership(core));
-            }
-        } finally {
-            exit();
-        }
+        gate.beginRealtime();
     }
 
     /**
@@ -265,47 +162,7 @@ public class PhysicalModel {
      * thread holds the model's lock).
      */
     public void endRealtimeStepping() {
-        Ownership o = core.own;
-        if (o != null && o.isOwnerThread()) {
-            if (o.ownerInCall()) {
-                o.requestEnd();
-                return;
-            }
-            o.releaseRole(); // the owner between two calls: give the role up, then end the mode as any thread
-        }
-        enter();
-        try {
-            o = core.own;
-            if (o != null) {
-                endMode(o);
-            }
-        } finally {
-            exit();
-        }
-    }
-
-    /**
-     * Called by the owner once it gave the role up after {@link #endRealtimeStepping()} from inside a stepping call:
-     * ends the mode now if no other thread holds the lock (else the next thread that enters does).
-     */
-    void finishEndIfFree(Ownership o) {
-        if (!lock.tryLock()) {
-            return;
-        }
-        try {
-            if (core.own == o && o.endPending() && editDepth == 0) {
-                endMode(o);
-            }
-        } finally {
-            lock.unlock();
-        }
-    }
-
-    /** Ends a realtime mode (the caller holds the lock): drains and closes it, keeps its count of dropped commands. */
-    private void endMode(Ownership o) {
-        o.close();
-        droppedInEndedModes += o.droppedCount();
-        core.setOwnership(null);
+        gate.endRealtime();
     }
 
     /**
@@ -314,8 +171,7 @@ public class PhysicalModel {
      *     gave it up)
      */
     public Thread getRealtimeOwner() {
-        Ownership o = core.own;
-        return o == null ? null : o.owner();
+        return gate.owner();
     }
 
     /**
@@ -330,8 +186,7 @@ public class PhysicalModel {
      *     its realtime mode is ending
      */
     public boolean takeRealtimeStepping() {
-        Ownership o = core.own;
-        return o != null && o.claim();
+        return gate.claim();
     }
 
     /**
@@ -341,101 +196,19 @@ public class PhysicalModel {
      *     skipped (the others applied) and nothing was thrown
      */
     public long getDroppedCommands() {
-        Ownership o = core.own;
-        return droppedInEndedModes + (o == null ? 0 : o.droppedCount());
-    }
-
-    /**
-     * Queues the start of a controller's ramp when the model is stepped in realtime by another thread.
-     *
-     * @return false when the caller should start the ramp itself (no realtime stepping, or it is the owner)
-     */
-    boolean postRamp(ParamController pc, float target, long steps, Vect3D center) {
-        Ownership o = core.own;
-        if (o == null || o.isOwnerThread()) {
-            return false;
-        }
-        enterChange();
-        try {
-            RampTargets t = RampTargets.resolve(core, pc.getSubsetName(), pc.getParamName(), pc.lastTarget(), target,
-                    center);
-            Ownership now = core.own;
-            if (now == null) {
-                return false; // the mode ended while this thread waited for the lock
-            }
-            now.post(new Command() {
-                @Override
-                boolean apply(ModelCore c) {
-                    pc.startRamp(target, steps, t);
-                    return true;
-                }
-            });
-        } finally {
-            exit();
-        }
-        return true;
+        return gate.droppedCommands();
     }
 
     /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
     public boolean isRealtimeStepping() {
-        return core.own != null;
-    }
-
-    /** Results of {@link #stepOwned} other than a step count. */
-    private static final int ENDED = -1, REFUSED = -2;
-
-    /**
-     * One stepping call of a realtime-stepped model on the calling thread (which takes the owner role if it is free):
-     * applies the queued changes, runs n steps (advancing parameter ramps), checks for divergence. Takes no lock.
-     *
-     * @param call the facade call, for the message when another thread owns the model
-     * @return the number of steps run; {@link #ENDED} when the mode is ending (the caller steps in locked mode);
-     *     {@link #REFUSED} when another thread owns the model (nothing was done, the message was printed once)
-     */
-    private int stepOwned(Ownership o, int n, String call) {
-        int r = o.beginStep(n);
-        if (r == Ownership.ENDED) {
-            return ENDED;
-        }
-        if (r == Ownership.REFUSED) {
-            o.refused(call);
-            return REFUSED;
-        }
-        try {
-            o.applyQueued();
-            int done = 0;
-            while (done < n) {
-                boolean ramping = core.ramping();
-                int ran;
-                if (ramping) {
-                    core.advanceRamps();
-                    ran = core.engine.step(1);
-                } else {
-                    ran = core.engine.step(n - done);
-                }
-                core.snapshots.afterSteps(ran);
-                done += ran;
-                if (ran == 0) {
-                    break;
-                }
-            }
-            core.watch.check();
-            return done;
-        } finally {
-            o.endStep();
-        }
+        return gate.mode() != null;
     }
 
     // =================================================================== rates and stepping
 
     /** @return the simulation rate, in steps per second. */
     public int getSimRate() {
-        enter();
-        try {
-            return core.time.simRate();
-        } finally {
-            exit();
-        }
+        return settings.getSimRate();
     }
 
     /**
@@ -451,31 +224,8 @@ public class PhysicalModel {
      * @param rate steps per second, &gt; 0
      */
     public void setSimRate(int rate) {
-        checkSimRate(rate);
-        Object holder = simRateHolder;
-        if (holder != null && simRateSession == core.own) {
-            throw new IllegalStateException("setSimRate(" + rate + "): refused, the model stays at " + getSimRate()
-                    + " steps/s: " + holder);
-        }
-        changeSimRate(rate);
+        stepping.setSimRate(rate);
     }
-
-    private void changeSimRate(int rate) {
-        checkSimRate(rate);
-        structuralDo(() -> {
-            core.time.setSimRate(rate, core.subsets.groupIds(), core.guard);
-        });
-    }
-
-    private static void checkSimRate(int rate) {
-        if (rate <= 0) {
-            throw new IllegalArgumentException("setSimRate: the rate must be > 0 Hz, got " + rate);
-        }
-    }
-
-    /** The realtime driver that fixes the rate (see {@link #holdSimRate(Object)}), and the session it holds it for. */
-    private volatile Object simRateHolder;
-    private volatile Object simRateSession;
 
     /**
      * Fixes the simulation rate for the driver that steps the model in realtime and dictates its rate: a
@@ -490,42 +240,17 @@ public class PhysicalModel {
      * @throws IllegalStateException if the model is not stepped in realtime
      */
     public java.util.function.IntConsumer holdSimRate(Object holder) {
-        if (holder == null) {
-            throw new IllegalArgumentException("holdSimRate: the holder must not be null");
-        }
-        enter();
-        try {
-            Ownership o = core.own;
-            if (o == null) {
-                throw new IllegalStateException("holdSimRate: the model is not stepped in realtime; call "
-                        + "beginRealtimeStepping() first");
-            }
-            simRateSession = o;
-            simRateHolder = holder;
-        } finally {
-            exit();
-        }
-        return this::changeSimRate;
+        return stepping.holdSimRate(holder);
     }
 
     /** @return the display rate, in frames per second. */
     public int getDisplayRate() {
-        enter();
-        try {
-            return core.time.displayRate();
-        } finally {
-            exit();
-        }
+        return settings.getDisplayRate();
     }
 
     /** Sets the display rate used by {@link #draw_physics()}, in frames per second (&gt; 0). */
     public void setDisplayRate(int rate) {
-        if (rate <= 0) {
-            throw new IllegalArgumentException("setDisplayRate: the rate must be > 0 Hz, got " + rate);
-        }
-        structuralDo(() -> {
-            core.time.setDisplayRate(rate);
-        });
+        settings.setDisplayRate(rate);
     }
 
     /**
@@ -533,12 +258,7 @@ public class PhysicalModel {
      * it once after building; from then on every topology change is compiled at once, by the thread making it.
      */
     public void init() {
-        structuralDo(() -> {
-            core.engine.compile();
-            core.initialized = true;
-            core.guard.arm();
-            core.snapshots.topologyChanged();
-        });
+        settings.init();
     }
 
     /**
@@ -551,58 +271,12 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
-        Ownership o = core.own;
-        if (o != null && !o.isEnding()) {
-            if (o.refusesStepping()) {
-                o.refused("draw_physics()");
-                return 0;
-            }
-            int frame = structural(() -> core.time.stepsForFrame());
-            int done = stepOwned(o, frame, "draw_physics()");
-            if (done == REFUSED) {
-                return 0;
-            }
-            return done == ENDED ? lockedFrame(frame) : frame; // ended meanwhile: this frame's steps, locked
-        }
-        return lockedFrame(-1);
-    }
-
-    /** Runs one display frame in locked mode: {@code n} steps, or the frame's own count when n &lt; 0. */
-    private int lockedFrame(int frame) {
-        enter();
-        try {
-            int n = frame >= 0 ? frame : core.time.stepsForFrame();
-            core.snapshots.beginFrame();
-            try {
-                runSteps(n);
-            } catch (RuntimeException | Error e) {
-                core.snapshots.abandonFrame();
-                throw e;
-            }
-            core.snapshots.endFrame();
-            return n;
-        } finally {
-            exit();
-        }
+        return stepping.frame();
     }
 
     /** Runs one simulation step. */
     public void computeStep() {
-        Ownership o = core.own;
-        if (o != null && !o.isEnding() && stepOwned(o, 1, "computeStep()") != ENDED) {
-            return;
-        }
-        enter();
-        try {
-            if (core.ramping()) {
-                runRampedSteps(1);
-                return;
-            }
-            core.snapshots.afterSteps(core.engine.step(1));
-            core.watch.check();
-        } finally {
-            exit();
-        }
+        stepping.step();
     }
 
     /** Runs {@code n} simulation steps (n &ge; 0). */
@@ -610,90 +284,7 @@ public class PhysicalModel {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
-        Ownership o = core.own;
-        if (o != null && !o.isEnding() && stepOwned(o, n, "computeNSteps()") != ENDED) {
-            return;
-        }
-        enter();
-        try {
-            runSteps(n);
-        } finally {
-            exit();
-        }
-    }
-
-    /**
-     * Runs n steps in slices; between two slices a thread waiting for the lock goes first. A divergence stops
-     * the batch and is reported.
-     */
-    private void runSteps(int n) {
-        if (core.ramping()) {
-            runRampedSteps(n);
-            return;
-        }
-        int slice = sliceSteps();
-        int done = 0;
-        while (done < n) {
-            int chunk = Math.min(slice, n - done);
-            int ran = core.engine.step(chunk);
-            core.snapshots.afterSteps(ran);
-            done += ran;
-            if (ran < chunk) {
-                break;
-            }
-            if (done < n) {
-                letWaitingThreadIn();
-            }
-        }
-        core.watch.check();
-    }
-
-    /**
-     * Runs n steps one at a time while parameter controllers ramp, then checks stability once. Like
-     * {@link #runSteps}, it lets a thread waiting for the lock in after every slice of steps, so that a change made
-     * during a long ramped batch never waits for the whole batch.
-     */
-    private void runRampedSteps(int n) {
-        int slice = sliceSteps();
-        int done = 0;
-        int inSlice = 0;
-        while (done < n) {
-            boolean ramping = core.ramping();
-            if (ramping) {
-                core.advanceRamps();
-            }
-            int ran = core.engine.step(1);
-            core.snapshots.afterSteps(ran);
-            done += ran;
-            if (ran == 0) {
-                break;
-            }
-            if (!ramping) {
-                core.guard.afterChange(null);
-                runSteps(n - done);
-                return;
-            }
-            if (++inSlice == slice && done < n) {
-                inSlice = 0;
-                letWaitingThreadIn();
-            }
-        }
-        core.guard.afterChange(null);
-        core.watch.check();
-    }
-
-    /** @return the steps of one slice of a locked-mode batch: about {@link #SLICE_ELEMENTS} element updates. */
-    private int sliceSteps() {
-        int elements = Math.max(1, core.dir.mats.size() + core.dir.links.size());
-        return Math.max(core.engine.threads() > 1 ? 8 : 1, SLICE_ELEMENTS / elements);
-    }
-
-    /** Between two slices of a locked-mode batch: a thread waiting for the (fair) lock goes first. */
-    private void letWaitingThreadIn() {
-        if (lock.hasQueuedThreads()) {
-            lock.unlock();
-            lock.lock();
-        }
+        stepping.steps(n);
     }
 
     /**
@@ -706,33 +297,17 @@ public class PhysicalModel {
      * @param threads 1 to 64
      */
     public void setThreads(int threads) {
-        if (threads < 1 || threads > 64) {
-            throw new IllegalArgumentException("setThreads: the thread count must be in 1..64, got " + threads);
-        }
-        structuralDo(() -> {
-            core.engine.setThreads(threads);
-            core.topology.compileIfRunning();
-        });
+        settings.setThreads(threads);
     }
 
     /** @return the number of threads large models may use. */
     public int getThreads() {
-        enter();
-        try {
-            return core.engine.threads();
-        } finally {
-            exit();
-        }
+        return settings.getThreads();
     }
 
     /** @return the number of steps simulated since the model was created. */
     public long getStepCount() {
-        enter();
-        try {
-            return core.engine.stepCount();
-        } finally {
-            exit();
-        }
+        return settings.getStepCount();
     }
 
     /**
@@ -741,12 +316,7 @@ public class PhysicalModel {
      *     for the effects it has
      */
     public String[] getSimulatedEffects() {
-        enter();
-        try {
-            return PlanLabels.of(core.engine.kernelNames());
-        } finally {
-            exit();
-        }
+        return settings.getSimulatedEffects();
     }
 
     /**
@@ -754,9 +324,7 @@ public class PhysicalModel {
      * steps on the calling thread. Worker threads also stop by themselves once the model is no longer reachable.
      */
     public void dispose() {
-        structuralDo(() -> {
-            core.engine.close();
-        });
+        settings.dispose();
     }
 
     /**
@@ -784,29 +352,7 @@ public class PhysicalModel {
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        SnapshotWriter w = core.snapshots;
-        w.request();
-        if (core.own == null) {
-            // locked mode: this thread may publish, holding the lock; it waits for it only to publish a topology
-            // change nobody has read yet, else it leaves a busy lock alone (the writer's next frame publishes)
-            boolean locked;
-            if (w.dirty()) {
-                lock.lock();
-                locked = true;
-            } else {
-                locked = lock.tryLock();
-            }
-            if (locked) {
-                try {
-                    if (core.own == null) {
-                        w.publishForReader();
-                    }
-                } finally {
-                    lock.unlock();
-                }
-            }
-        }
-        return w.exchange.latest();
+        return (ModelSnapshot) stepping.snapshot().view;
     }
 
     // =================================================================== global medium
@@ -818,39 +364,17 @@ public class PhysicalModel {
      * by {@link #setGravityDirection(Vect3D)}, or by adding a 1D mass), a note says so, once per model.
      */
     public void setGravity(double magnitude) {
-        Check.finite("setGravity", "gravity", "magnitude", magnitude);
-        enterChange();
-        try {
-            core.time.setGravity(magnitude);
-            core.gravityNote.afterGravityChange();
-        } finally {
-            exit();
-        }
+        settings.setGravity(magnitude);
     }
 
     /** @return the gravity magnitude in model units. */
     public double getGravity() {
-        enter();
-        try {
-            return core.time.gravity();
-        } finally {
-            exit();
-        }
+        return settings.getGravity();
     }
 
     /** Sets the gravity direction ("up"); it is normalised. Masses accelerate along its opposite. */
     public void setGravityDirection(Vect3D direction) {
-        Check.vector("setGravityDirection", "gravity", "direction", direction);
-        if (direction.x == 0 && direction.y == 0 && direction.z == 0) {
-            throw Check.fail("setGravityDirection", "gravity", "direction must not be the zero vector");
-        }
-        enterChange();
-        try {
-            core.time.setGravityDirection(direction.x, direction.y, direction.z);
-            core.gravityNote.afterGravityChange();
-        } finally {
-            exit();
-        }
+        settings.setGravityDirection(direction);
     }
 
     /** Sets the gravity direction ("up") from a Processing vector; see {@link #setGravityDirection(Vect3D)}. */
@@ -863,35 +387,17 @@ public class PhysicalModel {
 
     /** @return a copy of the normalised gravity direction. */
     public Vect3D getGravityDirection() {
-        enter();
-        try {
-            return core.time.gravityDirection(new Vect3D());
-        } finally {
-            exit();
-        }
+        return settings.getGravityDirection();
     }
 
     /** Sets the air friction applied to every moving mass (REAL_UNITS: N·s/m), &ge; 0 in normal use. */
     public void setFriction(double f) {
-        Check.finite("setFriction", "friction", "friction", f);
-        enterChange();
-        try {
-            double old = core.time.friction();
-            core.time.setFriction(f);
-            core.guard.afterChange(() -> core.time.setFriction(old));
-        } finally {
-            exit();
-        }
+        settings.setFriction(f);
     }
 
     /** @return the air friction in model units. */
     public double getFriction() {
-        enter();
-        try {
-            return core.time.friction();
-        } finally {
-            exit();
-        }
+        return settings.getFriction();
     }
 
     // =================================================================== adding masses
@@ -906,33 +412,32 @@ public class PhysicalModel {
      * @return the new module's handle
      */
     public Mass3D addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass3D) addMass("addMass3D", MassKind.MASS3D, name, mass, initPos, initVel, 0, 0, 1);
+        return build.addMass3D(name, mass, initPos, initVel);
     }
 
     /** Adds a free 3D mass that ignores air friction and gravity: only its interactions move it. */
     public Mass3DSimple addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass3DSimple) addMass("addMass3DSimple", MassKind.MASS3D_SIMPLE, name, mass, initPos, initVel, 0, 0,
-                1);
+        return build.addMass3DSimple(name, mass, initPos, initVel);
     }
 
     /** Adds a mass that moves in its initial z plane only (see {@link #addMass3D}). */
     public Mass2DPlane addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass2DPlane) addMass("addMass2DPlane", MassKind.MASS2D_PLANE, name, mass, initPos, initVel, 0, 0, 1);
+        return build.addMass2DPlane(name, mass, initPos, initVel);
     }
 
     /** Adds a mass that moves along z only (see {@link #addMass3D}). */
     public Mass1D addMass1D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass1D) addMass("addMass1D", MassKind.MASS1D, name, mass, initPos, initVel, 0, 0, 1);
+        return build.addMass1D(name, mass, initPos, initVel);
     }
 
     /** Adds a fixed point in 3D. */
     public Ground3D addGround3D(String name, Vect3D initPos) {
-        return (Ground3D) addMass("addGround3D", MassKind.GROUND3D, name, 1, initPos, new Vect3D(), 0, 0, 1);
+        return build.addGround3D(name, initPos);
     }
 
     /** Adds a fixed point for 1D models. */
     public Ground1D addGround1D(String name, Vect3D initPos) {
-        return (Ground1D) addMass("addGround1D", MassKind.GROUND1D, name, 1, initPos, new Vect3D(), 0, 0, 1);
+        return build.addGround1D(name, initPos);
     }
 
     /**
@@ -940,12 +445,12 @@ public class PhysicalModel {
      * (REAL_UNITS: N/m and N·s/m), also subject to air friction and gravity.
      */
     public Osc3D addOsc3D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return (Osc3D) addMass("addOsc3D", MassKind.OSC3D, name, mass, initPos, initVel, K, Z, 1);
+        return build.addOsc3D(name, mass, K, Z, initPos, initVel);
     }
 
     /** Adds an oscillator that moves along z only (see {@link #addOsc3D}). */
     public Osc1D addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return (Osc1D) addMass("addOsc1D", MassKind.OSC1D, name, mass, initPos, initVel, K, Z, 1);
+        return build.addOsc1D(name, mass, K, Z, initPos, initVel);
     }
 
     /**
@@ -958,50 +463,27 @@ public class PhysicalModel {
      * @param t60 60 dB decay time in seconds, &gt; 0 ({@code Double.POSITIVE_INFINITY} for none)
      */
     public Osc3D addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return (Osc3D) addTunedOsc("addOsc3DTuned", MassKind.OSC3D, name, mass, freqHz, t60, initPos, initVel);
+        return build.addOsc3DTuned(name, mass, freqHz, t60, initPos, initVel);
     }
 
     /** Adds a 1D oscillator tuned by its pitch and decay (see {@link #addOsc3DTuned}). */
     public Osc1D addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return (Osc1D) addTunedOsc("addOsc1DTuned", MassKind.OSC1D, name, mass, freqHz, t60, initPos, initVel);
-    }
-
-    private Mass addTunedOsc(String op, MassKind kind, String name, double mass, double freqHz, double t60,
-                             Vect3D pos, Vect3D vel) {
-        return structural(() -> {
-            double[] kz = OscTuning.coefficients(core, op, name, mass, freqHz, t60);
-            return addMass(op, kind, name, mass, pos, vel, kz[0], kz[1], 1);
-        });
+        return build.addOsc1DTuned(name, mass, freqHz, t60, initPos, initVel);
     }
 
     /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
     public void tuneOsc(String name, double freqHz, double t60) {
-        enterChange();
-        try {
-            OscTuning.tune(core, "tuneOsc", core.dir.massId("tuneOsc", name), freqHz, t60);
-        } finally {
-            exit();
-        }
+        build.tuneOsc(name, freqHz, t60);
     }
 
     /** @return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included. */
     public double getOscFrequency(String name) {
-        enter();
-        try {
-            return OscTuning.frequency(core, "getOscFrequency", core.dir.massId("getOscFrequency", name));
-        } finally {
-            exit();
-        }
+        return build.getOscFrequency(name);
     }
 
     /** @return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included. */
     public double getOscT60(String name) {
-        enter();
-        try {
-            return OscTuning.t60(core, "getOscT60", core.dir.massId("getOscT60", name));
-        } finally {
-            exit();
-        }
+        return build.getOscT60(name);
     }
 
     /**
@@ -1012,96 +494,84 @@ public class PhysicalModel {
      * @param smoothing EWMA length in steps, &ge; 1 (1 means no smoothing)
      */
     public HapticInput3D addHapticInput3D(String name, Vect3D initPos, int smoothing) {
-        return (HapticInput3D) addMass("addHapticInput3D", MassKind.HAPTIC_INPUT3D, name, 1, initPos,
-                new Vect3D(), 0, 0, smoothing);
+        return build.addHapticInput3D(name, initPos, smoothing);
     }
 
     /** Adds a kinematic position driver that follows its target through an EWMA (weight 1/smoothing). */
     public PosInput3D addPosInput3D(String name, Vect3D initPos, int smoothing) {
-        return (PosInput3D) addMass("addPosInput3D", MassKind.POS_INPUT3D, name, 1, initPos,
-                new Vect3D(), 0, 0, smoothing);
-    }
-
-    private Mass addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
-                         double K, double Z, int smoothing) {
-        ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
-        return structural(() -> {
-            Mass added = core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
-            core.gravityNote.afterMassAdded(kind, name);
-            return added;
-        });
+        return build.addPosInput3D(name, initPos, smoothing);
     }
 
     // =================================================================== adding interactions
 
     /** Adds a spring: force -K (d - dist) along the line between the masses (REAL_UNITS: K in N/m). */
     public Spring3D addSpring3D(String name, double dist, double K, String m1, String m2) {
-        return (Spring3D) addLink("addSpring3D", LinkKind.SPRING3D, name, m1, m2, K, 0, dist, 0, 0);
+        return build.addSpring3D(name, dist, K, m1, m2);
     }
 
     /** Adds a spring between two mass handles (see {@link #addSpring3D(String, double, double, String, String)}). */
     public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return addSpring3D(name, dist, K, distinct("addSpring3D", name, m1, m2), nameOf(m2));
+        return build.addSpring3D(name, dist, K, m1, m2);
     }
 
     /** Adds a damper: force -Z (d(n) - d(n-1)) along the line between the masses (REAL_UNITS: N·s/m). */
     public Damper3D addDamper3D(String name, double Z, String m1, String m2) {
-        return (Damper3D) addLink("addDamper3D", LinkKind.DAMPER3D, name, m1, m2, 0, Z, 0, 0, 0);
+        return build.addDamper3D(name, Z, m1, m2);
     }
 
     /** Adds a damper between two mass handles. */
     public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return addDamper3D(name, Z, distinct("addDamper3D", name, m1, m2), nameOf(m2));
+        return build.addDamper3D(name, Z, m1, m2);
     }
 
     /** Adds a spring and damper in parallel, with rest length {@code dist}. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (SpringDamper3D) addLink("addSpringDamper3D", LinkKind.SPRING_DAMPER3D, name, m1, m2, K, Z, dist, 0, 0);
+        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a spring-damper between two mass handles. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper3D(name, dist, K, Z, distinct("addSpringDamper3D", name, m1, m2), nameOf(m2));
+        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a spring-damper that acts along z only, on the signed difference z1 - z2 with rest value {@code dist}. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (SpringDamper1D) addLink("addSpringDamper1D", LinkKind.SPRING_DAMPER1D, name, m1, m2, K, Z, dist, 0, 0);
+        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a 1D spring-damper between two mass handles. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper1D(name, dist, K, Z, distinct("addSpringDamper1D", name, m1, m2), nameOf(m2));
+        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a rope: a spring-damper that acts only while the masses are farther apart than {@code dist}. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Rope3D) addLink("addRope3D", LinkKind.ROPE3D, name, m1, m2, K, Z, dist, 0, 0);
+        return build.addRope3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a rope between two mass handles. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addRope3D(name, dist, K, Z, distinct("addRope3D", name, m1, m2), nameOf(m2));
+        return build.addRope3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Contact3D) addLink("addContact3D", LinkKind.CONTACT3D, name, m1, m2, K, Z, dist, 0, 0);
+        return build.addContact3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a contact between two mass handles. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addContact3D(name, dist, K, Z, distinct("addContact3D", name, m1, m2), nameOf(m2));
+        return build.addContact3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a bubble: keeps m1 within radius {@code dist} of m2 with a spring-damper acting only outside it. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Bubble3D) addLink("addBubble3D", LinkKind.BUBBLE3D, name, m1, m2, K, Z, dist, 0, 0);
+        return build.addBubble3D(name, dist, K, Z, m1, m2);
     }
 
     /** Adds a bubble between two mass handles. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addBubble3D(name, dist, K, Z, distinct("addBubble3D", name, m1, m2), nameOf(m2));
+        return build.addBubble3D(name, dist, K, Z, m1, m2);
     }
 
     /**
@@ -1111,14 +581,13 @@ public class PhysicalModel {
      */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, String m1) {
-        return (PlaneContact3D) addLink("addPlaneContact", LinkKind.PLANE_CONTACT3D, name, m1, null, K, Z, l0,
-                pos, orientation);
+        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
     }
 
     /** Adds a plane contact on a mass handle. */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, Mass m1) {
-        return addPlaneContact(name, l0, K, Z, orientation, pos, nameOf(m1));
+        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
     }
 
     /**
@@ -1127,236 +596,84 @@ public class PhysicalModel {
      * keeps it bounded by attr / dLim².
      */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
-        return (Attractor3D) addLink("addAttractor3D", LinkKind.ATTRACTOR3D, name, m1, m2, 0, 0, dLim, attr, 0);
+        return build.addAttractor3D(name, dLim, attr, m1, m2);
     }
 
     /** Adds an attractor between two mass handles. */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return addAttractor3D(name, dLim, attr, distinct("addAttractor3D", name, m1, m2), nameOf(m2));
-    }
-
-    private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2,
-                                double K, double Z, double len, double aux, int axis) {
-        ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
-        if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && matExists(m1)) {
-            // the paper's engine added a link that never acted (or, on a moving mass, made it NaN): add nothing
-            core.lenient.forgive(PaperLeniency.Kind.SELF_LINK, op, name, "cannot link mass \"" + m1 + "\" to itself",
-                    "the interaction was not added and null was returned");
-            return null;
-        }
-        return structural(() -> {
-            int a = core.dir.endMass(op, name, m1);
-            int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
-            return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
-        });
-    }
-
-    /**
-     * @return the id of the mass at index i; or, for an index past the end (i &ge; the mass count), -1 after a
-     *     warning, as the paper's index getters answered a default there (strict mode: the usual exception)
-     */
-    private int paperMassAt(String op, int i, String skipped) {
-        int n = core.dir.mats.size();
-        if (i >= n && !core.lenient.strict()) {
-            core.lenient.forgiveIndex(op, i, "mass index out of range"
-                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
-            return -1;
-        }
-        return core.dir.massAt(op, i);
-    }
-
-    /** @return the id of the interaction at index i; or -1 for an index past the end (see {@link #paperMassAt}). */
-    private int paperLinkAt(String op, int i, String skipped) {
-        int n = core.dir.links.size();
-        if (i >= n && !core.lenient.strict()) {
-            core.lenient.forgiveIndex(op, i, "interaction index out of range"
-                    + (n == 0 ? " (the model has none)" : " 0.." + (n - 1)), skipped);
-            return -1;
-        }
-        return core.dir.linkAt(op, i);
-    }
-
-    /**
-     * @return the name of {@code m1}, after checking that the two handles are two masses: the handle calls are
-     *     Tactus's own, so a mass linked to itself stays an error there, strict or not
-     */
-    private String distinct(String op, String name, Mass m1, Mass m2) {
-        String a = nameOf(m1);
-        if (a.equals(nameOf(m2))) {
-            throw Check.fail(op, name, "cannot link mass \"" + a + "\" to itself");
-        }
-        return a;
-    }
-
-    private String nameOf(Mass m) {
-        enter();
-        try {
-            return core.builder.nameOf(m);
-        } finally {
-            exit();
-        }
+        return build.addAttractor3D(name, dLim, attr, m1, m2);
     }
 
     // =================================================================== look-up
 
     /** @return true when a mass with this name exists. */
     public boolean matExists(String name) {
-        enter();
-        try {
-            return core.dir.mats.id(name) >= 0;
-        } finally {
-            exit();
-        }
+        return query.matExists(name);
     }
 
     /** @return true when at least one interaction with this name exists. */
     public boolean linkExists(String name) {
-        enter();
-        try {
-            return core.dir.links.id(name) >= 0;
-        } finally {
-            exit();
-        }
+        return query.linkExists(name);
     }
 
     /** @return the number of masses. */
     public int getNumberOfMats() {
-        enter();
-        try {
-            return core.dir.mats.size();
-        } finally {
-            exit();
-        }
+        return query.getNumberOfMats();
     }
 
     /** @return the number of interactions. */
     public int getNumberOfLinks() {
-        enter();
-        try {
-            return core.dir.links.size();
-        } finally {
-            exit();
-        }
+        return query.getNumberOfLinks();
     }
 
     /** @return the index of a mass in insertion order (indices shift down after removals), or -1. */
     public int getMatIndex(String name) {
-        enter();
-        try {
-            int id = core.dir.mats.id(name);
-            return id < 0 ? -1 : core.dir.mats.indexOf(id);
-        } finally {
-            exit();
-        }
+        return query.getMatIndex(name);
     }
 
     /** @return the index of the first interaction with this name, in insertion order, or -1. */
     public int getLinkIndex(String name) {
-        enter();
-        try {
-            int id = core.dir.links.id(name);
-            return id < 0 ? -1 : core.dir.links.indexOf(id);
-        } finally {
-            exit();
-        }
+        return query.getLinkIndex(name);
     }
 
     /** @return the handle of a mass by name. */
     public Mass getMass(String name) {
-        enter();
-        try {
-            return core.dir.massHandle(core.dir.massId("getMass", name));
-        } finally {
-            exit();
-        }
+        return query.getMass(name);
     }
 
     /** @return the handle of the first interaction with this name. */
     public Interaction getInteraction(String name) {
-        enter();
-        try {
-            return core.dir.linkHandle(core.dir.linkId("getInteraction", name));
-        } finally {
-            exit();
-        }
+        return query.getInteraction(name);
     }
 
     /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
     public Interaction getInteractionAt(int i) {
-        enter();
-        try {
-            return core.dir.linkHandle(core.dir.linkAt("getInteractionAt", i));
-        } finally {
-            exit();
-        }
+        return query.getInteractionAt(i);
     }
 
     /** @return the name of the mass at an index. */
     public String getMatNameAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatNameAt", i, "\"None\" was returned");
-            if (id < 0) {
-                return "None";
-            }
-            return core.dir.massName(id);
-        } finally {
-            exit();
-        }
+        return query.getMatNameAt(i);
     }
 
     /** @return the name of the interaction at an index. */
     public String getLinkNameAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkNameAt", i, "\"None\" was returned");
-            if (id < 0) {
-                return "None";
-            }
-            return core.dir.linkName(id);
-        } finally {
-            exit();
-        }
+        return query.getLinkNameAt(i);
     }
 
     /** @return the module type of the mass at an index, for example {@code matModuleType.Mass3D}. */
     public matModuleType getMatTypeAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatTypeAt", i, "UNDEFINED was returned");
-            if (id < 0) {
-                return matModuleType.UNDEFINED;
-            }
-            return ModuleTypes.of(core.dir.massKind(id));
-        } finally {
-            exit();
-        }
+        return query.getMatTypeAt(i);
     }
 
     /** @return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}. */
     public linkModuleType getLinkTypeAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkTypeAt", i, "UNDEFINED was returned");
-            if (id < 0) {
-                return linkModuleType.UNDEFINED;
-            }
-            return ModuleTypes.of(core.dir.linkKind(id));
-        } finally {
-            exit();
-        }
+        return query.getLinkTypeAt(i);
     }
 
     /** @return the names of the two masses of an interaction (the same name twice for a plane contact). */
     public String[] getLinkMatNames(String name) {
-        enter();
-        try {
-            int id = core.dir.linkId("getLinkMatNames", name);
-            return new String[] {core.dir.massName(core.engine.linkMassA(id)),
-                core.dir.massName(core.engine.linkMassB(id))};
-        } finally {
-            exit();
-        }
+        return query.getLinkMatNames(name);
     }
 
     // =================================================================== mass state
@@ -1368,12 +685,7 @@ public class PhysicalModel {
 
     /** Writes the position of a mass into {@code out} (no allocation) and returns it. */
     public Vect3D getMatPosition(String name, Vect3D out) {
-        enter();
-        try {
-            return core.state.position(core.dir.massId("getMatPosition", name), out);
-        } finally {
-            exit();
-        }
+        return state.getMatPosition(name, out);
     }
 
     /** @return the position of a mass as a Processing {@code PVector} (float precision). */
@@ -1383,64 +695,27 @@ public class PhysicalModel {
 
     /** @return the position of the mass at an index. */
     public Vect3D getMatPosAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatPosAt", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.state.position(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        return state.getMatPosAt(i);
     }
 
     /** @return the velocity of a mass, in units per second (backward difference over the last step). */
     public Vect3D getMatVelocity(String name) {
-        enter();
-        try {
-            return core.state.velocity(core.dir.massId("getMatVelocity", name), new Vect3D());
-        } finally {
-            exit();
-        }
+        return state.getMatVelocity(name);
     }
 
     /** @return the velocity of the mass at an index, in units per second. */
     public Vect3D getMatVelAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatVelAt", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.state.velocity(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        return state.getMatVelAt(i);
     }
 
     /** @return the force accumulated on a mass by the last interaction phase (REAL_UNITS: N). */
     public Vect3D getMatForce(String name) {
-        enter();
-        try {
-            return core.state.force(core.dir.massId("getMatForce", name), new Vect3D());
-        } finally {
-            exit();
-        }
+        return state.getMatForce(name);
     }
 
     /** @return the force on the mass at an index. */
     public Vect3D getMatFrcAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatFrcAt", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.state.force(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        return state.getMatFrcAt(i);
     }
 
     /** @return the force on a mass as a Processing {@code PVector}. */
@@ -1455,25 +730,12 @@ public class PhysicalModel {
      * swings back toward it; a fixed point moves for good.
      */
     public void setMatPosition(String name, Vect3D pos) {
-        Check.vector("setMatPosition", name, "pos", pos);
-        enterChange();
-        try {
-            core.state.setPosition(core.dir.massId("setMatPosition", name), pos);
-        } finally {
-            exit();
-        }
+        state.setMatPosition(name, pos);
     }
 
     /** Moves the mass at an index to a position with zero velocity (see {@link #setMatPosition}). */
     public void setMatPosAt(int i, Vect3D pos) {
-        enterChange();
-        try {
-            int id = core.dir.massAt("setMatPosAt", i);
-            Check.vector("setMatPosAt", core.dir.massName(id), "pos", pos);
-            core.state.setPosition(id, pos);
-        } finally {
-            exit();
-        }
+        state.setMatPosAt(i, pos);
     }
 
     /**
@@ -1495,50 +757,27 @@ public class PhysicalModel {
      * @param keep true for the paper engine's behaviour
      */
     public void setMoveKeepsLinkHistory(boolean keep) {
-        enter();
-        try {
-            core.state.moveKeepsLinkHistory = keep;
-        } finally {
-            exit();
-        }
+        state.setMoveKeepsLinkHistory(keep);
     }
 
     /** @return true when a position move keeps the link history, as the paper's engine did (false by default). */
     public boolean getMoveKeepsLinkHistory() {
-        return core.state.moveKeepsLinkHistory;
+        return state.getMoveKeepsLinkHistory();
     }
 
     /** Sets the velocity of a mass, in units per second, keeping its position. */
     public void setMatVelocity(String name, Vect3D vel) {
-        Check.vector("setMatVelocity", name, "vel", vel);
-        enterChange();
-        try {
-            core.state.setVelocity("setMatVelocity", core.dir.massId("setMatVelocity", name), vel);
-        } finally {
-            exit();
-        }
+        state.setMatVelocity(name, vel);
     }
 
     /** Adds a force to a mass for the next step only (REAL_UNITS: N). */
     public void triggerForceImpulse(String name, double fx, double fy, double fz) {
-        checkForce("triggerForceImpulse", name, fx, fy, fz);
-        enterChange();
-        try {
-            core.state.addImpulse(core.dir.massId("triggerForceImpulse", name), fx, fy, fz);
-        } finally {
-            exit();
-        }
+        state.triggerForceImpulse(name, fx, fy, fz);
     }
 
     /** Adds a force to the mass at an index for the next step only. */
     public void triggerForceImpulse(int i, double fx, double fy, double fz) {
-        checkForce("triggerForceImpulse", String.valueOf(i), fx, fy, fz);
-        enterChange();
-        try {
-            core.state.addImpulse(core.dir.massAt("triggerForceImpulse", i), fx, fy, fz);
-        } finally {
-            exit();
-        }
+        state.triggerForceImpulse(i, fx, fy, fz);
     }
 
     /**
@@ -1548,56 +787,29 @@ public class PhysicalModel {
      * {@link #stopVelocityControl(String)} releases it, still moving at that velocity: a pluck.
      */
     public void triggerVelocityControl(String name, double vx, double vy, double vz) {
-        checkForce("triggerVelocityControl", name, vx, vy, vz);
-        structuralDo(() -> {
-            core.state.driveVelocity("triggerVelocityControl", core.dir.massId("triggerVelocityControl", name), vx,
-                    vy, vz);
-        });
+        state.triggerVelocityControl(name, vx, vy, vz);
     }
 
     /** Puts the mass at an index under velocity control (see {@link #triggerVelocityControl(String, double, double, double)}). */
     public void triggerVelocityControl(int i, double vx, double vy, double vz) {
-        checkForce("triggerVelocityControl", String.valueOf(i), vx, vy, vz);
-        structuralDo(() -> {
-            core.state.driveVelocity("triggerVelocityControl", core.dir.massAt("triggerVelocityControl", i), vx, vy,
-                    vz);
-        });
+        state.triggerVelocityControl(i, vx, vy, vz);
     }
 
     /** Ends the velocity control of a mass: it keeps moving at the velocity it had, and feels forces again. */
     public void stopVelocityControl(String name) {
-        structuralDo(() -> {
-            core.state.stopDriving(core.dir.massId("stopVelocityControl", name));
-        });
+        state.stopVelocityControl(name);
     }
 
     /** Ends the velocity control of the mass at an index. */
     public void stopVelocityControl(int i) {
-        structuralDo(() -> {
-            core.state.stopDriving(core.dir.massAt("stopVelocityControl", i));
-        });
-    }
-
-    static void checkForce(String op, String element, double fx, double fy, double fz) {
-        Check.finite(op, element, "fx", fx);
-        Check.finite(op, element, "fy", fy);
-        Check.finite(op, element, "fz", fz);
+        state.stopVelocityControl(i);
     }
 
     // =================================================================== the paper engine's index queries
 
     /** @return the position of the first mass of the interaction at an index (a copy). */
     public Vect3D getLinkPos1At(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkPos1At", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.paper.linkEnd(id, true, new Vect3D());
-        } finally {
-            exit();
-        }
+        return query.getLinkPos1At(i);
     }
 
     /**
@@ -1605,138 +817,52 @@ public class PhysicalModel {
      *     foot of its mass on the plane
      */
     public Vect3D getLinkPos2At(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkPos2At", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.paper.linkEnd(id, false, new Vect3D());
-        } finally {
-            exit();
-        }
+        return query.getLinkPos2At(i);
     }
 
     /** @return the index of the first mass of the interaction at an index. */
     public int getLinkMat1IdxAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkMat1IdxAt", i, "-1 was returned");
-            if (id < 0) {
-                return -1;
-            }
-            return core.paper.linkEndIndex(id, true);
-        } finally {
-            exit();
-        }
+        return query.getLinkMat1IdxAt(i);
     }
 
     /** @return the index of the second mass of the interaction at an index, or -1 for a plane contact. */
     public int getLinkMat2IdxAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkMat2IdxAt", i, "-1 was returned");
-            if (id < 0) {
-                return -1;
-            }
-            return core.paper.linkEndIndex(id, false);
-        } finally {
-            exit();
-        }
+        return query.getLinkMat2IdxAt(i);
     }
 
     /** @return the name of the first mass of the interaction at an index. */
     public String getLinkMat1NameAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkMat1NameAt", i, "\"\" was returned");
-            if (id < 0) {
-                return "";
-            }
-            return core.paper.linkEndName(id, true);
-        } finally {
-            exit();
-        }
+        return query.getLinkMat1NameAt(i);
     }
 
     /** @return the name of the second mass of the interaction at an index, or "" for a plane contact. */
     public String getLinkMat2NameAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkMat2NameAt", i, "\"\" was returned");
-            if (id < 0) {
-                return "";
-            }
-            return core.paper.linkEndName(id, false);
-        } finally {
-            exit();
-        }
+        return query.getLinkMat2NameAt(i);
     }
 
     /** @return the position the mass at an index had one step before (a copy). */
     public Vect3D getMatDelayedPosAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatDelayedPosAt", i, "a zero vector was returned");
-            if (id < 0) {
-                return new Vect3D();
-            }
-            return core.paper.delayedPosition(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        return query.getMatDelayedPosAt(i);
     }
 
     /** @return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N). */
     public PVector getMatForcePVector(int i) {
-        enter();
-        try {
-            return core.state.force(core.dir.massAt("getMatForcePVector", i), new Vect3D()).toPVector();
-        } finally {
-            exit();
-        }
+        return query.getMatForcePVector(i);
     }
 
     /** @return the distance (length units) of the oscillator at an index from its rest point. */
     public double getOsc3DDeltaPos(int i) {
-        enter();
-        try {
-            int id = core.dir.massAt("getOsc3DDeltaPos", i);
-            return core.params.paperIsOsc("getOsc3DDeltaPos", id, "0 was returned")
-                    ? core.paper.oscDisplacement("getOsc3DDeltaPos", id) : 0;
-        } finally {
-            exit();
-        }
+        return query.getOsc3DDeltaPos(i);
     }
 
     /** @return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index. */
     public int getPlaneOrientationAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getPlaneOrientationAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.paperIsPlane("getPlaneOrientationAt", id) ? core.params.planeAxis("getPlaneOrientationAt",
-                    id) : 0;
-        } finally {
-            exit();
-        }
+        return query.getPlaneOrientationAt(i);
     }
 
     /** @return the coordinate, on its axis, of the plane of the plane contact at an index. */
     public double getPlanePositionAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getPlanePositionAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.paperIsPlane("getPlanePositionAt", id) ? core.params.planePosition("getPlanePositionAt",
-                    id) : 0;
-        } finally {
-            exit();
-        }
+        return query.getPlanePositionAt(i);
     }
 
     // ------------------------------------------------------------- read-only queries for exporters (tactus.export)
@@ -1747,35 +873,17 @@ public class PhysicalModel {
      * @throws IllegalArgumentException if the name is unknown or the mass is not an oscillator
      */
     public Vect3D getOscRestPosition(String name) {
-        enter();
-        try {
-            int id = core.dir.massId("getOscRestPosition", name);
-            core.params.requireOsc("getOscRestPosition", id);
-            return new Vect3D(core.engine.restPosition(id, 0), core.engine.restPosition(id, 1),
-                    core.engine.restPosition(id, 2));
-        } finally {
-            exit();
-        }
+        return query.getOscRestPosition(name);
     }
 
     /** @return true while the mass is under velocity control ({@link #triggerVelocityControl}) */
     public boolean isVelocityControlled(String name) {
-        enter();
-        try {
-            return core.engine.isDriven(core.dir.massId("isVelocityControlled", name));
-        } finally {
-            exit();
-        }
+        return query.isVelocityControlled(name);
     }
 
     /** @return the names of the mass subsets that have a contact group, in creation order (a new array) */
     public String[] getContactGroupSubsets() {
-        enter();
-        try {
-            return core.subsets.contactGroupSubsets();
-        } finally {
-            exit();
-        }
+        return query.getContactGroupSubsets();
     }
 
     /**
@@ -1783,12 +891,7 @@ public class PhysicalModel {
      * {@code PVector}s (new objects).
      */
     public void getAllMatsOfType(java.util.ArrayList<PVector> out, matModuleType type) {
-        enter();
-        try {
-            core.paper.massesOfType("getAllMatsOfType", out, null, type, true);
-        } finally {
-            exit();
-        }
+        query.getAllMatsOfType(out, type);
     }
 
     /**
@@ -1797,23 +900,13 @@ public class PhysicalModel {
      */
     public void createPosSpeedArraysForModType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
                                                matModuleType type) {
-        enter();
-        try {
-            core.paper.massesOfType("createPosSpeedArraysForModType", pos, vel, type, true);
-        } finally {
-            exit();
-        }
+        query.createPosSpeedArraysForModType(pos, vel, type);
     }
 
     /** The same as {@link #createPosSpeedArraysForModType}, under its older name. */
     public void getAllMatSpeedsOfType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
                                       matModuleType type) {
-        enter();
-        try {
-            core.paper.massesOfType("getAllMatSpeedsOfType", pos, vel, type, true);
-        } finally {
-            exit();
-        }
+        query.getAllMatSpeedsOfType(pos, vel, type);
     }
 
     /**
@@ -1822,23 +915,12 @@ public class PhysicalModel {
      */
     public void updatePosSpeedArraysForModType(java.util.ArrayList<PVector> pos, java.util.ArrayList<PVector> vel,
                                                matModuleType type) {
-        enter();
-        try {
-            core.paper.massesOfType("updatePosSpeedArraysForModType", pos, vel, type, false);
-        } finally {
-            exit();
-        }
+        query.updatePosSpeedArraysForModType(pos, vel, type);
     }
 
     /** Sets the inertia of every mass whose name contains {@code tag} (a substring match). */
     public void setMatParamsForName(String tag, double mass) {
-        Check.name("setMatParamsForName", tag);
-        enterChange();
-        try {
-            core.paper.setMassForName("setMatParamsForName", tag, mass);
-        } finally {
-            exit();
-        }
+        param.setMatParamsForName(tag, mass);
     }
 
     /**
@@ -1846,16 +928,7 @@ public class PhysicalModel {
      * contains {@code tag} (a substring match), each where the kind has it.
      */
     public void setLinkParamsForName(String tag, double K, double Z, double dist) {
-        Check.name("setLinkParamsForName", tag);
-        Check.finite("setLinkParamsForName", tag, "K", K);
-        Check.finite("setLinkParamsForName", tag, "Z", Z);
-        Check.finite("setLinkParamsForName", tag, "dist", dist);
-        enterChange();
-        try {
-            core.paper.setLinkParamsForName("setLinkParamsForName", tag, K, Z, dist);
-        } finally {
-            exit();
-        }
+        param.setLinkParamsForName(tag, K, Z, dist);
     }
 
     /**
@@ -1863,14 +936,7 @@ public class PhysicalModel {
      * z taken from it), at rest, in subset order.
      */
     public void changeDistXBetweenSubset(Vect3D center, double dist, String subset) {
-        Check.vector("changeDistXBetweenSubset", subset, "center", center);
-        Check.finite("changeDistXBetweenSubset", subset, "dist", dist);
-        enterChange();
-        try {
-            core.paper.spaceAlongX("changeDistXBetweenSubset", center, dist, subset);
-        } finally {
-            exit();
-        }
+        build.changeDistXBetweenSubset(center, dist, subset);
     }
 
     /**
@@ -1881,23 +947,12 @@ public class PhysicalModel {
      */
     public void addParamController(String name, String subsetName, String paramName, float rampTime) {
         Check.name("addParamController", name);
-        ParamController pc = new ParamController(this, rampTime, subsetName, paramName);
-        enter();
-        try {
-            core.putController(name, pc);
-        } finally {
-            exit();
-        }
+        query.addParamController(name, new ParamController(this, rampTime, subsetName, paramName));
     }
 
     /** @return the named parameter controller, or null when there is none. */
     public ParamController getParamController(String name) {
-        enter();
-        try {
-            return core.controller(name);
-        } finally {
-            exit();
-        }
+        return query.getParamController(name);
     }
 
     /** The spelling of {@link #addParamController} used by the paper-era example sketches. */
@@ -1910,397 +965,165 @@ public class PhysicalModel {
         return getParamController(name);
     }
 
-    /** @return true when a subset of masses (or of interactions) with this name exists. */
-    private boolean hasSubset(String subset, boolean mats) {
-        enter();
-        try {
-            return mats ? core.subsets.isMatSubset(subset) : core.subsets.isLinkSubset(subset);
-        } finally {
-            exit();
-        }
-    }
-
     /** @return true when a mass or link subset with this name exists. */
     boolean subsetExists(String subset) {
-        enter();
-        try {
-            return core.subsets.isMatSubset(subset) || core.subsets.isLinkSubset(subset);
-        } finally {
-            exit();
-        }
+        return query.subsetExists(subset);
     }
 
     // =================================================================== mass parameters
 
     /** @return the inertia of a mass (REAL_UNITS: kg). */
     public double getMatMass(String name) {
-        enter();
-        try {
-            return core.params.mass("getMatMass", core.dir.massId("getMatMass", name));
-        } finally {
-            exit();
-        }
+        return param.getMatMass(name);
     }
 
     /** @return the inertia of the mass at an index. */
     public double getMatMassAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatMassAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.paperMass("getMatMassAt", id);
-        } finally {
-            exit();
-        }
+        return param.getMatMassAt(i);
     }
 
     /** Sets the inertia of a mass, finite and &gt; 0. */
     public void setMatMass(String name, double mass) {
-        enterChange();
-        try {
-            core.params.paperSetMass("setMatMass", core.dir.massId("setMatMass", name), mass);
-        } finally {
-            exit();
-        }
+        param.setMatMass(name, mass);
     }
 
     /** Sets the inertia of the mass at an index. */
     public void setMatMassAt(int i, double mass) {
-        enterChange();
-        try {
-            core.params.paperSetMass("setMatMassAt", core.dir.massAt("setMatMassAt", i), mass);
-        } finally {
-            exit();
-        }
+        param.setMatMassAt(i, mass);
     }
 
     /** Sets the internal stiffness of an oscillator (REAL_UNITS: N/m); its coefficients update at once. */
     public void setMatStiffness(String name, double K) {
-        Check.finite("setMatStiffness", name, "K", K);
-        enterChange();
-        try {
-            core.params.setOsc("setMatStiffness", core.dir.massId("setMatStiffness", name), K, Double.NaN);
-        } finally {
-            exit();
-        }
+        param.setMatStiffness(name, K);
     }
 
     /** Sets the internal stiffness of the oscillator at an index. */
     public void setMatStiffnessAt(int i, double K) {
-        Check.finite("setMatStiffnessAt", String.valueOf(i), "K", K);
-        enterChange();
-        try {
-            int id = paperMassAt("setMatStiffnessAt", i, "nothing was changed");
-            if (id < 0) {
-                return;
-            }
-            if (core.params.paperIsOsc("setMatStiffnessAt", id, "nothing was changed")) {
-                core.params.setOsc("setMatStiffnessAt", id, K, Double.NaN);
-            }
-        } finally {
-            exit();
-        }
+        param.setMatStiffnessAt(i, K);
     }
 
     /** Sets the internal damping of an oscillator (REAL_UNITS: N·s/m). */
     public void setMatDamping(String name, double Z) {
-        Check.finite("setMatDamping", name, "Z", Z);
-        enterChange();
-        try {
-            core.params.setOsc("setMatDamping", core.dir.massId("setMatDamping", name), Double.NaN, Z);
-        } finally {
-            exit();
-        }
+        param.setMatDamping(name, Z);
     }
 
     /** Sets the internal damping of the oscillator at an index. */
     public void setMatDampingAt(int i, double Z) {
-        Check.finite("setMatDampingAt", String.valueOf(i), "Z", Z);
-        enterChange();
-        try {
-            int id = paperMassAt("setMatDampingAt", i, "nothing was changed");
-            if (id < 0) {
-                return;
-            }
-            if (core.params.paperIsOsc("setMatDampingAt", id, "nothing was changed")) {
-                core.params.setOsc("setMatDampingAt", id, Double.NaN, Z);
-            }
-        } finally {
-            exit();
-        }
+        param.setMatDampingAt(i, Z);
     }
 
     /** @return the internal stiffness of an oscillator (REAL_UNITS: N/m). */
     public double getMatStiffness(String name) {
-        enter();
-        try {
-            return core.params.oscStiffness("getMatStiffness", core.dir.massId("getMatStiffness", name));
-        } finally {
-            exit();
-        }
+        return param.getMatStiffness(name);
     }
 
     /** @return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m). */
     public double getMatStiffnessAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatStiffnessAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.paperIsOsc("getMatStiffnessAt", id, "0 was returned")
-                    ? core.params.oscStiffness("getMatStiffnessAt", id) : 0;
-        } finally {
-            exit();
-        }
+        return param.getMatStiffnessAt(i);
     }
 
     /** @return the internal damping of an oscillator (REAL_UNITS: N·s/m). */
     public double getMatDamping(String name) {
-        enter();
-        try {
-            return core.params.oscDamping("getMatDamping", core.dir.massId("getMatDamping", name));
-        } finally {
-            exit();
-        }
+        return param.getMatDamping(name);
     }
 
     /** @return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m). */
     public double getMatDampingAt(int i) {
-        enter();
-        try {
-            int id = paperMassAt("getMatDampingAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.paperIsOsc("getMatDampingAt", id, "0 was returned")
-                    ? core.params.oscDamping("getMatDampingAt", id) : 0;
-        } finally {
-            exit();
-        }
+        return param.getMatDampingAt(i);
     }
 
     // =================================================================== interaction state and parameters
 
     /** @return the current distance between the masses of an interaction (for a plane contact, the gap to the plane). */
     public double getLinkDistance(String name) {
-        enter();
-        try {
-            return core.params.linkDistance(core.dir.linkId("getLinkDistance", name));
-        } finally {
-            exit();
-        }
+        return param.getLinkDistance(name);
     }
 
     /** @return the distance of the interaction at an index. */
     public double getLinkDistanceAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkDistanceAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.linkDistance(id);
-        } finally {
-            exit();
-        }
+        return param.getLinkDistanceAt(i);
     }
 
     /** @return the elongation of an interaction: its distance minus its length parameter. */
     public double getLinkElongation(String name) {
-        enter();
-        try {
-            return core.params.linkElongation(core.dir.linkId("getLinkElongation", name));
-        } finally {
-            exit();
-        }
+        return param.getLinkElongation(name);
     }
 
     /** @return the elongation of the interaction at an index. */
     public double getLinkElongationAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkElongationAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.linkElongation(id);
-        } finally {
-            exit();
-        }
+        return param.getLinkElongationAt(i);
     }
 
     /** @return the stiffness of an interaction (REAL_UNITS: N/m). */
     public double getLinkStiffness(String name) {
-        enter();
-        try {
-            return core.params.linkStiffness(core.dir.linkId("getLinkStiffness", name));
-        } finally {
-            exit();
-        }
+        return param.getLinkStiffness(name);
     }
 
     /** @return the stiffness of the interaction at an index (REAL_UNITS: N/m). */
     public double getLinkStiffnessAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkStiffnessAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.linkStiffness(id);
-        } finally {
-            exit();
-        }
+        return param.getLinkStiffnessAt(i);
     }
 
     /** @return the damping of an interaction (REAL_UNITS: N·s/m). */
     public double getLinkDamping(String name) {
-        enter();
-        try {
-            return core.params.linkDamping(core.dir.linkId("getLinkDamping", name));
-        } finally {
-            exit();
-        }
+        return param.getLinkDamping(name);
     }
 
     /** @return the damping of the interaction at an index (REAL_UNITS: N·s/m). */
     public double getLinkDampingAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkDampingAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.linkDamping(id);
-        } finally {
-            exit();
-        }
+        return param.getLinkDampingAt(i);
     }
 
     /** @return the length parameter of an interaction: rest length, threshold, radius, plane offset or limit. */
     public double getLinkDRest(String name) {
-        enter();
-        try {
-            return core.params.linkLength(core.dir.linkId("getLinkDRest", name));
-        } finally {
-            exit();
-        }
+        return param.getLinkDRest(name);
     }
 
     /** @return the length parameter of the interaction at an index. */
     public double getLinkDRestAt(int i) {
-        enter();
-        try {
-            int id = paperLinkAt("getLinkDRestAt", i, "0 was returned");
-            if (id < 0) {
-                return 0;
-            }
-            return core.params.linkLength(id);
-        } finally {
-            exit();
-        }
+        return param.getLinkDRestAt(i);
     }
 
     /** Sets the stiffness of an interaction. */
     public void setLinkStiffness(String name, double K) {
-        Check.finite("setLinkStiffness", name, "K", K);
-        enterChange();
-        try {
-            core.params.setLink("setLinkStiffness", core.dir.linkId("setLinkStiffness", name), K, Double.NaN,
-                    Double.NaN);
-        } finally {
-            exit();
-        }
+        param.setLinkStiffness(name, K);
     }
 
     /** Sets the stiffness of the interaction at an index. */
     public void setLinkStiffnessAt(int i, double K) {
-        Check.finite("setLinkStiffnessAt", String.valueOf(i), "K", K);
-        enterChange();
-        try {
-            core.params.setLink("setLinkStiffnessAt", core.dir.linkAt("setLinkStiffnessAt", i), K, Double.NaN,
-                    Double.NaN);
-        } finally {
-            exit();
-        }
+        param.setLinkStiffnessAt(i, K);
     }
 
     /** Sets the damping of an interaction. */
     public void setLinkDamping(String name, double Z) {
-        Check.finite("setLinkDamping", name, "Z", Z);
-        enterChange();
-        try {
-            core.params.setLink("setLinkDamping", core.dir.linkId("setLinkDamping", name), Double.NaN, Z,
-                    Double.NaN);
-        } finally {
-            exit();
-        }
+        param.setLinkDamping(name, Z);
     }
 
     /** Sets the damping of the interaction at an index. */
     public void setLinkDampingAt(int i, double Z) {
-        Check.finite("setLinkDampingAt", String.valueOf(i), "Z", Z);
-        enterChange();
-        try {
-            core.params.setLink("setLinkDampingAt", core.dir.linkAt("setLinkDampingAt", i), Double.NaN, Z,
-                    Double.NaN);
-        } finally {
-            exit();
-        }
+        param.setLinkDampingAt(i, Z);
     }
 
     /** Sets the length parameter (rest length, threshold, radius, offset or limit) of an interaction. */
     public void setLinkDRest(String name, double d) {
-        Check.finite("setLinkDRest", name, "d", d);
-        enterChange();
-        try {
-            core.params.setLink("setLinkDRest", core.dir.linkId("setLinkDRest", name), Double.NaN, Double.NaN, d);
-        } finally {
-            exit();
-        }
+        param.setLinkDRest(name, d);
     }
 
     /** Sets the length parameter of the interaction at an index. */
     public void setLinkDRestAt(int i, double d) {
-        Check.finite("setLinkDRestAt", String.valueOf(i), "d", d);
-        enterChange();
-        try {
-            core.params.setLink("setLinkDRestAt", core.dir.linkAt("setLinkDRestAt", i), Double.NaN, Double.NaN, d);
-        } finally {
-            exit();
-        }
+        param.setLinkDRestAt(i, d);
     }
 
     /** Sets stiffness, damping and length parameter of an interaction together. */
     public void setLinkParams(String name, double K, double Z, double dist) {
-        Check.finite("setLinkParams", name, "K", K);
-        Check.finite("setLinkParams", name, "Z", Z);
-        Check.finite("setLinkParams", name, "dist", dist);
-        enterChange();
-        try {
-            core.params.setLink("setLinkParams", core.dir.linkId("setLinkParams", name), K, Z, dist);
-        } finally {
-            exit();
-        }
+        param.setLinkParams(name, K, Z, dist);
     }
 
     // =================================================================== haptic avatar
 
     /** Sets the device position that a HapticInput3D (or PosInput3D) follows through its EWMA. */
     public void setHapticPosition(String name, Vect3D pos) {
-        Check.vector("setHapticPosition", name, "pos", pos);
-        enterChange();
-        try {
-            int id = core.dir.massId("setHapticPosition", name);
-            if (core.state.paperIsInput("setHapticPosition", id, "nothing was changed")) {
-                core.state.setInputTarget(id, pos.x, pos.y, pos.z);
-            }
-        } finally {
-            exit();
-        }
+        state.setHapticPosition(name, pos);
     }
 
     /**
@@ -2308,7 +1131,7 @@ public class PhysicalModel {
      * (REAL_UNITS: N), and resets the accumulator.
      */
     public Vect3D getHapticForce(String name) {
-        return hapticForce(name, new Vect3D(), true);
+        return state.getHapticForce(name);
     }
 
     /**
@@ -2317,17 +1140,7 @@ public class PhysicalModel {
      * another thread steps the model in realtime and in bursts (an audio thread). Not in the paper's engine.
      */
     public long getHapticForceCounted(String name, Vect3D out) {
-        if (out == null) {
-            throw Check.fail("getHapticForceCounted", name, "out must not be null");
-        }
-        enter();
-        try {
-            int id = core.dir.massId("getHapticForceCounted", name);
-            core.state.requireInput("getHapticForceCounted", id);
-            return core.state.takeAvatarForceCounted(id, out);
-        } finally {
-            exit();
-        }
+        return state.getHapticForceCounted(name, out);
     }
 
     /**
@@ -2335,53 +1148,29 @@ public class PhysicalModel {
      * (see {@link #getHapticForce(String)}) and returns it.
      */
     public Vect3D getHapticForce(String name, Vect3D out) {
-        return hapticForce(name, out, false);
-    }
-
-    /** Takes an avatar's force; the paper's call (paper = true) answers zero for a mass that is not an input. */
-    private Vect3D hapticForce(String name, Vect3D out, boolean paper) {
-        enter();
-        try {
-            int id = core.dir.massId("getHapticForce", name);
-            if (!paper) {
-                core.state.requireInput("getHapticForce", id);
-            } else if (!core.state.paperIsInput("getHapticForce", id, "a zero force was returned")) {
-                return out.set(0, 0, 0);
-            }
-            return core.state.takeAvatarForce(id, out);
-        } finally {
-            exit();
-        }
+        return state.getHapticForce(name, out);
     }
 
     // =================================================================== topology
 
     /** Removes an interaction (the first one with this name). */
     public void removeLink(String name) {
-        structuralDo(() -> {
-            core.topology.removeLink(core.dir.linkId("removeLink", name));
-        });
+        build.removeLink(name);
     }
 
     /** Removes the interaction at an index. */
     public void removeLink(int i) {
-        structuralDo(() -> {
-            core.topology.removeLink(core.dir.linkAt("removeLink", i));
-        });
+        build.removeLink(i);
     }
 
     /** Removes a mass and every interaction connected to it. */
     public void removeMatAndConnectedLinks(String name) {
-        structuralDo(() -> {
-            core.topology.removeMass(core.dir.massId("removeMatAndConnectedLinks", name));
-        });
+        build.removeMatAndConnectedLinks(name);
     }
 
     /** Removes the mass at an index and every interaction connected to it. */
     public void removeMatAndConnectedLinks(int i) {
-        structuralDo(() -> {
-            core.topology.removeMass(core.dir.massAt("removeMatAndConnectedLinks", i));
-        });
+        build.removeMatAndConnectedLinks(i);
     }
 
     /**
@@ -2391,136 +1180,79 @@ public class PhysicalModel {
      * @return the handle of the new fixed point
      */
     public Ground3D changeToFixedPoint(String name) {
-        return structural(() -> {
-            return core.topology.makeFixed(core.dir.massId("changeToFixedPoint", name));
-        });
+        return build.changeToFixedPoint(name);
     }
 
     /** Removes every mass, interaction, subset and contact group; names become free again, and a diverged model may run again. */
     public void clearModel() {
-        structuralDo(() -> {
-            core.topology.clear();
-        });
+        build.clearModel();
     }
 
     // =================================================================== subsets
 
     /** Creates an empty named group of masses, for grouped parameter changes. */
     public void createMatSubset(String subset) {
-        Check.name("createMatSubset", subset);
-        if (!core.lenient.strict() && hasSubset(subset, true)) {
-            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createMatSubset", subset,
-                    "a subset with this name already exists", "the subset was kept as it is");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.createMatSubset(subset);
-        });
+        build.createMatSubset(subset);
     }
 
     /** Creates an empty named group of interactions. */
     public void createLinkSubset(String subset) {
-        Check.name("createLinkSubset", subset);
-        if (!core.lenient.strict() && hasSubset(subset, false)) {
-            core.lenient.forgive(PaperLeniency.Kind.SUBSET_EXISTS, "createLinkSubset", subset,
-                    "a subset with this name already exists", "the subset was kept as it is");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.createLinkSubset(subset);
-        });
+        build.createLinkSubset(subset);
     }
 
     /** Adds a mass to a mass subset. */
     public void addMatToSubset(String mass, String subset) {
-        if (!core.lenient.strict() && !matExists(mass)) {
-            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", String.valueOf(mass),
-                    "no mass with this name", "nothing was added to subset \"" + subset + "\"");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.addMat("addMatToSubset", core.dir.massId("addMatToSubset", mass), subset);
-        });
+        build.addMatToSubset(mass, subset);
     }
 
     /** Adds the mass at an index to a mass subset. */
     public void addMatToSubset(int i, String subset) {
-        if (i == -1 && !core.lenient.strict()) { // getMatIndex's answer for a name that is not in the model
-            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addMatToSubset", "-1",
-                    "mass index out of range", "nothing was added to subset \"" + subset + "\"");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.addMat("addMatToSubset", core.dir.massAt("addMatToSubset", i), subset);
-        });
+        build.addMatToSubset(i, subset);
     }
 
     /** Adds an interaction (the first one with this name) to a link subset. */
     public void addLinkToSubset(String link, String subset) {
-        if (!core.lenient.strict() && !linkExists(link)) {
-            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", String.valueOf(link),
-                    "no interaction with this name", "nothing was added to subset \"" + subset + "\"");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.addLink("addLinkToSubset", core.dir.linkId("addLinkToSubset", link), subset);
-        });
+        build.addLinkToSubset(link, subset);
     }
 
     /** Adds the interaction at an index to a link subset. */
     public void addLinkToSubset(int i, String subset) {
-        if (i == -1 && !core.lenient.strict()) { // getLinkIndex's answer for a name that is not in the model
-            core.lenient.forgive(PaperLeniency.Kind.NO_SUCH_MODULE, "addLinkToSubset", "-1",
-                    "interaction index out of range", "nothing was added to subset \"" + subset + "\"");
-            return;
-        }
-        structuralDo(() -> {
-            core.subsets.addLink("addLinkToSubset", core.dir.linkAt("addLinkToSubset", i), subset);
-        });
+        build.addLinkToSubset(i, subset);
     }
 
     /** Removes a mass from a mass subset. */
     public void removeMatFromSubset(String mass, String subset) {
-        structuralDo(() -> {
-            core.subsets.removeMat("removeMatFromSubset", core.dir.massId("removeMatFromSubset", mass), subset);
-        });
+        build.removeMatFromSubset(mass, subset);
     }
 
     /** Removes an interaction from a link subset. */
     public void removeLinkFromSubset(String link, String subset) {
-        structuralDo(() -> {
-            core.subsets.removeLink("removeLinkFromSubset", core.dir.linkId("removeLinkFromSubset", link), subset);
-        });
+        build.removeLinkFromSubset(link, subset);
     }
 
     /** @return the names of the members of a mass or link subset, in the order they were added. */
     public String[] getSubsetMembers(String subset) {
-        enter();
-        try {
-            return core.subsets.memberNames("getSubsetMembers", subset);
-        } finally {
-            exit();
-        }
+        return build.getSubsetMembers(subset);
     }
 
     /** Sets the inertia of every mass in a mass subset. */
     public void changeMassParamOfSubset(double mass, String subset) {
-        changeSubsetParam("changeMassParamOfSubset", mass, subset, "mass");
+        build.changeMassParamOfSubset(mass, subset);
     }
 
     /** Sets the stiffness of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeStiffnessParamOfSubset(double K, String subset) {
-        changeSubsetParam("changeStiffnessParamOfSubset", K, subset, "stiffness");
+        build.changeStiffnessParamOfSubset(K, subset);
     }
 
     /** Sets the damping of every member of a subset: links of a link subset, oscillators of a mass subset. */
     public void changeDampingParamOfSubset(double Z, String subset) {
-        changeSubsetParam("changeDampingParamOfSubset", Z, subset, "damping");
+        build.changeDampingParamOfSubset(Z, subset);
     }
 
     /** Sets the length parameter (rest length, threshold, radius) of every interaction in a link subset. */
     public void changeDistParamOfSubset(double d, String subset) {
-        changeSubsetParam("changeDistParamOfSubset", d, subset, "dist");
+        build.changeDistParamOfSubset(d, subset);
     }
 
     /**
@@ -2531,16 +1263,7 @@ public class PhysicalModel {
      * {@link #setStrict(boolean)}).
      */
     public void changeParamOfSubset(double value, String subset, String param) {
-        changeSubsetParam("changeParamOfSubset", value, subset, param);
-    }
-
-    private void changeSubsetParam(String op, double value, String subset, String param) {
-        enterChange();
-        try {
-            core.subsets.changeParam(op, value, subset, param);
-        } finally {
-            exit();
-        }
+        build.changeParamOfSubset(value, subset, param);
     }
 
     /**
@@ -2553,22 +1276,12 @@ public class PhysicalModel {
 
     /** @return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset. */
     public double getParamValueOfSubset(String subset, String param) {
-        enter();
-        try {
-            return core.subsets.paramValue("getParamValueOfSubset", subset, param);
-        } finally {
-            exit();
-        }
+        return build.getParamValueOfSubset(subset, param);
     }
 
     /** @return the mean position of the masses of a mass subset. */
     public Vect3D getBarycenterOfSubset(String subset) {
-        enter();
-        try {
-            return core.subsets.barycenter("getBarycenterOfSubset", subset, new double[3]);
-        } finally {
-            exit();
-        }
+        return build.getBarycenterOfSubset(subset);
     }
 
     // =================================================================== contact groups
@@ -2586,41 +1299,22 @@ public class PhysicalModel {
      * @param Z contact damping (REAL_UNITS: N·s/m)
      */
     public void addContactGroup(String subset, double threshold, double K, double Z) {
-        checkGroupArgs("addContactGroup", subset, threshold, K, Z);
-        structuralDo(() -> {
-            core.subsets.addContactGroup("addContactGroup", subset, threshold, K, Z);
-        });
+        build.addContactGroup(subset, threshold, K, Z);
     }
 
     /** Changes the threshold, stiffness and damping of a subset's contact group. */
     public void setContactGroupParams(String subset, double threshold, double K, double Z) {
-        checkGroupArgs("setContactGroupParams", subset, threshold, K, Z);
-        structuralDo(() -> {
-            core.subsets.setContactGroupParams("setContactGroupParams", subset, threshold, K, Z);
-        });
-    }
-
-    private static void checkGroupArgs(String op, String subset, double threshold, double K, double Z) {
-        Check.positive(op, subset, "threshold", threshold);
-        Check.finite(op, subset, "K", K);
-        Check.finite(op, subset, "Z", Z);
+        build.setContactGroupParams(subset, threshold, K, Z);
     }
 
     /** Removes a subset's contact group (the subset itself stays). */
     public void removeContactGroup(String subset) {
-        structuralDo(() -> {
-            core.subsets.removeContactGroup("removeContactGroup", subset);
-        });
+        build.removeContactGroup(subset);
     }
 
     /** @return true when the mass subset has a contact group. */
     public boolean hasContactGroup(String subset) {
-        enter();
-        try {
-            return core.subsets.hasContactGroup(subset);
-        } finally {
-            exit();
-        }
+        return build.hasContactGroup(subset);
     }
 
     // =================================================================== strictness
@@ -2650,12 +1344,12 @@ public class PhysicalModel {
      * @param strict true to throw, false (the default) to forgive as the paper's engine did
      */
     public void setStrict(boolean strict) {
-        core.lenient.setStrict(strict);
+        settings.setStrict(strict);
     }
 
     /** @return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)}). */
     public boolean isStrict() {
-        return core.lenient.strict();
+        return settings.isStrict();
     }
 
     // =================================================================== stability and divergence
@@ -2665,25 +1359,12 @@ public class PhysicalModel {
      * topology change made after it.
      */
     public void setStabilityPolicy(StabilityPolicy policy) {
-        if (policy == null) {
-            throw new IllegalArgumentException("setStabilityPolicy: the policy must not be null");
-        }
-        enter();
-        try {
-            core.guard.setPolicy(policy);
-        } finally {
-            exit();
-        }
+        settings.setStabilityPolicy(policy);
     }
 
     /** @return the current stability policy (WARN by default). */
     public StabilityPolicy getStabilityPolicy() {
-        enter();
-        try {
-            return core.guard.policy();
-        } finally {
-            exit();
-        }
+        return settings.getStabilityPolicy();
     }
 
     /**
@@ -2691,35 +1372,17 @@ public class PhysicalModel {
      * 3D; 6 suits a cubic pile, 2 a chain of beads).
      */
     public void setMaxContactsPerMass(int n) {
-        if (n < 0) {
-            throw new IllegalArgumentException("setMaxContactsPerMass: the count must be >= 0, got " + n);
-        }
-        enter();
-        try {
-            core.guard.setMaxContacts(n);
-        } finally {
-            exit();
-        }
+        settings.setMaxContactsPerMass(n);
     }
 
     /** @return the stability analysis of the model as it is now (see {@link StabilityReport}). */
     public StabilityReport getStabilityReport() {
-        enter();
-        try {
-            return core.guard.report();
-        } finally {
-            exit();
-        }
+        return settings.getStabilityReport();
     }
 
     /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
     public String describeStability() {
-        enter();
-        try {
-            return core.guard.describe();
-        } finally {
-            exit();
-        }
+        return settings.describeStability();
     }
 
     /**
@@ -2727,76 +1390,43 @@ public class PhysicalModel {
      * {@link DivergenceException} but notify it once per divergence. Pass null to go back to exceptions.
      */
     public void setDivergenceListener(DivergenceListener listener) {
-        structuralDo(() -> {
-            core.watch.setListener(listener);
-        });
+        settings.setDivergenceListener(listener);
     }
 
     /** Sets how often (in steps, &ge; 1, default 64) the running model is checked for divergence. */
     public void setDivergenceCheckInterval(int steps) {
-        if (steps < 1) {
-            throw new IllegalArgumentException("setDivergenceCheckInterval: the interval must be >= 1 step, got "
-                    + steps);
-        }
-        structuralDo(() -> {
-            core.engine.setDivergenceCheckInterval(steps);
-        });
+        settings.setDivergenceCheckInterval(steps);
     }
 
     /** Sets the largest coordinate magnitude still considered sane (default 1e12 model length units). */
     public void setDivergenceLimit(double limit) {
-        Check.positive("setDivergenceLimit", "limit", "limit", limit);
-        structuralDo(() -> {
-            core.engine.guard().setLimit(limit);
-        });
+        settings.setDivergenceLimit(limit);
     }
 
     /** @return true when the model has diverged and is frozen. */
     public boolean isDiverged() {
-        enter();
-        try {
-            return core.watch.isDiverged();
-        } finally {
-            exit();
-        }
+        return settings.isDiverged();
     }
 
     /** Lets a diverged model step again; repair its state first (positions, parameters). */
     public void clearDivergence() {
-        structuralDo(() -> {
-            core.watch.clear();
-        });
+        settings.clearDivergence();
     }
 
     // =================================================================== energy
 
     /** @return the kinetic energy of the model (REAL_UNITS: J), from backward-difference velocities. */
     public double getKineticEnergy() {
-        enter();
-        try {
-            return core.state.kineticEnergy();
-        } finally {
-            exit();
-        }
+        return query.getKineticEnergy();
     }
 
     /** @return the potential energy stored in engaged springs, oscillators, attractors and gravity (REAL_UNITS: J). */
     public double getPotentialEnergy() {
-        enter();
-        try {
-            return core.state.potentialEnergy();
-        } finally {
-            exit();
-        }
+        return query.getPotentialEnergy();
     }
 
     /** @return kinetic plus potential energy (REAL_UNITS: J). */
     public double getTotalEnergy() {
-        enter();
-        try {
-            return core.state.totalEnergy();
-        } finally {
-            exit();
-        }
+        return query.getTotalEnergy();
     }
 }

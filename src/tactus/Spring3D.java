@@ -1,9 +1,12 @@
 package tactus;
 
+import tactus.internal.realtime.ModelLock;
+import tactus.internal.ModelCore;
+
 /** A linear spring: f = -K (d - l0) along the line between the masses, with no damping. */
 public final class Spring3D extends Interaction {
-    Spring3D(PhysicalModel model, int id) {
-        super(model, id);
+    Spring3D(ModelCore core, ModelLock gate, int id) {
+        super(core, gate, id);
     }
 
     /** @return the stiffness (REAL_UNITS: N/m). */

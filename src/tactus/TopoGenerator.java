@@ -3,6 +3,7 @@ package tactus;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
+import tactus.internal.model.Check;
 
 /**
  * Builds strings, meshes, beams and volumes of masses on a regular grid, linked by

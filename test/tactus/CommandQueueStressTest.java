@@ -15,6 +15,9 @@ import java.util.concurrent.locks.Lock;
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import tactus.internal.realtime.Command;
+import tactus.internal.realtime.Ownership;
+import tactus.internal.ModelCore;
 
 /**
  * A stress test of the realtime command queue and of the owner hand-over: 1 to 4 producer threads post commands
@@ -49,8 +52,8 @@ class CommandQueueStressTest {
         }
 
         @Override
-        boolean apply(ModelCore core) {
-            board.applied(this, core.own);
+        public boolean apply(ModelCore core) {
+            board.applied(this, (Ownership) core.own);
             if (k % 13 == 12) {
                 throw new IllegalStateException("marker " + k + " fails on purpose");
             }
@@ -103,7 +106,7 @@ class CommandQueueStressTest {
     private static void run(int producers, int batch, long seed) throws Exception {
         PhysicalModel pm = build(producers);
         pm.beginRealtimeStepping();
-        Ownership own = pm.core.own;
+        Ownership own = pm.gate.mode();
         own.idleNanos = 20_000_000L;
         Scoreboard board = new Scoreboard(producers);
         AtomicBoolean stop = new AtomicBoolean();

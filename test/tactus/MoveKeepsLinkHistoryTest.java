@@ -167,9 +167,9 @@ class MoveKeepsLinkHistoryTest {
             }, "audio");
             audio.start();
             firstSteps.await();
-            long posted = m.core.own.postedSeq();
+            long posted = m.gate.mode().postedSeq();
             m.setMatPosition("a", new Vect3D(1.7, -0.4, 0.25));
-            assertEquals(posted + 1, m.core.own.postedSeq(), "the move was queued for the owner");
+            assertEquals(posted + 1, m.gate.mode().postedSeq(), "the move was queued for the owner");
             moved.countDown();
             audio.join();
             m.endRealtimeStepping();

@@ -14,6 +14,7 @@ import java.time.Duration;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * The owner role of a realtime-stepped model ({@link PhysicalModel#beginRealtimeStepping()}): exactly one thread
@@ -88,7 +89,7 @@ class OwnerRoleTest {
             assertNull(owner.firstError.get());
             assertEquals(64 * owner.calls.get(), pm.getStepCount(), "only the owner stepped");
             assertEquals(0, drawReturns[0], "draw_physics() reports no step");
-            assertEquals(150, pm.core.own.refusedCalls());
+            assertEquals(150, pm.gate.mode().refusedCalls());
             String out = new String(captured.toByteArray(), StandardCharsets.UTF_8);
             int lines = out.split("this model is stepped in realtime", -1).length - 1;
             assertEquals(1, lines, "one message: " + out);
@@ -108,11 +109,11 @@ class OwnerRoleTest {
             first.start();
             first.join(10_000);
             assertSame(first, pm.getRealtimeOwner());
-            long handOvers = pm.core.own.handOvers();
+            long handOvers = pm.gate.mode().handOvers();
             pm.computeNSteps(50);
             assertEquals(150, pm.getStepCount());
             assertSame(Thread.currentThread(), pm.getRealtimeOwner());
-            assertEquals(handOvers + 1, pm.core.own.handOvers());
+            assertEquals(handOvers + 1, pm.gate.mode().handOvers());
             pm.endRealtimeStepping(); // from the owner, between two calls: never waits for itself
             assertFalse(pm.isRealtimeStepping());
         });
@@ -128,7 +129,7 @@ class OwnerRoleTest {
         assertTimeoutPreemptively(BOUND, () -> {
             PhysicalModel pm = oscillator();
             pm.beginRealtimeStepping();
-            Ownership own = pm.core.own;
+            Ownership own = pm.gate.mode();
             own.idleNanos = 30_000_000L;
             CountDownLatch paused = new CountDownLatch(1);
             CountDownLatch resume = new CountDownLatch(1);

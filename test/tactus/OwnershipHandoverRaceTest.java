@@ -22,6 +22,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.internal.realtime.Ownership;
 
 /**
  * The stepping role of a realtime model moves between threads many times a second
@@ -123,7 +124,7 @@ class OwnershipHandoverRaceTest {
                 }
             });
             pm.beginRealtimeStepping();
-            own = pm.core.own;
+            own = pm.gate.mode();
             own.idleNanos = 20_000_000L;
             own.waitLimitNanos = WAIT_LIMIT_NANOS;
         }

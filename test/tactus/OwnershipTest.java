@@ -13,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.Lock;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * The realtime command queue survives the mistakes a sketch makes in its first hour (issue 15): a queued change whose
@@ -73,7 +74,7 @@ class OwnershipTest {
             assertEquals(0.02, pm.getLinkStiffness("s2"));
             assertFalse(pm.linkExists("s"));
             assertTrue(owner.halt());
-            Ownership own = pm.core.own;
+            Ownership own = pm.gate.mode();
             assertTrue(own.gateFree(), "the gate is released");
             assertEquals(own.postedSeq(), own.completedCount() + own.droppedCount(), "applied + dropped == posted");
             pm.endRealtimeStepping();
@@ -104,7 +105,7 @@ class OwnershipTest {
             });
             pm.init();
             pm.beginRealtimeStepping();
-            pm.core.own.waitLimitNanos = 300_000_000L;
+            pm.gate.mode().waitLimitNanos = 300_000_000L;
             OwnerLoop owner = new OwnerLoop(pm, 64, 200_000L, "stuck audio").begin();
             assertTrue(inListener.await(10, TimeUnit.SECONDS));
             pm.setLinkStiffness("s2", 0.02);
@@ -165,7 +166,7 @@ class OwnershipTest {
             assertTrue(owner.halt());
             assertNull(owner.firstError.get(), () -> "thrown on the stepping thread: " + owner.firstError.get());
             assertFalse(pm.getParamController("k").isRamping(), "the ramp ended");
-            assertEquals(2, pm.core.own.droppedRampMembers, "s5 and s6 dropped from the ramp");
+            assertEquals(2, pm.gate.mode().droppedRampMembers, "s5 and s6 dropped from the ramp");
             for (int i = 1; i <= 21; i++) {
                 if (i != 5 && i != 6) {
                     assertEquals(0.5, pm.getLinkStiffness("s" + i), 1e-6, "s" + i);
@@ -198,7 +199,7 @@ class OwnershipTest {
             PhysicalModel pm = springAndFreeMass();
             pm.beginRealtimeStepping();
             OwnerLoop owner = new OwnerLoop(pm, 256, 2_000_000L, "audio").begin();
-            Ownership own = pm.core.own;
+            Ownership own = pm.gate.mode();
             Lock l = pm.getLock();
             for (int round = 0; round < 20; round++) {
                 pm.setLinkStiffness("s", 0.1);

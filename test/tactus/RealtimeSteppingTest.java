@@ -16,6 +16,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
+import tactus.internal.realtime.Ownership;
 
 /**
  * Realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the stepping thread takes no lock, other threads'
@@ -99,7 +100,7 @@ class RealtimeSteppingTest {
         live.beginRealtimeStepping();
         List<Consumer<PhysicalModel>> ops = changes(seed, 240);
         Race race = Race.run(live, ops, batch, burst, seed);
-        assertEquals(ops.size(), live.core.own.postedSeq(), "every call posted exactly one command");
+        assertEquals(ops.size(), live.gate.mode().postedSeq(), "every call posted exactly one command");
         PhysicalModel ref = race.replayMatches(ops, batch);
         assertEquals(ref.getLinkStiffness("s3"), live.getLinkStiffness("s3"));
         assertEquals(ref.getLinkDamping("s3"), live.getLinkDamping("s3"));
@@ -184,7 +185,7 @@ class RealtimeSteppingTest {
 
         static Race run(PhysicalModel live, List<Consumer<PhysicalModel>> ops, int batch, int burst, long seed)
                 throws InterruptedException {
-            Ownership own = live.core.own;
+            Ownership own = live.gate.mode();
             Race r = new Race(live, ops.size());
             AtomicBoolean editorDone = new AtomicBoolean();
             AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -340,7 +341,7 @@ class RealtimeSteppingTest {
         for (int i = 0; i < 10; i++) {
             assertEquals(n * 1e-5, pm.getLinkDamping("s" + i), "s" + i);
         }
-        assertEquals(pm.core.own.postedSeq(), pm.core.own.appliedSeq());
+        assertEquals(pm.gate.mode().postedSeq(), pm.gate.mode().appliedSeq());
         pm.endRealtimeStepping();
     }
 
@@ -365,14 +366,14 @@ class RealtimeSteppingTest {
             Thread.sleep(1);
         }
         pm.setLinkStiffness("s4", 0.123);
-        long posted = pm.core.own.postedSeq();
+        long posted = pm.gate.mode().postedSeq();
         pm.getLock().lock();
         long during;
         try {
             long before = steps.get();
             Thread.sleep(200);
             during = steps.get() - before;
-            assertTrue(pm.core.own.appliedSeq() >= posted, "the queued change was applied while the lock was held");
+            assertTrue(pm.gate.mode().appliedSeq() >= posted, "the queued change was applied while the lock was held");
         } finally {
             pm.getLock().unlock();
         }
@@ -410,13 +411,13 @@ class RealtimeSteppingTest {
             try {
                 long id = Thread.currentThread().getId();
                 for (int round = 0; round < bytes.length; round++) {
-                    long seq0 = pm.core.own.appliedSeq();
+                    long seq0 = pm.gate.mode().appliedSeq();
                     long a0 = mx.getThreadAllocatedBytes(id);
                     for (int s = 0; s < 100_000; s++) {
                         pm.computeStep();
                     }
                     bytes[round] = mx.getThreadAllocatedBytes(id) - a0;
-                    applied.addAndGet(pm.core.own.appliedSeq() - seq0);
+                    applied.addAndGet(pm.gate.mode().appliedSeq() - seq0);
                 }
             } catch (Throwable t) {
                 failure.set(t);

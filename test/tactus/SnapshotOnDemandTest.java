@@ -9,6 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.internal.snapshot.SnapshotWriter;
 
 /**
  * The render snapshot costs only what is read: a model nobody reads copies nothing, a reader of masses only causes

@@ -41,9 +41,7 @@ final class KernelProfiler {
             Field f = PhysicalModel.class.getDeclaredField("core");
             f.setAccessible(true);
             Object core = f.get(model);
-            Field e = core.getClass().getDeclaredField("engine");
-            e.setAccessible(true);
-            engine = (Engine) e.get(core);
+            engine = (Engine) core.getClass().getField("engine").get(core); // declared by the model's shared base
         } else {
             return "";
         }

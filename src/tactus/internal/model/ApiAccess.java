@@ -1,0 +1,54 @@
+package tactus.internal.model;
+
+import tactus.DivergenceException;
+import tactus.StabilityReport;
+import tactus.UnstableModelException;
+
+/**
+ * The few doors of the API types that only the machinery may open: what model a handle belongs to and its id,
+ * the snapshot view of a buffer, and the API's exceptions and stability report. Handles and views are typed
+ * {@code Object} here, so that the rooms below never name the API classes that call them. They stay package-private
+ * in {@code tactus} (a sketch cannot call them); the package gives this object to the machinery once, when
+ * {@link PhysicalModel} is loaded. Not API.
+ */
+public abstract class ApiAccess {
+    private static volatile ApiAccess doors;
+
+    /**
+     * Called once by {@code tactus.PhysicalModel} when it is loaded; later calls change nothing.
+     *
+     * @param a the package's implementation
+     */
+    public static synchronized void install(ApiAccess a) {
+        if (doors == null) {
+            doors = a;
+        }
+    }
+
+    /** @return the doors; the machinery exists only behind a {@code PhysicalModel}, so they are installed. */
+    public static ApiAccess get() {
+        return doors;
+    }
+
+    /** @return the rooms of the model a handle belongs to (compare with a model's own). */
+    public abstract Object modelOf(Object handle);
+
+    /** @return the engine id of a handle's module. */
+    public abstract int idOf(Object handle);
+
+    /** Throws the handle's {@code IllegalStateException} if its module is no longer part of its model. */
+    public abstract void checkLive(Object handle);
+
+    /** @return the public, read-only view ({@code ModelSnapshot}) of a snapshot buffer. */
+    public abstract Object newSnapshotView(Object buffer);
+
+    /** @return the exception of a change refused under {@code StabilityPolicy.THROW}. */
+    public abstract UnstableModelException unstable(String message, StabilityReport report);
+
+    /** @return the public stability report of the engine's analysis. */
+    public abstract StabilityReport stabilityReport(tactus.engine.StabilityReport r, String culprit,
+                                                    String negativeDamping);
+
+    /** @return the exception of a divergence found while stepping. */
+    public abstract DivergenceException divergence(String message, String massName, long step);
+}
