@@ -38,6 +38,10 @@ public final class WriteBatch extends Command implements EngineWrites {
         return n;
     }
 
+    /**
+     * Records an op and returns where its values go in {@link #v}. Callers take the index first and index {@code v}
+     * after: {@code v[add(...)] = x} would read the field before the call grows it and write into the old array.
+     */
     private int add(int op, int id) {
         if (n == ops.length) {
             ops = Arrays.copyOf(ops, 2 * n);
@@ -50,7 +54,8 @@ public final class WriteBatch extends Command implements EngineWrites {
     }
 
     public void setMass(int id, double m) {
-        v[add(MASS, id)] = m;
+        int at = add(MASS, id);
+        v[at] = m;
     }
 
     public void setOscillator(int id, double k, double z) {
@@ -67,11 +72,13 @@ public final class WriteBatch extends Command implements EngineWrites {
     }
 
     public void setPlanePosition(int id, double pos) {
-        v[add(PLANE, id)] = pos;
+        int at = add(PLANE, id);
+        v[at] = pos;
     }
 
     public void setAttraction(int id, double attr) {
-        v[add(ATTR, id)] = attr;
+        int at = add(ATTR, id);
+        v[at] = attr;
     }
 
     public void setPosition(int id, double x, double y, double z) {
