@@ -45,6 +45,10 @@ public class Board implements AutoCloseable {
     private static final long CLOSE_ACK_NANOS = 250_000_000L;
     /** How long close() waits for the board's lock (held by a read or a write in another thread). */
     private static final long CLOSE_LOCK_NANOS = 500_000_000L;
+    /** How often the watchdog thread beats the guard's heartbeat while a torque is on, in nanoseconds. */
+    private static final long HEARTBEAT_NANOS = 5_000_000L;
+    /** How long the force takes to come back, linearly from zero, after the motor guard zeroed it, in nanoseconds. */
+    static final long RESUME_RAMP_NANOS = 100_000_000L;
     /** Unread input beyond this many bytes is dropped before a write (a sketch that never reads). */
     private static final int INPUT_CAP = 4096;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
@@ -56,6 +60,7 @@ public class Board implements AutoCloseable {
     private final Thread shutdownHook;
     private final boolean hookInRuntime;
     private final MotorGuardLink guard;
+    private final GuardHeartbeat heartbeat;
     private final ReentrantLock lock = new ReentrantLock();
     private final ConsoleNotices notices = new ConsoleNotices();
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
@@ -88,13 +93,18 @@ public class Board implements AutoCloseable {
     private long implausibleFrames;
     private long pendingReplies;
 
+    // the motor guard's writes while this JVM was paused (lock held)
+    private long seenGuardWrites;
+    private long rampFromNanos;      // 0: no ramp
+    private volatile long guardZeroings;
+
     /**
      * Opens the serial port of a Haply board from a Processing sketch (hAPI's constructor). The baud rate is
      * ignored by the board's native USB (sketches pass 0). The board is reset at once, and is closed
      * (torques zeroed) when the sketch is disposed.
      */
     public Board(processing.core.PApplet app, String portName, int baud) {
-        this(SerialTransport.open(portName, baud), BoardModel.M0);
+        this(MotorGuardLink.openPort(portName, baud), BoardModel.M0);
         if (app != null) {
             app.registerMethod("dispose", this);
         }
@@ -102,12 +112,16 @@ public class Board implements AutoCloseable {
 
     /** Opens the serial port of a Haply M0 board from a plain JVM application (baud as for the PApplet constructor). */
     public Board(String portName, int baud) {
-        this(SerialTransport.open(portName, baud), BoardModel.M0);
+        this(MotorGuardLink.openPort(portName, baud), BoardModel.M0);
     }
 
     /** Opens the serial port of a board of the given model (M3 and Dev-Kit have ports 1-4, the M0 1-2). */
     public Board(String portName, int baud, BoardModel model) {
-        this(SerialTransport.open(portName, baud), model);
+        this(MotorGuardLink.openPort(portName, baud), model);
+    }
+
+    private Board(MotorGuardLink.Opened opened, BoardModel model) {
+        this(opened.transport, model, opened.guard);
     }
 
     /** Uses an already open transport to a Haply M0 board. */
@@ -117,16 +131,34 @@ public class Board implements AutoCloseable {
 
     /** Uses an already open transport to a board of the given model; sends a reset at once. */
     public Board(Transport transport, BoardModel model) {
+        this(transport, model, null);
+    }
+
+    /** guard: the port's motor guard, or null to start one here if the transport is a serial port. */
+    private Board(Transport transport, BoardModel model, MotorGuardLink guard) {
         if (transport == null) {
+            if (guard != null) {
+                guard.release(true);
+            }
             throw new IllegalArgumentException("Board: transport must not be null");
         }
         if (model == null) {
+            if (guard != null) {
+                guard.release(true);
+            }
             throw new IllegalArgumentException("Board: model must not be null");
         }
         this.transport = transport;
         this.model = model;
-        flushInput();
-        send(WireFormat.reset((byte) 0), 2);
+        this.guard = guard != null ? guard : MotorGuardLink.watch(transport);
+        this.heartbeat = this.guard.heartbeat();
+        try {
+            flushInput();
+            send(WireFormat.reset((byte) 0), 2);
+        } catch (RuntimeException e) {
+            this.guard.release(false);   // the port is gone; the guard may try
+            throw e;
+        }
         this.shutdownHook = new Thread(this::closeQuietly, "tactus-haply-shutdown");
         if (transport instanceof SerialTransport) {
             // jSerialComm closes every port from a shutdown hook of its own; Runtime's hooks run in no set
@@ -137,7 +169,6 @@ public class Board implements AutoCloseable {
             Runtime.getRuntime().addShutdownHook(shutdownHook);
             hookInRuntime = true;
         }
-        this.guard = MotorGuardLink.watch(transport);
     }
 
     /**
@@ -290,6 +321,7 @@ public class Board implements AutoCloseable {
         try {
             long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
             int avail = availableNow();
+            syncGuardWrites();   // after the count of bytes: a guard reply in it was counted before it was written
             if (!wait && avail < frame) {
                 return false;
             }
@@ -310,6 +342,7 @@ public class Board implements AutoCloseable {
                 }
                 LockSupport.parkNanos(20_000);
                 avail = availableNow();
+                syncGuardWrites();
             }
             consecutiveTimeouts = 0;
             if (devices.size() == 1 && avail > pendingReplies * frame) {
@@ -446,6 +479,7 @@ public class Board implements AutoCloseable {
     @Override
     public void close() {
         closing = true;
+        heartbeat.arm(false);   // the guard leaves the port to close() from here
         boolean locked;
         try {
             locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
@@ -465,6 +499,7 @@ public class Board implements AutoCloseable {
             removeHook();
             return;
         }
+        boolean answered = false;
         try {
             if (closed) {
                 return;
@@ -478,7 +513,7 @@ public class Board implements AutoCloseable {
                     }
                 }
                 if (!closed) {
-                    awaitOwedReplies(CLOSE_ACK_NANOS);
+                    answered = awaitOwedReplies(CLOSE_ACK_NANOS);
                     // then reset: the board forgets the configuration (the duty stays at the zero just sent)
                     try {
                         transport.write(WireFormat.reset((byte) 0), 0, 2);
@@ -499,7 +534,8 @@ public class Board implements AutoCloseable {
             }
             closed = true;
             transport.close();
-            guard.release(lostReason == null);
+            // only zeros the board answered count as done; otherwise the guard sends them again now
+            guard.release(lostReason == null && answered);
         } finally {
             lock.unlock();
         }
@@ -608,22 +644,29 @@ public class Board implements AutoCloseable {
 
     /**
      * Waits, up to a time, until every reply still owed has arrived (one device: the last one answers the
-     * zero torques, so the board has applied them). Closing a pseudo-terminal or a USB port at once can lose
+     * zero torques, so the board has applied them); returns true if they did. Closing a pseudo-terminal or a USB port at once can lose
      * what the other end has not read yet; the wait makes the zeroing sure wherever the board still answers.
      */
-    private void awaitOwedReplies(long maxNanos) {
+    private boolean awaitOwedReplies(long maxNanos) {
+        if (devices.isEmpty()) {
+            LockSupport.parkNanos(2_000_000);
+            return true;      // no device: no motor was ever driven
+        }
         if (devices.size() != 1 || pendingReplies <= 0) {
             LockSupport.parkNanos(2_000_000);
-            return;
+            return false;     // cannot tell (one device per board is the rule, and the zeros are owed a reply)
         }
         long need = pendingReplies * devices.get(0).replyBytes();
         long deadline = System.nanoTime() + maxNanos;
         try {
-            while (availableNow() < need && System.nanoTime() - deadline < 0) {
+            int avail = availableNow();
+            while (avail < need && System.nanoTime() - deadline < 0) {
                 LockSupport.parkNanos(200_000);
+                avail = availableNow();
             }
+            return avail >= need;
         } catch (IOException ignored) {
-            // the link is gone: nothing more to wait for
+            return false;     // the link is gone: the zeros may not have arrived
         }
     }
 
@@ -634,6 +677,7 @@ public class Board implements AutoCloseable {
             requireOpen();
             try {
                 boardStillReads();
+                syncGuardWrites();
                 transport.write(data, 0, len);
                 if (len > 0 && data[0] == WireFormat.WRITE) {
                     pendingReplies++;
@@ -657,13 +701,68 @@ public class Board implements AutoCloseable {
         lock.lock();
         try {
             send(data, len);
-            lastTorqueWriteNanos = System.nanoTime();   // under the lock: the watchdog never sees a write half done
+            long now = System.nanoTime();
+            lastTorqueWriteNanos = now;   // under the lock: the watchdog never sees a write half done
             torqueArmed = nonZero;
+            heartbeat.beat(now);          // a memory store: the motor guard sees this JVM run
+            heartbeat.arm(nonZero);
         } finally {
             lock.unlock();
         }
-        if (nonZero && torqueWatchdog == null && torqueWatchdogMs > 0) {
+        if (nonZero && torqueWatchdog == null && (torqueWatchdogMs > 0 || heartbeat.isShared())) {
             startTorqueWatchdog();
+        }
+    }
+
+    /**
+     * The factor (0..1) by which a torque write is scaled now: 1, except in the {@link #RESUME_RAMP_NANOS} after
+     * the motor guard zeroed the motors of this paused JVM, when the force comes back linearly from zero instead
+     * of jumping to what the sketch computed after the pause.
+     */
+    float torqueRamp() {
+        lock.lock();
+        try {
+            if (closed) {
+                return 1f;
+            }
+            syncGuardWrites();
+            if (rampFromNanos == 0) {
+                return 1f;
+            }
+            long t = System.nanoTime() - rampFromNanos;
+            if (t >= RESUME_RAMP_NANOS) {
+                rampFromNanos = 0;
+                return 1f;
+            }
+            return Math.max(0f, (float) t / RESUME_RAMP_NANOS);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Number of zero-torque writes the motor guard sent to the board because this JVM gave no heartbeat (it was
+     * paused: a debugger's breakpoint, SIGSTOP) while a torque was on; each one was followed by a ramp.
+     */
+    public long guardZeroings() {
+        return guardZeroings;
+    }
+
+    /**
+     * Takes in the motor guard's writes since the last look (lock held): the board answers them too, so their
+     * replies are owed and not stray bytes; the motors are at zero, so the watchdog stands down and the force
+     * ramps back in. No system call: a read of the shared memory.
+     */
+    private void syncGuardWrites() {
+        long g = heartbeat.guardWrites();
+        if (g != seenGuardWrites) {
+            long k = g - seenGuardWrites;
+            seenGuardWrites = g;
+            pendingReplies += k;
+            guardZeroings += k;
+            torqueArmed = false;
+            heartbeat.arm(false);
+            rampFromNanos = System.nanoTime() | 1L;
         }
     }
 
@@ -711,18 +810,30 @@ public class Board implements AutoCloseable {
     }
 
     private void watchTorques() {
+        boolean beats = heartbeat.isShared();
         while (!closed) {
             int ms = torqueWatchdogMs;
             long limit = ms * 1_000_000L;
-            // a tenth of the time while a torque is on (a trip comes at most 10 % late), 50 ms otherwise
-            LockSupport.parkNanos(ms > 0 && torqueArmed ? Math.max(1_000_000L, limit / 10) : 50_000_000L);
-            if (ms <= 0 || !torqueArmed) {
+            // while a torque is on: a tenth of the time (a trip comes at most 10 % late), and at least every 5 ms
+            // for the motor guard's heartbeat; 50 ms otherwise
+            long step = 50_000_000L;
+            if (torqueArmed) {
+                step = ms > 0 ? Math.max(1_000_000L, limit / 10) : step;
+                step = beats ? Math.min(step, HEARTBEAT_NANOS) : step;
+            }
+            LockSupport.parkNanos(step);
+            if (!torqueArmed) {
+                continue;
+            }
+            heartbeat.beat(System.nanoTime());
+            if (ms <= 0) {
                 continue;
             }
             long since = System.nanoTime() - lastTorqueWriteNanos;
             long trippedAfter = -1;
             if (since > limit && lock.tryLock()) {
                 try {
+                    syncGuardWrites();   // the guard zeroed the motors of this paused JVM: no trip, a ramp
                     since = System.nanoTime() - lastTorqueWriteNanos;
                     if (!closed && torqueArmed && since > limit) {
                         torqueArmed = false;
@@ -804,6 +915,7 @@ public class Board implements AutoCloseable {
         }
         lostReason = msg;
         closed = true;
+        heartbeat.arm(false);
         transport.close();
         notices.once(ConsoleNotices.Kind.LOST, "tactus: " + msg + "; zero torques were sent where the link still "
                 + "took them");

@@ -36,6 +36,9 @@ public final class MotorGuard {
     private int baud;
     private Object portIdentity;
     private boolean acted;
+    private GuardHeartbeat heartbeat;
+    private long staleMillis;
+    private MotorGuardPauseWatch pauseWatch;
 
     private MotorGuard() {
     }
@@ -64,12 +67,12 @@ public final class MotorGuard {
     }
 
     /**
-     * Ignores SIGINT, SIGTERM and SIGHUP: Ctrl-C in a terminal, a closed terminal or a service stop signal the
-     * whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
+     * Ignores SIGINT, SIGTERM, SIGHUP and SIGTSTP: Ctrl-C or Ctrl-Z in a terminal, a closed terminal or a service
+     * stop signal the whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
      * sketch is gone; SIGKILL still ends it).
      */
     private static void ignoreTerminalSignals() {
-        for (String name : new String[] {"INT", "TERM", "HUP"}) {
+        for (String name : new String[] {"INT", "TERM", "HUP", "TSTP"}) {
             try {
                 sun.misc.Signal.handle(new sun.misc.Signal(name), sun.misc.SignalHandler.SIG_IGN);
             } catch (Throwable e) {
@@ -93,10 +96,20 @@ public final class MotorGuard {
     private synchronized void accept(String line) {
         String[] f = line.trim().split(" ");
         try {
-            if (f[0].equals("port") && f.length >= 3) {
+            if (f[0].equals("heartbeat") && f.length >= 3) {
+                long ms = Long.parseLong(f[1]);
+                if (ms < 1 || ms > 10_000) {
+                    throw new IllegalArgumentException("stale time out of range");
+                }
+                staleMillis = ms;
+                heartbeat = GuardHeartbeat.open(line.trim().split(" ", 3)[2]);
+            } else if (f[0].equals("port") && f.length >= 3) {
                 baud = Integer.parseInt(f[1]);
                 port = line.trim().split(" ", 3)[2];
                 portIdentity = MotorGuardZeroing.identity(port);
+                if (heartbeat != null && pauseWatch == null) {
+                    pauseWatch = MotorGuardPauseWatch.start(heartbeat, staleMillis, port);
+                }
             } else if (f[0].equals("device") && f.length == 4) {
                 int id = Integer.parseInt(f[1]);
                 int write = Integer.parseInt(f[2]);
@@ -105,12 +118,26 @@ public final class MotorGuard {
                     throw new IllegalArgumentException("out of range");
                 }
                 devices.put(id, new int[] {write, reply});
+                if (pauseWatch != null) {
+                    pauseWatch.setDevices(zeroMessages(), String.join(", ", devices.keySet().stream()
+                            .map(String::valueOf).toArray(String[]::new)));
+                }
             } else if (!line.equals(HELLO)) {
                 throw new IllegalArgumentException("unknown command");
             }
-        } catch (RuntimeException e) {
+        } catch (RuntimeException | java.io.IOException e) {
             System.err.println("tactus motor guard: ignored \"" + line + "\" (" + e.getMessage() + ")");
         }
+    }
+
+    /** Each device's write with zero torques and zero PWM: [2][id], then zeros. */
+    private byte[][] zeroMessages() {
+        byte[][] out = new byte[devices.size()][];
+        int i = 0;
+        for (Map.Entry<Integer, int[]> d : devices.entrySet()) {
+            out[i++] = MotorGuardZeroing.zeroMessage(d.getKey(), d.getValue()[0]);
+        }
+        return out;
     }
 
     /** Zeroes the motors once, within {@link #ACT_LIMIT_MS}, then ends the process. */
@@ -119,6 +146,9 @@ public final class MotorGuard {
             return;
         }
         acted = true;
+        if (pauseWatch != null) {
+            pauseWatch.stop();   // the sketch's JVM is gone: the guard opens the port itself from here
+        }
         Thread limit = new Thread(() -> {
             try {
                 Thread.sleep(ACT_LIMIT_MS);

@@ -13,7 +13,9 @@ import java.util.concurrent.TimeUnit;
  * {@code ScheduledExecutorService} at 1 kHz, prints READY, then ends as told on standard input:
  * {@code halt} ({@code Runtime.halt}), {@code exit} ({@code System.exit}, shutdown hooks run), {@code close}
  * (the sketch closes the board, then {@code System.exit}); anything else, or nothing, keeps it running (to
- * be ended from outside: the Stop button over JDWP, SIGKILL, SIGTERM).
+ * be ended from outside: the Stop button over JDWP, SIGKILL, SIGTERM). {@code stats} prints the board's counters
+ * on a line starting with STATS. A thread calls {@link #draw(int)} every 16 ms, as Processing's animation thread
+ * calls a sketch's draw(), for a debugger's breakpoint.
  */
 public final class MotorGuardChild {
     private MotorGuardChild() {
@@ -41,21 +43,45 @@ public final class MotorGuardChild {
                 e.printStackTrace();
             }
         }, 1, 1, TimeUnit.MILLISECONDS);
+        Thread draw = new Thread(() -> {
+            for (int frame = 0; ; frame++) {
+                draw(frame);
+                try {
+                    Thread.sleep(16);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "Animation Thread");
+        draw.setDaemon(true);
+        draw.start();
         Thread.sleep(200);
         System.out.println("READY");
         System.out.flush();
         BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
-        String line = in.readLine();
-        if ("halt".equals(line)) {
-            Runtime.getRuntime().halt(0);
-        } else if ("exit".equals(line)) {
-            System.exit(0);
-        } else if ("close".equals(line)) {
-            haptics.shutdown();
-            haptics.awaitTermination(1, TimeUnit.SECONDS);
-            board.close();
-            System.exit(0);
+        String line;
+        while ((line = in.readLine()) != null) {
+            if ("halt".equals(line)) {
+                Runtime.getRuntime().halt(0);
+            } else if ("exit".equals(line)) {
+                System.exit(0);
+            } else if ("close".equals(line)) {
+                haptics.shutdown();
+                haptics.awaitTermination(1, TimeUnit.SECONDS);
+                board.close();
+                System.exit(0);
+            } else if ("stats".equals(line)) {
+                System.out.println("STATS unexpected=" + board.unexpectedBytes() + " mismatches=" + board.idMismatches()
+                        + " implausible=" + board.implausibleFrames() + " zeroings=" + board.guardZeroings()
+                        + " trips=" + board.torqueWatchdogTrips() + " closed=" + board.isClosed());
+                System.out.flush();
+            }
         }
         Thread.sleep(Long.MAX_VALUE);
+    }
+
+    /** What a sketch's draw() would be: called about 60 times a second on its own thread (a breakpoint goes here). */
+    static int draw(int frame) {
+        return frame * 31 + 7;
     }
 }
