@@ -49,6 +49,8 @@ public class Board implements AutoCloseable {
     private static final long HEARTBEAT_NANOS = 5_000_000L;
     /** How long the force takes to come back, linearly from zero, after the motor guard zeroed it, in nanoseconds. */
     static final long RESUME_RAMP_NANOS = 100_000_000L;
+    /** The most the ramp's factor may grow from one torque write to the next (a writer late by 100 ms still ramps). */
+    private static final float RESUME_RAMP_MAX_STEP = 0.05f;
     /** Unread input beyond this many bytes is dropped before a write (a sketch that never reads). */
     private static final int INPUT_CAP = 4096;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
@@ -96,6 +98,7 @@ public class Board implements AutoCloseable {
     // the motor guard's writes while this JVM was paused (lock held)
     private long seenGuardWrites;
     private long rampFromNanos;      // 0: no ramp
+    private float lastRamp = 1f;
     private volatile long guardZeroings;
 
     /**
@@ -717,7 +720,8 @@ public class Board implements AutoCloseable {
     /**
      * The factor (0..1) by which a torque write is scaled now: 1, except in the {@link #RESUME_RAMP_NANOS} after
      * the motor guard zeroed the motors of this paused JVM, when the force comes back linearly from zero instead
-     * of jumping to what the sketch computed after the pause.
+     * of jumping to what the sketch computed after the pause; and by at most 5 % of the force per write, so that a
+     * writer that runs late after the pause still ramps (at least 20 writes).
      */
     float torqueRamp() {
         lock.lock();
@@ -730,11 +734,13 @@ public class Board implements AutoCloseable {
                 return 1f;
             }
             long t = System.nanoTime() - rampFromNanos;
-            if (t >= RESUME_RAMP_NANOS) {
+            float f = Math.min(lastRamp + RESUME_RAMP_MAX_STEP, Math.max(0f, (float) t / RESUME_RAMP_NANOS));
+            if (f >= 1f) {
                 rampFromNanos = 0;
-                return 1f;
+                f = 1f;
             }
-            return Math.max(0f, (float) t / RESUME_RAMP_NANOS);
+            lastRamp = f;
+            return f;
         } finally {
             lock.unlock();
         }
@@ -763,6 +769,7 @@ public class Board implements AutoCloseable {
             torqueArmed = false;
             heartbeat.arm(false);
             rampFromNanos = System.nanoTime() | 1L;
+            lastRamp = 0f;
         }
     }
 

@@ -21,7 +21,10 @@ public final class MotorGuardChild {
     private MotorGuardChild() {
     }
 
-    /** args[0]: the port; args[1]: "noguard" to turn the motor guard off with {@link Board#setMotorGuard}. */
+    /**
+     * args[0]: the port; args[1]: "noguard" to turn the motor guard off with {@link Board#setMotorGuard}, or "loop"
+     * to push from a {@link HapticLoop} instead of a ScheduledExecutorService.
+     */
     public static void main(String[] args) throws Exception {
         if (args.length > 1 && args[1].equals("noguard")) {
             Board.setMotorGuard(false);
@@ -30,19 +33,27 @@ public final class MotorGuardChild {
         Device device = new Device((byte) 5, board);
         HaplyPreset.HAPLY_2018.configure(device);
         device.device_set_parameters();
+        boolean withLoop = args.length > 1 && args[1].equals("loop");
         ScheduledExecutorService haptics = Executors.newSingleThreadScheduledExecutor();
-        haptics.scheduleAtFixedRate(() -> {
-            try {
-                if (board.data_available()) {
-                    device.device_read_data();
+        HapticLoop loop = null;
+        if (withLoop) {
+            // a HapticLoop at 1 kHz rendering a constant force (2 N at the handle) against the emulator's hand
+            loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new ConstantForce(0.012, 0.016));
+            loop.start();
+        } else {
+            haptics.scheduleAtFixedRate(() -> {
+                try {
+                    if (board.data_available()) {
+                        device.device_read_data();
+                    }
+                    device.set_actuator_torque(1, 0.08f);   // a constant force: duty 665 on each motor
+                    device.set_actuator_torque(2, -0.08f);
+                    device.device_write_torques();
+                } catch (RuntimeException e) {
+                    e.printStackTrace();
                 }
-                device.set_actuator_torque(1, 0.08f);   // a constant force: duty 665 on each motor
-                device.set_actuator_torque(2, -0.08f);
-                device.device_write_torques();
-            } catch (RuntimeException e) {
-                e.printStackTrace();
-            }
-        }, 1, 1, TimeUnit.MILLISECONDS);
+            }, 1, 1, TimeUnit.MILLISECONDS);
+        }
         Thread draw = new Thread(() -> {
             for (int frame = 0; ; frame++) {
                 draw(frame);
@@ -66,6 +77,9 @@ public final class MotorGuardChild {
             } else if ("exit".equals(line)) {
                 System.exit(0);
             } else if ("close".equals(line)) {
+                if (loop != null) {
+                    loop.stop();
+                }
                 haptics.shutdown();
                 haptics.awaitTermination(1, TimeUnit.SECONDS);
                 board.close();
@@ -73,7 +87,8 @@ public final class MotorGuardChild {
             } else if ("stats".equals(line)) {
                 System.out.println("STATS unexpected=" + board.unexpectedBytes() + " mismatches=" + board.idMismatches()
                         + " implausible=" + board.implausibleFrames() + " zeroings=" + board.guardZeroings()
-                        + " trips=" + board.torqueWatchdogTrips() + " closed=" + board.isClosed());
+                        + " trips=" + board.torqueWatchdogTrips() + " closed=" + board.isClosed()
+                        + (loop == null ? "" : " loop " + (loop.isRunning() ? "running" : "stopped: " + loop.failure())));
                 System.out.flush();
             }
         }
@@ -83,5 +98,33 @@ public final class MotorGuardChild {
     /** What a sketch's draw() would be: called about 60 times a second on its own thread (a breakpoint goes here). */
     static int draw(int frame) {
         return frame * 31 + 7;
+    }
+
+    /** An avatar whose force is constant (model units). */
+    private static final class ConstantForce implements AvatarLink {
+        private final double fx;
+        private final double fy;
+
+        ConstantForce(double fx, double fy) {
+            this.fx = fx;
+            this.fy = fy;
+        }
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            // the force does not depend on the position
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = fx;
+            out[1] = fy;
+            out[2] = 0;
+        }
+
+        @Override
+        public void step(int n) {
+            // nothing to step
+        }
     }
 }
