@@ -45,6 +45,15 @@ public class Board implements AutoCloseable {
     private static final long CLOSE_ACK_NANOS = 250_000_000L;
     /** How long close() waits for the board's lock (held by a read or a write in another thread). */
     private static final long CLOSE_LOCK_NANOS = 500_000_000L;
+    /**
+     * Longest a waiter for the board (close, zeroTorques) waits behind another thread's write that has lasted this
+     * long too, in nanoseconds: a write to a board that reads takes microseconds, so such a write is stuck (the
+     * board stopped reading) and a zero torque could not go out behind it anyway.
+     */
+    static final long STUCK_WRITE_NANOS = 50_000_000L;
+    private static final int LOCKED = 0;
+    private static final int BUSY = 1;
+    private static final int STUCK = 2;
     /** How often the watchdog thread beats the guard's heartbeat while a torque is on, in nanoseconds. */
     private static final long HEARTBEAT_NANOS = 5_000_000L;
     /** How long the force takes to come back, linearly from zero, after the motor guard zeroed it, in nanoseconds. */
@@ -70,6 +79,7 @@ public class Board implements AutoCloseable {
     private int consecutiveTimeouts;
     private volatile boolean closed;
     private volatile boolean closing;
+    private volatile long writeStartedNanos;   // 0 while no write is in progress
 
     // is the board still reading? (lock held)
     private int seenAvailable;
@@ -475,28 +485,25 @@ public class Board implements AutoCloseable {
     /**
      * Sends zero torques (and zero PWM) to every configured device and a reset, then closes the link. Safe to
      * call more than once and from any thread. Never waits without a bound: at most half a second for another
-     * thread's read or write to let go of the board (then the port is closed without the zero torques, which
-     * a board that keeps another thread's write waiting could not take anyway), 250 ms for the board to
-     * answer the zero torques, and each write at most {@link SerialTransport#WRITE_TIMEOUT_MS}.
+     * thread's read to let go of the board, and at most 50 ms ({@link #STUCK_WRITE_NANOS}) behind another
+     * thread's write that has lasted as long (then the port is closed without the zero torques, which a board
+     * that keeps a write waiting could not take anyway, the stuck write ends, and the motor guard tries); 250 ms
+     * for the board to answer the zero torques (unanswered, they do not count as sent: the motor guard sends them
+     * again once the port is closed), and each write at most {@link SerialTransport#WRITE_TIMEOUT_MS}.
      */
     @Override
     public void close() {
         closing = true;
         heartbeat.arm(false);   // the guard leaves the port to close() from here
-        boolean locked;
-        try {
-            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            locked = lock.tryLock();
-        }
-        if (!locked) {
+        int got = lockWithin(CLOSE_LOCK_NANOS);
+        if (got != LOCKED) {
             if (!closed) {
                 closed = true;
                 notices.once(ConsoleNotices.Kind.CLOSE_TIMEOUT, "tactus: the Haply board on " + transport.describe()
-                        + " was busy for " + CLOSE_LOCK_NANOS / 1_000_000 + " ms in another thread; its port was "
-                        + "closed without sending zero torques");
-                transport.close();
+                        + (got == STUCK ? " was stuck in another thread's write (the board stopped reading)"
+                                : " was busy for " + CLOSE_LOCK_NANOS / 1_000_000 + " ms in another thread")
+                        + "; its port was closed without sending zero torques");
+                transport.close();   // this also ends the stuck write
                 guard.release(false); // the motors may still push: the guard zeroes them now that the port is free
             }
             removeHook();
@@ -517,11 +524,15 @@ public class Board implements AutoCloseable {
                 }
                 if (!closed) {
                     answered = awaitOwedReplies(CLOSE_ACK_NANOS);
-                    // then reset: the board forgets the configuration (the duty stays at the zero just sent)
-                    try {
-                        transport.write(WireFormat.reset((byte) 0), 0, 2);
-                    } catch (IOException ignored) {
-                        // closing anyway
+                    // then reset: the board forgets the configuration (the duty stays at the zero just sent). Not
+                    // when the zeros went unanswered: the guard sends them again, and a reset board would take
+                    // its write for another device and read the zeros as commands
+                    if (answered) {
+                        try {
+                            transport.write(WireFormat.reset((byte) 0), 0, 2);
+                        } catch (IOException ignored) {
+                            // closing anyway
+                        }
                     }
                     // Let the replies arrive, then drop them.
                     LockSupport.parkNanos(2_000_000);
@@ -557,18 +568,13 @@ public class Board implements AutoCloseable {
 
     /**
      * Sends zero torques and zero PWM to every configured device now, from any thread (a watchdog); the link
-     * stays open. Returns false if the link is closed or failed, or if another thread held the board for more
-     * than half a second.
+     * stays open. Returns false if the link is closed or failed, if another thread held the board for more
+     * than half a second, or at once once another thread's write has been stuck for
+     * {@value #STUCK_WRITE_NANOS} ns (50 ms) while this call waited as long: no zero can go out behind it, and the
+     * port's own write timeout ends it.
      */
     public boolean zeroTorques() {
-        boolean locked;
-        try {
-            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
-        }
-        if (!locked) {
+        if (lockWithin(CLOSE_LOCK_NANOS) != LOCKED) {
             return false;
         }
         try {
@@ -586,6 +592,31 @@ public class Board implements AutoCloseable {
         }
     }
 
+    /**
+     * Takes the board's lock, waiting at most maxNanos; gives up sooner, with {@link #STUCK}, when another thread
+     * has been in one write for {@link #STUCK_WRITE_NANOS} and this one has waited that long too (a pause of
+     * the whole JVM during a write makes the write look long, but not the wait after it).
+     */
+    private int lockWithin(long maxNanos) {
+        long start = System.nanoTime();
+        try {
+            while (!lock.tryLock(1, TimeUnit.MILLISECONDS)) {
+                long now = System.nanoTime();
+                long w = writeStartedNanos;
+                if (w != 0 && now - w > STUCK_WRITE_NANOS && now - start > STUCK_WRITE_NANOS) {
+                    return STUCK;
+                }
+                if (now - start > maxNanos) {
+                    return BUSY;
+                }
+            }
+            return LOCKED;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return lock.tryLock() ? LOCKED : BUSY;
+        }
+    }
+
     /** Processing calls this when the sketch stops; same as {@link #close()}. */
     public void dispose() {
         close();
@@ -600,6 +631,11 @@ public class Board implements AutoCloseable {
     }
 
     // ------------------------------------------------------------------------------------------ for Device
+
+    /** The motor guard's link ({@link MotorGuardLink#NONE} without a guard; for tests). */
+    MotorGuardLink guardLink() {
+        return guard;
+    }
 
     void register(Device device) {
         lock.lock();
@@ -681,7 +717,12 @@ public class Board implements AutoCloseable {
             try {
                 boardStillReads();
                 syncGuardWrites();
-                transport.write(data, 0, len);
+                writeStartedNanos = System.nanoTime() | 1L;
+                try {
+                    transport.write(data, 0, len);
+                } finally {
+                    writeStartedNanos = 0;
+                }
                 if (len > 0 && data[0] == WireFormat.WRITE) {
                     pendingReplies++;
                     if (writesUnanswered++ == 0) {
