@@ -32,8 +32,12 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class MotorGuardPauseTest {
-    /** The bound on the time from the pause to duty 0: the guard's stale time plus room for a loaded machine. */
-    static final long ZERO_LIMIT_MS = MotorGuardLink.HEARTBEAT_STALE_MS + 400;
+    /**
+     * The bound on the time from the pause to duty 0: the guard's stale time plus room for a loaded machine (the
+     * emulator runs in this JVM and falls behind the writes now and then: once 476 ms in 30 runs at load 10).
+     * Without the guard's heartbeat watch the duty never reaches 0.
+     */
+    static final long ZERO_LIMIT_MS = MotorGuardLink.HEARTBEAT_STALE_MS + 900;
     /** How long the test keeps the JVM paused, in milliseconds. */
     private static final long PAUSE_MS = 1_000;
     private static final List<String> JDWP =
