@@ -18,7 +18,9 @@ import java.util.concurrent.locks.ReentrantLock;
  * never printed); each command goes out in one write; {@link #close()}
  * sends zero torques to every configured device before closing, also from a JVM shutdown hook and from
  * Processing's {@code dispose}; where the JVM ends with neither (the Processing editor's Stop button, SIGKILL),
- * a {@link MotorGuard} process started with the board sends them.
+ * a {@link MotorGuard} process started with the board sends them, and also while the JVM is paused (a
+ * debugger's breakpoint, SIGSTOP): every torque write stores a heartbeat in memory shared with the guard, and
+ * after the pause the board counts the replies to the guard's writes and ramps the force back in over 100 ms.
  *
  * <p>Safety net for a sketch that drives the board from its own thread (hAPI style): a torque watchdog
  * zeroes the motors when no torque write has come for {@link #setTorqueWatchdogMillis(int) a set time} (50 ms

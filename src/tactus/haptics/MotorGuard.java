@@ -15,14 +15,19 @@ import java.util.Optional;
  * keeps the last duty for good, so only a process outside that JVM can stop them.
  *
  * <p>A {@link Board} that opens a serial port starts it (see {@link Board#setMotorGuard(boolean)}) and tells it,
- * one line at a time on its standard input: {@code port <baud> <name>}; {@code device <id> <writeBytes>
- * <replyBytes>} for each device set up (the length of its write message and of the board's reply); and
- * {@code clean} when the board was closed with the torques zeroed. The guard never opens the port while its
- * parent lives. When its standard input ends, or its parent process is gone, without a {@code clean}, it
- * opens the port, sends every device a write with zero torques and zero PWM, waits up to 250 ms for the
- * replies, sends a reset and exits. It does nothing if the port's device node was replaced meanwhile (a
- * pseudo-terminal freed and reused, a board plugged in again). Every wait is bounded: the process halts at
- * the latest 3 s after it started acting.
+ * one line at a time on its standard input: {@code heartbeat <staleMs> <path>} (the memory it shares with the
+ * board, a {@link GuardHeartbeat}); {@code port <baud> <name>}; {@code device <id> <writeBytes> <replyBytes>}
+ * for each device set up (the length of its write message and of the board's reply); and {@code clean} when
+ * the board was closed with the torques zeroed and answered.
+ *
+ * <p>While its parent lives, the guard only holds the port open for writing (opened on the {@code port} line,
+ * before the board opens the port) and never reads it: when the parent's heartbeat stops for the stale time
+ * while a torque is on (the JVM is paused: a debugger's breakpoint, SIGSTOP), it sends each device one write
+ * with zero torques and zero PWM (see {@link MotorGuardPauseWatch}). When its standard input ends, or its
+ * parent process is gone, without a {@code clean}, it opens the port, sends every device a write with zero
+ * torques and zero PWM, waits up to 250 ms for the replies, sends a reset and exits. It does nothing if the
+ * port's device node was replaced meanwhile (a pseudo-terminal freed and reused, a board plugged in again).
+ * Every wait is bounded: the process halts at the latest 3 s after it started acting.
  */
 public final class MotorGuard {
     /** First line the parent sends: names the protocol and its version. */

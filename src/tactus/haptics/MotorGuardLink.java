@@ -14,8 +14,10 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * The board's side of the {@link MotorGuard}: starts the guard process when a board opens a serial port, tells
- * it the port and each device's setup, and says {@code clean} when the board closed with the torques zeroed.
+ * The board's side of the {@link MotorGuard}: starts the guard process when a board opens a serial port (before
+ * the port itself, so that the guard holds it open for writing first), shares a {@link GuardHeartbeat} with it,
+ * tells it the port and each device's setup, and says {@code clean} when the board closed with the torques
+ * zeroed and answered.
  * Starting or talking to the guard never fails the board: a failure prints one warning and the board runs
  * without the guard.
  */
