@@ -151,9 +151,6 @@ public final class MotorGuard {
             return;
         }
         acted = true;
-        if (pauseWatch != null) {
-            pauseWatch.stop();   // the sketch's JVM is gone: the guard opens the port itself from here
-        }
         Thread limit = new Thread(() -> {
             try {
                 Thread.sleep(ACT_LIMIT_MS);
@@ -165,6 +162,9 @@ public final class MotorGuard {
         }, "tactus-motor-guard-limit");
         limit.setDaemon(true);
         limit.start();
+        if (pauseWatch != null) {
+            pauseWatch.stop();   // the sketch's JVM is gone: the guard opens the port itself from here
+        }
         if (port != null && !devices.isEmpty()) {
             System.err.println("tactus motor guard: " + why + "; "
                     + MotorGuardZeroing.zero(port, baud, portIdentity, devices));

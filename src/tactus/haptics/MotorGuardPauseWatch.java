@@ -30,7 +30,6 @@ final class MotorGuardPauseWatch implements Runnable {
     private final long staleNanos;
     private final String portName;
     private final FileChannel port;
-    private final Object writing = new Object();
     private volatile byte[][] zeroMessages = new byte[0][];
     private volatile String deviceIds = "";
     private volatile boolean stopped;
@@ -77,15 +76,16 @@ final class MotorGuardPauseWatch implements Runnable {
         deviceIds = ids;
     }
 
-    /** Stops watching and closes the write descriptor (before the guard opens the port itself). */
+    /**
+     * Stops watching and closes the write descriptor (before the guard opens the port itself); never waits for a
+     * write stuck in it (closing the channel ends that write).
+     */
     void stop() {
         stopped = true;
-        synchronized (writing) {
-            try {
-                port.close();
-            } catch (IOException ignored) {
-                // closing anyway
-            }
+        try {
+            port.close();
+        } catch (IOException ignored) {
+            // closing anyway
         }
     }
 
@@ -123,21 +123,19 @@ final class MotorGuardPauseWatch implements Runnable {
     /** Writes each device's zero message, counting each before it is written; says what was done. */
     private String zero() {
         byte[][] messages = zeroMessages;
-        synchronized (writing) {
+        for (byte[] m : messages) {
             if (stopped) {
                 return "stopped";
             }
-            for (byte[] m : messages) {
-                heartbeat.countGuardWrite();
-                try {
-                    ByteBuffer b = ByteBuffer.wrap(m);
-                    port.write(b);
-                    if (b.hasRemaining()) {
-                        return "the write of zero torques to " + portName + " was cut short";
-                    }
-                } catch (IOException e) {
-                    return "the write of zero torques to " + portName + " failed (" + e.getMessage() + ")";
+            heartbeat.countGuardWrite();
+            try {
+                ByteBuffer b = ByteBuffer.wrap(m);
+                port.write(b);
+                if (b.hasRemaining()) {
+                    return "the write of zero torques to " + portName + " was cut short";
                 }
+            } catch (IOException e) {
+                return "the write of zero torques to " + portName + " failed (" + e + ")";
             }
         }
         return "sent zero torques to device " + deviceIds + " on " + portName;
