@@ -75,8 +75,9 @@ final class MotorGuardLink {
     static Opened openPort(String portName, int baud) {
         MotorGuardLink link = NONE;
         boolean windows = System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).startsWith("windows");
-        if (enabled && portName != null && !portName.isEmpty() && (windows || java.nio.file.Files.exists(Paths.get(portName)))) {
-            link = start(portName, baud);
+        String path = systemPath(portName);
+        if (enabled && path != null && (windows || java.nio.file.Files.exists(Paths.get(path)))) {
+            link = start(path, baud);
             link.awaitReady(READY_WAIT_MS);
         }
         try {
@@ -97,6 +98,19 @@ final class MotorGuardLink {
         return enabled;
     }
 
+    /** The port's path as jSerialComm opens it ("ttyACM0" is "/dev/ttyACM0" on Linux), or null if none. */
+    private static String systemPath(String portName) {
+        if (portName == null || portName.isEmpty()) {
+            return null;
+        }
+        try {
+            String p = SerialPort.getCommPort(portName).getSystemPortPath();
+            return p == null || p.isEmpty() ? portName : p;
+        } catch (RuntimeException e) {
+            return portName;
+        }
+    }
+
     /**
      * Starts a guard for a board on a serial transport that is already open; {@link #NONE} for other transports or
      * when turned off. The guard opens the port for writing after the transport (which works with jSerialComm,
@@ -107,7 +121,8 @@ final class MotorGuardLink {
             return NONE;
         }
         SerialTransport serial = (SerialTransport) transport;
-        return start(serial.describe(), serial.baudRate());
+        String path = systemPath(serial.describe());
+        return start(path == null ? serial.describe() : path, serial.baudRate());
     }
 
     /** Starts a guard and tells it the heartbeat and the port. */
