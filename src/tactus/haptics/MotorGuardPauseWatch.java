@@ -23,6 +23,11 @@ import java.util.concurrent.locks.LockSupport;
 final class MotorGuardPauseWatch implements Runnable {
     /** How often the heartbeat is looked at while a torque is on, in nanoseconds. */
     static final long POLL_NANOS = 1_000_000L;
+    /**
+     * How long a sketch's JVM whose heartbeat thread waits for a CPU (runnable, not paused) may give no heartbeat
+     * before the guard zeroes the motors anyway, in nanoseconds.
+     */
+    static final long STARVED_LIMIT_NANOS = 500_000_000L;
     /** How often the armed flag is looked at while no torque is on, in nanoseconds. */
     private static final long IDLE_POLL_NANOS = 10_000_000L;
 
@@ -34,12 +39,14 @@ final class MotorGuardPauseWatch implements Runnable {
     private volatile String deviceIds = "";
     private volatile boolean stopped;
     private boolean printed;
+    private final HeartbeatThreads threads;
 
     private MotorGuardPauseWatch(GuardHeartbeat heartbeat, long staleMillis, String portName, FileChannel port) {
         this.heartbeat = heartbeat;
         this.staleNanos = staleMillis * 1_000_000L;
         this.portName = portName;
         this.port = port;
+        this.threads = ProcessHandle.current().parent().map(p -> new HeartbeatThreads(p.pid())).orElse(null);
     }
 
     /**
@@ -106,6 +113,9 @@ final class MotorGuardPauseWatch implements Runnable {
                 continue;
             }
             long stale = now - unchangedSince;
+            if (!zeroed && stale > staleNanos && stale < STARVED_LIMIT_NANOS && threads != null && threads.waitForCpu()) {
+                continue;   // the JVM runs but gets no CPU (a loaded machine): not a pause, give it longer
+            }
             if (!zeroed && stale > staleNanos) {
                 zeroed = true;
                 String done = zero();
