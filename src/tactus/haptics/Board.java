@@ -18,7 +18,9 @@ import java.util.concurrent.locks.ReentrantLock;
  * never printed); each command goes out in one write; {@link #close()}
  * sends zero torques to every configured device before closing, also from a JVM shutdown hook and from
  * Processing's {@code dispose}; where the JVM ends with neither (the Processing editor's Stop button, SIGKILL),
- * a {@link MotorGuard} process started with the board sends them.
+ * a {@link MotorGuard} process started with the board sends them, and also while the JVM is paused (a
+ * debugger's breakpoint, SIGSTOP): every torque write stores a heartbeat in memory shared with the guard, and
+ * after the pause the board counts the replies to the guard's writes and ramps the force back in over 100 ms.
  *
  * <p>Safety net for a sketch that drives the board from its own thread (hAPI style): a torque watchdog
  * zeroes the motors when no torque write has come for {@link #setTorqueWatchdogMillis(int) a set time} (50 ms
@@ -45,6 +47,21 @@ public class Board implements AutoCloseable {
     private static final long CLOSE_ACK_NANOS = 250_000_000L;
     /** How long close() waits for the board's lock (held by a read or a write in another thread). */
     private static final long CLOSE_LOCK_NANOS = 500_000_000L;
+    /**
+     * Longest a waiter for the board (close, zeroTorques) waits behind another thread's write that has lasted this
+     * long too, in nanoseconds: a write to a board that reads takes microseconds, so such a write is stuck (the
+     * board stopped reading) and a zero torque could not go out behind it anyway.
+     */
+    static final long STUCK_WRITE_NANOS = 50_000_000L;
+    private static final int LOCKED = 0;
+    private static final int BUSY = 1;
+    private static final int STUCK = 2;
+    /** How often the watchdog thread beats the guard's heartbeat while a torque is on, in nanoseconds. */
+    private static final long HEARTBEAT_NANOS = 5_000_000L;
+    /** How long the force takes to come back, linearly from zero, after the motor guard zeroed it, in nanoseconds. */
+    static final long RESUME_RAMP_NANOS = 100_000_000L;
+    /** The most the ramp's factor may grow from one torque write to the next (a writer late by 100 ms still ramps). */
+    private static final float RESUME_RAMP_MAX_STEP = 0.05f;
     /** Unread input beyond this many bytes is dropped before a write (a sketch that never reads). */
     private static final int INPUT_CAP = 4096;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
@@ -56,6 +73,7 @@ public class Board implements AutoCloseable {
     private final Thread shutdownHook;
     private final boolean hookInRuntime;
     private final MotorGuardLink guard;
+    private final GuardHeartbeat heartbeat;
     private final ReentrantLock lock = new ReentrantLock();
     private final ConsoleNotices notices = new ConsoleNotices();
     private volatile int timeoutMs = DEFAULT_TIMEOUT_MS;
@@ -63,6 +81,7 @@ public class Board implements AutoCloseable {
     private int consecutiveTimeouts;
     private volatile boolean closed;
     private volatile boolean closing;
+    private volatile long writeStartedNanos;   // 0 while no write is in progress
 
     // is the board still reading? (lock held)
     private int seenAvailable;
@@ -88,13 +107,19 @@ public class Board implements AutoCloseable {
     private long implausibleFrames;
     private long pendingReplies;
 
+    // the motor guard's writes while this JVM was paused (lock held)
+    private long seenGuardWrites;
+    private long rampFromNanos;      // 0: no ramp
+    private float lastRamp = 1f;
+    private volatile long guardZeroings;
+
     /**
      * Opens the serial port of a Haply board from a Processing sketch (hAPI's constructor). The baud rate is
      * ignored by the board's native USB (sketches pass 0). The board is reset at once, and is closed
      * (torques zeroed) when the sketch is disposed.
      */
     public Board(processing.core.PApplet app, String portName, int baud) {
-        this(SerialTransport.open(portName, baud), BoardModel.M0);
+        this(MotorGuardLink.openPort(portName, baud), BoardModel.M0);
         if (app != null) {
             app.registerMethod("dispose", this);
         }
@@ -102,12 +127,16 @@ public class Board implements AutoCloseable {
 
     /** Opens the serial port of a Haply M0 board from a plain JVM application (baud as for the PApplet constructor). */
     public Board(String portName, int baud) {
-        this(SerialTransport.open(portName, baud), BoardModel.M0);
+        this(MotorGuardLink.openPort(portName, baud), BoardModel.M0);
     }
 
     /** Opens the serial port of a board of the given model (M3 and Dev-Kit have ports 1-4, the M0 1-2). */
     public Board(String portName, int baud, BoardModel model) {
-        this(SerialTransport.open(portName, baud), model);
+        this(MotorGuardLink.openPort(portName, baud), model);
+    }
+
+    private Board(MotorGuardLink.Opened opened, BoardModel model) {
+        this(opened.transport, model, opened.guard);
     }
 
     /** Uses an already open transport to a Haply M0 board. */
@@ -117,16 +146,34 @@ public class Board implements AutoCloseable {
 
     /** Uses an already open transport to a board of the given model; sends a reset at once. */
     public Board(Transport transport, BoardModel model) {
+        this(transport, model, null);
+    }
+
+    /** guard: the port's motor guard, or null to start one here if the transport is a serial port. */
+    private Board(Transport transport, BoardModel model, MotorGuardLink guard) {
         if (transport == null) {
+            if (guard != null) {
+                guard.release(true);
+            }
             throw new IllegalArgumentException("Board: transport must not be null");
         }
         if (model == null) {
+            if (guard != null) {
+                guard.release(true);
+            }
             throw new IllegalArgumentException("Board: model must not be null");
         }
         this.transport = transport;
         this.model = model;
-        flushInput();
-        send(WireFormat.reset((byte) 0), 2);
+        this.guard = guard != null ? guard : MotorGuardLink.watch(transport);
+        this.heartbeat = this.guard.heartbeat();
+        try {
+            flushInput();
+            send(WireFormat.reset((byte) 0), 2);
+        } catch (RuntimeException e) {
+            this.guard.release(false);   // the port is gone; the guard may try
+            throw e;
+        }
         this.shutdownHook = new Thread(this::closeQuietly, "tactus-haply-shutdown");
         if (transport instanceof SerialTransport) {
             // jSerialComm closes every port from a shutdown hook of its own; Runtime's hooks run in no set
@@ -137,7 +184,6 @@ public class Board implements AutoCloseable {
             Runtime.getRuntime().addShutdownHook(shutdownHook);
             hookInRuntime = true;
         }
-        this.guard = MotorGuardLink.watch(transport);
     }
 
     /**
@@ -290,6 +336,7 @@ public class Board implements AutoCloseable {
         try {
             long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
             int avail = availableNow();
+            syncGuardWrites();   // after the count of bytes: a guard reply in it was counted before it was written
             if (!wait && avail < frame) {
                 return false;
             }
@@ -310,6 +357,7 @@ public class Board implements AutoCloseable {
                 }
                 LockSupport.parkNanos(20_000);
                 avail = availableNow();
+                syncGuardWrites();
             }
             consecutiveTimeouts = 0;
             if (devices.size() == 1 && avail > pendingReplies * frame) {
@@ -439,32 +487,31 @@ public class Board implements AutoCloseable {
     /**
      * Sends zero torques (and zero PWM) to every configured device and a reset, then closes the link. Safe to
      * call more than once and from any thread. Never waits without a bound: at most half a second for another
-     * thread's read or write to let go of the board (then the port is closed without the zero torques, which
-     * a board that keeps another thread's write waiting could not take anyway), 250 ms for the board to
-     * answer the zero torques, and each write at most {@link SerialTransport#WRITE_TIMEOUT_MS}.
+     * thread's read to let go of the board, and at most 50 ms ({@link #STUCK_WRITE_NANOS}) behind another
+     * thread's write that has lasted as long (then the port is closed without the zero torques, which a board
+     * that keeps a write waiting could not take anyway, the stuck write ends, and the motor guard tries); 250 ms
+     * for the board to answer the zero torques (unanswered, they do not count as sent: the motor guard sends them
+     * again once the port is closed), and each write at most {@link SerialTransport#WRITE_TIMEOUT_MS}.
      */
     @Override
     public void close() {
         closing = true;
-        boolean locked;
-        try {
-            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            locked = lock.tryLock();
-        }
-        if (!locked) {
+        heartbeat.arm(false);   // the guard leaves the port to close() from here
+        int got = lockWithin(CLOSE_LOCK_NANOS);
+        if (got != LOCKED) {
             if (!closed) {
                 closed = true;
                 notices.once(ConsoleNotices.Kind.CLOSE_TIMEOUT, "tactus: the Haply board on " + transport.describe()
-                        + " was busy for " + CLOSE_LOCK_NANOS / 1_000_000 + " ms in another thread; its port was "
-                        + "closed without sending zero torques");
-                transport.close();
+                        + (got == STUCK ? " was stuck in another thread's write (the board stopped reading)"
+                                : " was busy for " + CLOSE_LOCK_NANOS / 1_000_000 + " ms in another thread")
+                        + "; its port was closed without sending zero torques");
+                transport.close();   // this also ends the stuck write
                 guard.release(false); // the motors may still push: the guard zeroes them now that the port is free
             }
             removeHook();
             return;
         }
+        boolean answered = false;
         try {
             if (closed) {
                 return;
@@ -478,12 +525,16 @@ public class Board implements AutoCloseable {
                     }
                 }
                 if (!closed) {
-                    awaitOwedReplies(CLOSE_ACK_NANOS);
-                    // then reset: the board forgets the configuration (the duty stays at the zero just sent)
-                    try {
-                        transport.write(WireFormat.reset((byte) 0), 0, 2);
-                    } catch (IOException ignored) {
-                        // closing anyway
+                    answered = awaitOwedReplies(CLOSE_ACK_NANOS);
+                    // then reset: the board forgets the configuration (the duty stays at the zero just sent). Not
+                    // when the zeros went unanswered: the guard sends them again, and a reset board would take
+                    // its write for another device and read the zeros as commands
+                    if (answered) {
+                        try {
+                            transport.write(WireFormat.reset((byte) 0), 0, 2);
+                        } catch (IOException ignored) {
+                            // closing anyway
+                        }
                     }
                     // Let the replies arrive, then drop them.
                     LockSupport.parkNanos(2_000_000);
@@ -499,7 +550,8 @@ public class Board implements AutoCloseable {
             }
             closed = true;
             transport.close();
-            guard.release(lostReason == null);
+            // only zeros the board answered count as done; otherwise the guard sends them again now
+            guard.release(lostReason == null && answered);
         } finally {
             lock.unlock();
         }
@@ -518,18 +570,13 @@ public class Board implements AutoCloseable {
 
     /**
      * Sends zero torques and zero PWM to every configured device now, from any thread (a watchdog); the link
-     * stays open. Returns false if the link is closed or failed, or if another thread held the board for more
-     * than half a second.
+     * stays open. Returns false if the link is closed or failed, if another thread held the board for more
+     * than half a second, or at once once another thread's write has been stuck for
+     * {@value #STUCK_WRITE_NANOS} ns (50 ms) while this call waited as long: no zero can go out behind it, and the
+     * port's own write timeout ends it.
      */
     public boolean zeroTorques() {
-        boolean locked;
-        try {
-            locked = lock.tryLock(CLOSE_LOCK_NANOS, TimeUnit.NANOSECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return false;
-        }
-        if (!locked) {
+        if (lockWithin(CLOSE_LOCK_NANOS) != LOCKED) {
             return false;
         }
         try {
@@ -547,6 +594,31 @@ public class Board implements AutoCloseable {
         }
     }
 
+    /**
+     * Takes the board's lock, waiting at most maxNanos; gives up sooner, with {@link #STUCK}, when another thread
+     * has been in one write for {@link #STUCK_WRITE_NANOS} and this one has waited that long too (a pause of
+     * the whole JVM during a write makes the write look long, but not the wait after it).
+     */
+    private int lockWithin(long maxNanos) {
+        long start = System.nanoTime();
+        try {
+            while (!lock.tryLock(1, TimeUnit.MILLISECONDS)) {
+                long now = System.nanoTime();
+                long w = writeStartedNanos;
+                if (w != 0 && now - w > STUCK_WRITE_NANOS && now - start > STUCK_WRITE_NANOS) {
+                    return STUCK;
+                }
+                if (now - start > maxNanos) {
+                    return BUSY;
+                }
+            }
+            return LOCKED;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return lock.tryLock() ? LOCKED : BUSY;
+        }
+    }
+
     /** Processing calls this when the sketch stops; same as {@link #close()}. */
     public void dispose() {
         close();
@@ -561,6 +633,11 @@ public class Board implements AutoCloseable {
     }
 
     // ------------------------------------------------------------------------------------------ for Device
+
+    /** The motor guard's link ({@link MotorGuardLink#NONE} without a guard; for tests). */
+    MotorGuardLink guardLink() {
+        return guard;
+    }
 
     void register(Device device) {
         lock.lock();
@@ -613,22 +690,29 @@ public class Board implements AutoCloseable {
 
     /**
      * Waits, up to a time, until every reply still owed has arrived (one device: the last one answers the
-     * zero torques, so the board has applied them). Closing a pseudo-terminal or a USB port at once can lose
+     * zero torques, so the board has applied them); returns true if they did. Closing a pseudo-terminal or a USB port at once can lose
      * what the other end has not read yet; the wait makes the zeroing sure wherever the board still answers.
      */
-    private void awaitOwedReplies(long maxNanos) {
+    private boolean awaitOwedReplies(long maxNanos) {
+        if (devices.isEmpty()) {
+            LockSupport.parkNanos(2_000_000);
+            return true;      // no device: no motor was ever driven
+        }
         if (devices.size() != 1 || pendingReplies <= 0) {
             LockSupport.parkNanos(2_000_000);
-            return;
+            return false;     // cannot tell (one device per board is the rule, and the zeros are owed a reply)
         }
         long need = pendingReplies * devices.get(0).replyBytes();
         long deadline = System.nanoTime() + maxNanos;
         try {
-            while (availableNow() < need && System.nanoTime() - deadline < 0) {
+            int avail = availableNow();
+            while (avail < need && System.nanoTime() - deadline < 0) {
                 LockSupport.parkNanos(200_000);
+                avail = availableNow();
             }
+            return avail >= need;
         } catch (IOException ignored) {
-            // the link is gone: nothing more to wait for
+            return false;     // the link is gone: the zeros may not have arrived
         }
     }
 
@@ -639,7 +723,13 @@ public class Board implements AutoCloseable {
             requireOpen();
             try {
                 boardStillReads();
-                transport.write(data, 0, len);
+                syncGuardWrites();
+                writeStartedNanos = System.nanoTime() | 1L;
+                try {
+                    transport.write(data, 0, len);
+                } finally {
+                    writeStartedNanos = 0;
+                }
                 if (len > 0 && data[0] == WireFormat.WRITE) {
                     pendingReplies++;
                     if (writesUnanswered++ == 0) {
@@ -662,13 +752,72 @@ public class Board implements AutoCloseable {
         lock.lock();
         try {
             send(data, len);
-            lastTorqueWriteNanos = System.nanoTime();   // under the lock: the watchdog never sees a write half done
+            long now = System.nanoTime();
+            lastTorqueWriteNanos = now;   // under the lock: the watchdog never sees a write half done
             torqueArmed = nonZero;
+            heartbeat.beat(now);          // a memory store: the motor guard sees this JVM run
+            heartbeat.arm(nonZero);
         } finally {
             lock.unlock();
         }
-        if (nonZero && torqueWatchdog == null && torqueWatchdogMs > 0) {
+        if (nonZero && torqueWatchdog == null && (torqueWatchdogMs > 0 || heartbeat.isShared())) {
             startTorqueWatchdog();
+        }
+    }
+
+    /**
+     * The factor (0..1) by which a torque write is scaled now: 1, except in the {@link #RESUME_RAMP_NANOS} after
+     * the motor guard zeroed the motors of this paused JVM, when the force comes back linearly from zero instead
+     * of jumping to what the sketch computed after the pause; and by at most 5 % of the force per write, so that a
+     * writer that runs late after the pause still ramps (at least 20 writes).
+     */
+    float torqueRamp() {
+        lock.lock();
+        try {
+            if (closed) {
+                return 1f;
+            }
+            syncGuardWrites();
+            if (rampFromNanos == 0) {
+                return 1f;
+            }
+            long t = System.nanoTime() - rampFromNanos;
+            float f = Math.min(lastRamp + RESUME_RAMP_MAX_STEP, Math.max(0f, (float) t / RESUME_RAMP_NANOS));
+            if (f >= 1f) {
+                rampFromNanos = 0;
+                f = 1f;
+            }
+            lastRamp = f;
+            return f;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Number of zero-torque writes the motor guard sent to the board because this JVM gave no heartbeat (it was
+     * paused: a debugger's breakpoint, SIGSTOP) while a torque was on; each one was followed by a ramp.
+     */
+    public long guardZeroings() {
+        return guardZeroings;
+    }
+
+    /**
+     * Takes in the motor guard's writes since the last look (lock held): the board answers them too, so their
+     * replies are owed and not stray bytes; the motors are at zero, so the watchdog stands down and the force
+     * ramps back in. No system call: a read of the shared memory.
+     */
+    private void syncGuardWrites() {
+        long g = heartbeat.guardWrites();
+        if (g != seenGuardWrites) {
+            long k = g - seenGuardWrites;
+            seenGuardWrites = g;
+            pendingReplies += k;
+            guardZeroings += k;
+            torqueArmed = false;
+            heartbeat.arm(false);
+            rampFromNanos = System.nanoTime() | 1L;
+            lastRamp = 0f;
         }
     }
 
@@ -716,18 +865,30 @@ public class Board implements AutoCloseable {
     }
 
     private void watchTorques() {
+        boolean beats = heartbeat.isShared();
         while (!closed) {
             int ms = torqueWatchdogMs;
             long limit = ms * 1_000_000L;
-            // a tenth of the time while a torque is on (a trip comes at most 10 % late), 50 ms otherwise
-            LockSupport.parkNanos(ms > 0 && torqueArmed ? Math.max(1_000_000L, limit / 10) : 50_000_000L);
-            if (ms <= 0 || !torqueArmed) {
+            // while a torque is on: a tenth of the time (a trip comes at most 10 % late), and at least every 5 ms
+            // for the motor guard's heartbeat; 50 ms otherwise
+            long step = 50_000_000L;
+            if (torqueArmed) {
+                step = ms > 0 ? Math.max(1_000_000L, limit / 10) : step;
+                step = beats ? Math.min(step, HEARTBEAT_NANOS) : step;
+            }
+            LockSupport.parkNanos(step);
+            if (!torqueArmed) {
+                continue;
+            }
+            heartbeat.beat(System.nanoTime());
+            if (ms <= 0) {
                 continue;
             }
             long since = System.nanoTime() - lastTorqueWriteNanos;
             long trippedAfter = -1;
             if (since > limit && lock.tryLock()) {
                 try {
+                    syncGuardWrites();   // the guard zeroed the motors of this paused JVM: no trip, a ramp
                     since = System.nanoTime() - lastTorqueWriteNanos;
                     if (!closed && torqueArmed && since > limit) {
                         torqueArmed = false;
@@ -809,6 +970,7 @@ public class Board implements AutoCloseable {
         }
         lostReason = msg;
         closed = true;
+        heartbeat.arm(false);
         transport.close();
         notices.once(ConsoleNotices.Kind.LOST, "tactus: " + msg + "; zero torques were sent where the link still "
                 + "took them");

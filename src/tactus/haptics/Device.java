@@ -305,6 +305,12 @@ public class Device {
             }
         }
         keepDirectionWithinTheClip();
+        float ramp = board.torqueRamp();   // below 1 only just after the motor guard zeroed a paused JVM's motors
+        if (ramp < 1f) {
+            for (int i = 0; i < nMotors; i++) {
+                torquesByPort[i] *= ramp;
+            }
+        }
         sendWrite();
     }
 

@@ -15,14 +15,19 @@ import java.util.Optional;
  * keeps the last duty for good, so only a process outside that JVM can stop them.
  *
  * <p>A {@link Board} that opens a serial port starts it (see {@link Board#setMotorGuard(boolean)}) and tells it,
- * one line at a time on its standard input: {@code port <baud> <name>}; {@code device <id> <writeBytes>
- * <replyBytes>} for each device set up (the length of its write message and of the board's reply); and
- * {@code clean} when the board was closed with the torques zeroed. The guard never opens the port while its
- * parent lives. When its standard input ends, or its parent process is gone, without a {@code clean}, it
- * opens the port, sends every device a write with zero torques and zero PWM, waits up to 250 ms for the
- * replies, sends a reset and exits. It does nothing if the port's device node was replaced meanwhile (a
- * pseudo-terminal freed and reused, a board plugged in again). Every wait is bounded: the process halts at
- * the latest 3 s after it started acting.
+ * one line at a time on its standard input: {@code heartbeat <staleMs> <path>} (the memory it shares with the
+ * board, a {@link GuardHeartbeat}); {@code port <baud> <name>}; {@code device <id> <writeBytes> <replyBytes>}
+ * for each device set up (the length of its write message and of the board's reply); and {@code clean} when
+ * the board was closed with the torques zeroed and answered.
+ *
+ * <p>While its parent lives, the guard only holds the port open for writing (opened on the {@code port} line,
+ * before the board opens the port) and never reads it: when the parent's heartbeat stops for the stale time
+ * while a torque is on (the JVM is paused: a debugger's breakpoint, SIGSTOP), it sends each device one write
+ * with zero torques and zero PWM (see {@link MotorGuardPauseWatch}). When its standard input ends, or its
+ * parent process is gone, without a {@code clean}, it opens the port, sends every device a write with zero
+ * torques and zero PWM, waits up to 250 ms for the replies, sends a reset and exits. It does nothing if the
+ * port's device node was replaced meanwhile (a pseudo-terminal freed and reused, a board plugged in again).
+ * Every wait is bounded: the process halts at the latest 3 s after it started acting.
  */
 public final class MotorGuard {
     /** First line the parent sends: names the protocol and its version. */
@@ -36,6 +41,9 @@ public final class MotorGuard {
     private int baud;
     private Object portIdentity;
     private boolean acted;
+    private GuardHeartbeat heartbeat;
+    private long staleMillis;
+    private MotorGuardPauseWatch pauseWatch;
 
     private MotorGuard() {
     }
@@ -64,12 +72,12 @@ public final class MotorGuard {
     }
 
     /**
-     * Ignores SIGINT, SIGTERM and SIGHUP: Ctrl-C in a terminal, a closed terminal or a service stop signal the
-     * whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
+     * Ignores SIGINT, SIGTERM, SIGHUP and SIGTSTP: Ctrl-C or Ctrl-Z in a terminal, a closed terminal or a service
+     * stop signal the whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
      * sketch is gone; SIGKILL still ends it).
      */
     private static void ignoreTerminalSignals() {
-        for (String name : new String[] {"INT", "TERM", "HUP"}) {
+        for (String name : new String[] {"INT", "TERM", "HUP", "TSTP"}) {
             try {
                 sun.misc.Signal.handle(new sun.misc.Signal(name), sun.misc.SignalHandler.SIG_IGN);
             } catch (Throwable e) {
@@ -93,10 +101,20 @@ public final class MotorGuard {
     private synchronized void accept(String line) {
         String[] f = line.trim().split(" ");
         try {
-            if (f[0].equals("port") && f.length >= 3) {
+            if (f[0].equals("heartbeat") && f.length >= 3) {
+                long ms = Long.parseLong(f[1]);
+                if (ms < 1 || ms > 10_000) {
+                    throw new IllegalArgumentException("stale time out of range");
+                }
+                staleMillis = ms;
+                heartbeat = GuardHeartbeat.open(line.trim().split(" ", 3)[2]);
+            } else if (f[0].equals("port") && f.length >= 3) {
                 baud = Integer.parseInt(f[1]);
                 port = line.trim().split(" ", 3)[2];
                 portIdentity = MotorGuardZeroing.identity(port);
+                if (heartbeat != null && pauseWatch == null) {
+                    pauseWatch = MotorGuardPauseWatch.start(heartbeat, staleMillis, port);
+                }
             } else if (f[0].equals("device") && f.length == 4) {
                 int id = Integer.parseInt(f[1]);
                 int write = Integer.parseInt(f[2]);
@@ -105,12 +123,26 @@ public final class MotorGuard {
                     throw new IllegalArgumentException("out of range");
                 }
                 devices.put(id, new int[] {write, reply});
+                if (pauseWatch != null) {
+                    pauseWatch.setDevices(zeroMessages(), String.join(", ", devices.keySet().stream()
+                            .map(String::valueOf).toArray(String[]::new)));
+                }
             } else if (!line.equals(HELLO)) {
                 throw new IllegalArgumentException("unknown command");
             }
-        } catch (RuntimeException e) {
+        } catch (RuntimeException | java.io.IOException e) {
             System.err.println("tactus motor guard: ignored \"" + line + "\" (" + e.getMessage() + ")");
         }
+    }
+
+    /** Each device's write with zero torques and zero PWM: [2][id], then zeros. */
+    private byte[][] zeroMessages() {
+        byte[][] out = new byte[devices.size()][];
+        int i = 0;
+        for (Map.Entry<Integer, int[]> d : devices.entrySet()) {
+            out[i++] = MotorGuardZeroing.zeroMessage(d.getKey(), d.getValue()[0]);
+        }
+        return out;
     }
 
     /** Zeroes the motors once, within {@link #ACT_LIMIT_MS}, then ends the process. */
@@ -130,6 +162,9 @@ public final class MotorGuard {
         }, "tactus-motor-guard-limit");
         limit.setDaemon(true);
         limit.start();
+        if (pauseWatch != null) {
+            pauseWatch.stop();   // the sketch's JVM is gone: the guard opens the port itself from here
+        }
         if (port != null && !devices.isEmpty()) {
             System.err.println("tactus motor guard: " + why + "; "
                     + MotorGuardZeroing.zero(port, baud, portIdentity, devices));

@@ -56,9 +56,7 @@ final class MotorGuardZeroing {
             int owed = 0;
             StringBuilder ids = new StringBuilder();
             for (Map.Entry<Integer, int[]> d : devices.entrySet()) {
-                byte[] zeros = new byte[d.getValue()[0]];   // [2][id], then PWM bytes and float32 torques, all 0
-                zeros[0] = WireFormat.WRITE;
-                zeros[1] = (byte) (int) d.getKey();
+                byte[] zeros = zeroMessage(d.getKey(), d.getValue()[0]);
                 if (port.writeBytes(zeros, zeros.length) != zeros.length) {
                     return "the write of zero torques to " + portName + " failed (error " + port.getLastErrorCode() + ")";
                 }
@@ -79,6 +77,14 @@ final class MotorGuardZeroing {
         } finally {
             port.closePort();
         }
+    }
+
+    /** A device's write with zero torques and zero PWM: [2][id], then PWM bytes and float32 torques, all 0. */
+    static byte[] zeroMessage(int id, int length) {
+        byte[] zeros = new byte[length];
+        zeros[0] = WireFormat.WRITE;
+        zeros[1] = (byte) id;
+        return zeros;
     }
 
     private static SerialPort open(String portName, int baud) {

@@ -21,6 +21,8 @@ public final class SerialTransport implements Transport {
     public static final int WRITE_TIMEOUT_MS = 250;
     /** How often the guard thread looks for a stalled write, in milliseconds. */
     private static final long GUARD_PERIOD_NANOS = 20_000_000L;
+    /** A wake-up of the guard thread this much later than asked means the JVM was paused, in nanoseconds. */
+    private static final long PAUSE_NANOS = 100_000_000L;
     /** The read timeout of the port: readWaiting waits at most this long (the tty counts in tenths of a second). */
     private static final int READ_WAIT_MS = 100;
 
@@ -199,15 +201,29 @@ public final class SerialTransport implements Transport {
 
     /**
      * Closes the port of every write that has lasted longer than the write timeout: looks every 20 ms while a
-     * port is open, every half second otherwise.
+     * port is open, every half second otherwise. Time while this JVM was paused (this thread woke over 100 ms
+     * late) does not count: a write that was in progress when a debugger suspended every thread, or SIGSTOP
+     * stopped the process, has had no time to end.
      */
     private static void guardLoop() {
         long limit = WRITE_TIMEOUT_MS * 1_000_000L;
+        long lastWake = System.nanoTime();
+        long resumedAt = 0;
         while (true) {
-            LockSupport.parkNanos(OPEN.isEmpty() ? 25 * GUARD_PERIOD_NANOS : GUARD_PERIOD_NANOS);
+            long sleep = OPEN.isEmpty() ? 25 * GUARD_PERIOD_NANOS : GUARD_PERIOD_NANOS;
+            LockSupport.parkNanos(sleep);
             long now = System.nanoTime();
+            if (now - lastWake - sleep > PAUSE_NANOS) {
+                // this thread did not run for a while: the JVM was paused (a debugger, SIGSTOP) or starved, and so
+                // was the writer, whose write may have ended just before; time a write from here, not from its start
+                resumedAt = now;
+            }
+            lastWake = now;
             for (SerialTransport t : OPEN) {
                 long started = t.writeStartedNanos;
+                if (started != 0 && resumedAt != 0 && started - resumedAt < 0) {
+                    started = resumedAt;
+                }
                 if (started != 0 && now - started > limit) {
                     t.writeStalled = true;
                     t.close();   // unblocks the write: the descriptor goes, the write returns -1

@@ -111,6 +111,95 @@ class FrozenBoardTest {
         }
     }
 
+    /**
+     * Behind a serial write that is stuck (the board stopped reading, the pty's buffer is full), close() and
+     * zeroTorques() (a watchdog's call) wait at most {@link Board#STUCK_WRITE_NANOS} of their own, not until the
+     * write's own timeout ends it: before, both waited for that, 230-250 ms after a write stuck for 30 ms, every
+     * run.
+     */
+    @Test
+    void closeAndZeroTorquesWaitAtMost50MsBehindAStuckSerialWrite() throws Exception {
+        Assumptions.assumeTrue(PtyPair.socatAvailable(), "socat is not installed");
+        for (boolean closeIt : new boolean[] {false, true}) {
+            try (PtyPair pty = PtyPair.open()) {
+                BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+                emulator.serve(SerialTransport.open(pty.boardEnd(), 0));
+                Board board = new Board(pty.hostEnd(), 0);
+                board.setLostAfterTimeouts(100_000);   // the board's own lost-link time would stop the writer first
+                Device device = new Device((byte) 5, board);
+                HaplyPreset.HAPLY_2018.configure(device);
+                device.device_set_parameters();
+                emulator.unplug();
+                long[] inWriteSince = new long[1];
+                Thread writer = new Thread(() -> {
+                    try {
+                        while (true) {
+                            device.set_actuator_torque(1, 0.05f);
+                            inWriteSince[0] = System.nanoTime();
+                            device.device_write_torques();
+                            inWriteSince[0] = 0;
+                        }
+                    } catch (RuntimeException e) {
+                        // the link is lost: expected
+                    }
+                }, "filling-writer");
+                writer.setDaemon(true);
+                writer.start();
+                try {
+                    long deadline = System.nanoTime() + 10_000_000_000L;
+                    long since = 0;
+                    boolean stuck = false;
+                    while (!stuck && System.nanoTime() < deadline) {
+                        Thread.sleep(1);
+                        since = inWriteSince[0];
+                        // in a write for 30 ms and asleep in the kernel's tty write, not merely a thread the
+                        // loaded machine did not run
+                        stuck = since != 0 && System.nanoTime() - since > 30_000_000L && asleepInTtyWrite("filling-writer");
+                    }
+                    assertTrue(stuck, "a write gets stuck once the buffer is full");
+                    long stuckMs = (System.nanoTime() - since) / 1_000_000;
+                    long t0 = System.nanoTime();
+                    String what = closeIt ? "close()" : "zeroTorques()";
+                    if (closeIt) {
+                        board.close();
+                        assertTrue(board.isClosed());
+                    } else {
+                        assertTrue(!board.zeroTorques(), "no zero can go out behind a stuck write");
+                    }
+                    double ms = (System.nanoTime() - t0) / 1e6;
+                    System.out.printf("FrozenBoardTest: %s behind a write stuck for %d ms returned after %.1f ms%n",
+                            what, stuckMs, ms);
+                    assertTrue(ms < 150, what + " waited " + ms + " ms behind a stuck write (the bound is "
+                            + Board.STUCK_WRITE_NANOS / 1_000_000 + " ms of its own)");
+                } finally {
+                    board.close();
+                    writer.join(2_000);
+                    Process guard = board.guardLink().process();
+                    if (guard != null) {
+                        guard.waitFor(MotorGuard.ACT_LIMIT_MS + 2_000, java.util.concurrent.TimeUnit.MILLISECONDS);
+                    }
+                }
+            }
+        }
+    }
+
+    /** True if this JVM's thread of that name is asleep in the kernel in a tty write (Linux: /proc). */
+    private static boolean asleepInTtyWrite(String threadName) throws IOException {
+        java.nio.file.Path tasks = java.nio.file.Paths.get("/proc/self/task");
+        try (java.util.stream.Stream<java.nio.file.Path> all = java.nio.file.Files.list(tasks)) {
+            for (java.nio.file.Path t : (Iterable<java.nio.file.Path>) all::iterator) {
+                String comm = new String(java.nio.file.Files.readAllBytes(t.resolve("comm"))).trim();
+                if (comm.equals(threadName)) {
+                    String stat = new String(java.nio.file.Files.readAllBytes(t.resolve("stat")));
+                    String wchan = new String(java.nio.file.Files.readAllBytes(t.resolve("wchan")));
+                    char state = stat.charAt(stat.lastIndexOf(')') + 2);
+                    return state == 'S' && !wchan.contains("futex");
+                }
+            }
+        }
+        return false;
+    }
+
     @Test
     void closeNeverWaitsForAWriteStuckInTheTransport() throws Exception {
         BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);

@@ -10,6 +10,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
 
 /**
@@ -101,6 +102,49 @@ class MotorGuardTest {
             assertEquals(-1.0, run.millisToZero(end, LIMIT_MS), "nothing zeroes the motors");
             assertTrue(run.motorsDriven(), "the last torque stays on: duty " + run.emulator.duty(1) + "/"
                     + run.emulator.duty(2));
+        }
+    }
+
+    /**
+     * Only zeros the board answered count as sent: a close() whose zero torques got no answer does not tell the
+     * guard "clean", and the guard sends them again once the port is free (before, it was told "clean" and left
+     * without touching the port: every run); close() then sends no reset, so the board still takes the guard's
+     * write as the device's.
+     */
+    @Test
+    void aCloseWhoseZerosGoUnansweredLeavesTheMotorsToTheGuard() throws Exception {
+        try (PtyPair pty = PtyPair.open()) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            emulator.serve(SerialTransport.open(pty.boardEnd(), 0));
+            Board board = new Board(pty.hostEnd(), 0);
+            try {
+                Process guard = board.guardLink().process();
+                assertTrue(guard != null && guard.isAlive(), "the board started a motor guard");
+                Device device = new Device((byte) 5, board);
+                HaplyPreset.HAPLY_2018.configure(device);
+                device.device_set_parameters();
+                device.set_actuator_torque(1, 0.08f);
+                device.set_actuator_torque(2, -0.08f);
+                device.device_write_torques();
+                long deadline = System.nanoTime() + 2_000_000_000L;
+                while ((emulator.duty(1) == 0 || emulator.duty(2) == 0) && System.nanoTime() < deadline) {
+                    Thread.sleep(1);
+                }
+                assertTrue(emulator.duty(1) != 0 && emulator.duty(2) != 0, "the motors are driven");
+                emulator.dropReplies(Integer.MAX_VALUE);   // the board takes the zeros but its answers are lost
+                board.close();
+                long writes = emulator.writes();
+                long foreign = emulator.foreignWrites();
+                long resets = emulator.resets();
+                assertTrue(guard.waitFor(MotorGuard.ACT_LIMIT_MS + 2_000, TimeUnit.MILLISECONDS), "the guard ends");
+                assertTrue(emulator.writes() > writes, "the guard, not told \"clean\", sent the zeros again");
+                assertEquals(foreign, emulator.foreignWrites(), "the board took the guard's write as device 5's (close() "
+                        + "did not reset it, as its zeros went unanswered)");
+                assertEquals(resets + 1, emulator.resets(), "the guard reset the board after its zeros");
+            } finally {
+                board.close();
+                emulator.close();
+            }
         }
     }
 
