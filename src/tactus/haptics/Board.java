@@ -599,6 +599,8 @@ public class Board implements AutoCloseable {
      * has been in one write for {@link #STUCK_WRITE_NANOS} and this one has waited that long too (a pause of
      * the whole JVM during a write makes the write look long, but not the wait after it).
      */
+    private volatile long lastLockWaitNanos;
+
     private int lockWithin(long maxNanos) {
         long start = System.nanoTime();
         try {
@@ -606,17 +608,29 @@ public class Board implements AutoCloseable {
                 long now = System.nanoTime();
                 long w = writeStartedNanos;
                 if (w != 0 && now - w > STUCK_WRITE_NANOS && now - start > STUCK_WRITE_NANOS) {
+                    lastLockWaitNanos = now - start;
                     return STUCK;
                 }
                 if (now - start > maxNanos) {
+                    lastLockWaitNanos = now - start;
                     return BUSY;
                 }
             }
+            lastLockWaitNanos = System.nanoTime() - start;
             return LOCKED;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+            lastLockWaitNanos = System.nanoTime() - start;
             return lock.tryLock() ? LOCKED : BUSY;
         }
+    }
+
+    /**
+     * How long the last {@link #close()} or {@link #zeroTorques()} waited for the board's lock, in nanoseconds:
+     * the time it spent behind another thread's call (for tests).
+     */
+    long lastLockWaitNanos() {
+        return lastLockWaitNanos;
     }
 
     /** Processing calls this when the sketch stops; same as {@link #close()}. */

@@ -167,10 +167,14 @@ class FrozenBoardTest {
                         assertTrue(!board.zeroTorques(), "no zero can go out behind a stuck write");
                     }
                     double ms = (System.nanoTime() - t0) / 1e6;
-                    System.out.printf("FrozenBoardTest: %s behind a write stuck for %d ms returned after %.1f ms%n",
-                            what, stuckMs, ms);
-                    assertTrue(ms < 150, what + " waited " + ms + " ms behind a stuck write (the bound is "
+                    double waited = board.lastLockWaitNanos() / 1e6;
+                    System.out.printf("FrozenBoardTest: %s behind a write stuck for %d ms waited %.1f ms for the "
+                            + "board, returned after %.1f ms%n", what, stuckMs, waited, ms);
+                    // the wait behind the stuck write is the board's to bound; closing the port after it is
+                    // jSerialComm's (once 460 ms in a loaded full run), so the whole call only has a hang bound
+                    assertTrue(waited < 150, what + " waited " + waited + " ms behind a stuck write (the bound is "
                             + Board.STUCK_WRITE_NANOS / 1_000_000 + " ms of its own)");
+                    assertTrue(ms < 2_000, what + " took " + ms + " ms in all");
                 } finally {
                     board.close();
                     writer.join(2_000);
