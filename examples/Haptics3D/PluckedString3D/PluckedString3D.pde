@@ -72,6 +72,14 @@ void draw() {
   pushMatrix();
   translate((float) s.x(avatar), (float) s.y(avatar), (float) s.z(avatar));
   sphere(8);
+  // the plectrum's reach (its contacts act within 14 px) and its handle
+  noFill();
+  stroke(touching ? color(230, 70, 60) : color(160), 180);
+  strokeWeight(2);
+  ellipse(0, 0, 28, 28);
+  strokeWeight(3);
+  line(0, 0, 0, 0, -40, 0);
+  noStroke();
   popMatrix();
   popMatrix();
   fill(230);

@@ -83,6 +83,12 @@ void draw() {
   haptics.gripOrientation(q);
   pushMatrix();
   translate((float) s.x(avatar), (float) s.y(avatar), (float) s.z(avatar));
+  // the reach of a grab: a block whose centre is inside this ring (60 px) is taken when you press
+  noFill();
+  stroke(pressing ? color(230, 60, 50) : color(200, 90, 80), 150);
+  strokeWeight(2);
+  ellipse(0, 0, 120, 120);
+  noStroke();
   float angle = 2 * acos((float) Math.max(-1, Math.min(1, q[0])));
   float norm = (float) Math.sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (norm > 1e-6) {
