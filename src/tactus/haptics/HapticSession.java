@@ -578,23 +578,9 @@ public final class HapticSession implements AutoCloseable {
      * whatever the sketch's transforms and styles (they are restored).
      */
     public void drawStatus() {
-        if (app == null) {
-            return;
+        if (app != null) {
+            StatusBand.draw(app, status(), loop != null && loop.failure() != null, isEmulated());
         }
-        String s = status();
-        app.pushMatrix();
-        app.pushStyle();
-        app.resetMatrix();
-        app.textSize(13);
-        app.textAlign(PApplet.LEFT, PApplet.BASELINE);
-        app.noStroke();
-        boolean trouble = loop != null && loop.failure() != null;
-        app.fill(trouble ? 0xE0A02020 : isEmulated() ? 0xD0303848 : 0xD0205030);
-        app.rect(0, app.height - 24, Math.min(app.width, app.textWidth(s) + 20), 24);
-        app.fill(255);
-        app.text(s, 10, app.height - 8);
-        app.popStyle();
-        app.popMatrix();
     }
 
     /** Stops the loop and closes the board (zero torques, then a reset) and the emulator. */

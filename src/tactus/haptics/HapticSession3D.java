@@ -409,29 +409,9 @@ public final class HapticSession3D implements AutoCloseable {
 
     /** Draws {@link #status()} in the bottom-left corner, whatever the sketch's transforms (they are restored). */
     public void drawStatus() {
-        if (app == null) {
-            return;
+        if (app != null) {
+            StatusBand.draw(app, status(), loop != null && loop.failure() != null, isEmulated());
         }
-        String s = status();
-        app.pushMatrix();
-        app.pushStyle();
-        app.resetMatrix();
-        app.hint(PApplet.DISABLE_DEPTH_TEST);
-        app.textSize(13);
-        app.textAlign(PApplet.LEFT, PApplet.BASELINE);
-        app.noStroke();
-        boolean trouble = loop != null && loop.failure() != null;
-        app.fill(trouble ? 0xE0A02020 : isEmulated() ? 0xD0303848 : 0xD0205030);
-        float y0 = app.height - 24;
-        if (app.g.is3D()) {
-            app.camera();
-        }
-        app.rect(0, y0, Math.min(app.width, app.textWidth(s) + 20), 24);
-        app.fill(255);
-        app.text(s, 10, app.height - 8);
-        app.hint(PApplet.ENABLE_DEPTH_TEST);
-        app.popStyle();
-        app.popMatrix();
     }
 
     /** Stops the loop, sends zero force and closes the device, then the emulator. */
