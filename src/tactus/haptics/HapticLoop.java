@@ -1,6 +1,7 @@
 package tactus.haptics;
 
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Pattern;
@@ -38,7 +39,13 @@ public final class HapticLoop implements AutoCloseable {
     /** Number of recent ticks kept for the percentiles. */
     public static final int WINDOW = 1 << 16;
     /** The threads that zero the motors when the loop stalls: this loop's watchdog and the boards' torque watchdogs. */
+    /** The share of each tick period reserved for the loop thread under SCHED_DEADLINE, in percent. */
+    static final int DEADLINE_SHARE_PERCENT = 80;
     static final Pattern SAFETY_THREADS = Pattern.compile("tactus-haptic-w|tactus-haply-to");
+    /** The loop's watchdog thread as Linux names it (15 characters). */
+    private static final Pattern LOOP_WATCHDOG_NAME = Pattern.compile("tactus-haptic-w");
+    /** How long the loop thread waits for its watchdog to show up before it asks for real-time scheduling, ms. */
+    private static final long WATCHDOG_NAME_WAIT_MS = 1000;
 
     /** Who steps the model. */
     public enum Mode {
@@ -72,6 +79,7 @@ public final class HapticLoop implements AutoCloseable {
     private int spinMicros = 60;
     private int realtimePriority;
     private boolean realtimeJvmThreads = true;
+    private boolean deadlineScheduling = true;
     private boolean decoupleInAudioMode = true;
     private boolean realUnits;
     private volatile String scheduling = "not started";
@@ -379,6 +387,21 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
+     * With real-time scheduling ({@link #setRealtimePriority(int)}), asks first for Linux's SCHED_DEADLINE for the
+     * loop thread (true, the default): a reservation of 80 % of each tick period, with the period as its deadline,
+     * which runs ahead of every SCHED_FIFO thread and of the kernel's reservation for starved normal threads (the
+     * "fair server", 50 ms a second, which otherwise stops a SCHED_FIFO loop for up to 50 ms whenever real-time
+     * threads such as the JIT compilers kept a core busy for most of a second). Where the deadline policy is refused
+     * (an older kernel or chrt, the JVM pinned to some CPUs, the deadline bandwidth of the system taken), the loop
+     * falls back to SCHED_FIFO at its priority, as with false. A tick that needs more than its reservation waits
+     * for the next period. Configure before {@link #start()}.
+     */
+    public void setDeadlineScheduling(boolean on) {
+        beforeStart("setDeadlineScheduling");
+        deadlineScheduling = on;
+    }
+
+    /**
      * In {@link Mode#AUDIO}, wraps the avatar in a {@link DecoupledAvatar} at {@link #start()} (true, the
      * default) so that a tick never waits for the model's lock, or calls the avatar directly (false). An
      * avatar that is already a {@code DecoupledAvatar} is never wrapped twice, and one that says it
@@ -390,9 +413,10 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_FIFO n)" (with "; VM
-     * and GC threads at n-1, JIT compilers at 1" when those were moved too), or
-     * "normal priority (real-time refused: why)".
+     * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_DEADLINE r us of every
+     * p us; safety threads at SCHED_FIFO n)" or, where the deadline policy was refused or not asked for,
+     * "real-time (SCHED_FIFO n)" (each with "; VM and GC threads at n-1, JIT compilers at 1" when those were moved
+     * too), or "normal priority (real-time refused: why)".
      */
     public String scheduling() {
         return scheduling;
@@ -598,10 +622,17 @@ public final class HapticLoop implements AutoCloseable {
                 others.put(RealtimeScheduling.COMPILER_THREADS, 1);
             }
             others.put(SAFETY_THREADS, realtimePriority);
-            String why = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority);
-            scheduling = why == null ? "real-time (SCHED_FIFO " + realtimePriority + (realtimeJvmThreads
-                    ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "") + ")"
-                    : "normal priority (real-time refused: " + why + ")";
+            // the watchdog was started just after this thread and names itself as it starts: wait until Linux
+            // shows its name, or the chrt run would miss it and leave it at normal priority
+            RealtimeScheduling.awaitThreadNamed(LOOP_WATCHDOG_NAME, WATCHDOG_NAME_WAIT_MS);
+            RealtimeScheduling.Grant g = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority,
+                    deadlineScheduling ? period * DEADLINE_SHARE_PERCENT / 100 : 0, period);
+            String jvm = realtimeJvmThreads ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "";
+            scheduling = !g.granted() ? "normal priority (real-time refused: " + g.why + ")"
+                    : g.deadline ? String.format(Locale.ROOT, "real-time (SCHED_DEADLINE %d us of every %d us; safety "
+                            + "threads at SCHED_FIFO %d%s)", period * DEADLINE_SHARE_PERCENT / 100_000, period / 1000,
+                            realtimePriority, jvm)
+                    : "real-time (SCHED_FIFO " + realtimePriority + jvm + ")";
         } else {
             scheduling = "normal priority";
         }

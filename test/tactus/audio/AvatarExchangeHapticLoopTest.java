@@ -41,6 +41,13 @@ class AvatarExchangeHapticLoopTest {
                 loop.setMirrorX(false);
                 loop.setForceGain(1);
                 loop.start();
+                // the loop asks for real-time scheduling before its first tick (a chrt process, seconds under load):
+                // the force is read only once the loop has ticked, or it would still show the zero it started with
+                long started = System.nanoTime() + 20_000_000_000L;
+                while (loop.ticks() < 20 && loop.isRunning() && System.nanoTime() < started) {
+                    LockSupport.parkNanos(1_000_000);
+                }
+                assertTrue(loop.ticks() >= 20, () -> "the loop did not start ticking: " + loop.failure());
                 boolean[] stop = {false};
                 double[] seen = new double[3];
                 boolean[] got = {false};

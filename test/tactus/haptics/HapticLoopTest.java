@@ -584,9 +584,23 @@ class HapticLoopTest {
             loop.start();
             awaitTicks(loop, 50);
             String s = loop.scheduling();
-            assertTrue(s.equals("real-time (SCHED_FIFO 10; VM and GC threads at 9, JIT compilers at 1)")
+            assertTrue(s.equals("real-time (SCHED_DEADLINE 800 us of every 1000 us; safety threads at SCHED_FIFO 10; "
+                    + "VM and GC threads at 9, JIT compilers at 1)")
+                    || s.equals("real-time (SCHED_FIFO 10; VM and GC threads at 9, JIT compilers at 1)")
                     || s.startsWith("normal priority (real-time refused: "), s);
             assertThrows(IllegalStateException.class, () -> loop.setRealtimePriority(0));
+            assertThrows(IllegalStateException.class, () -> loop.setDeadlineScheduling(false));
+            loop.close();
+        }
+        try (Rig rig = new Rig(false)) {
+            HapticLoop loop = rig.loop(new FaultyAvatar(Integer.MAX_VALUE, 0, false));
+            loop.setRealtimePriority(10);
+            loop.setDeadlineScheduling(false);
+            loop.start();
+            awaitTicks(loop, 50);
+            String s = loop.scheduling();
+            assertTrue(s.equals("real-time (SCHED_FIFO 10; VM and GC threads at 9, JIT compilers at 1)")
+                    || s.startsWith("normal priority (real-time refused: "), s);
             loop.close();
         }
         try (Rig rig = new Rig(false)) {

@@ -9,10 +9,13 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.Test;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
+import tactus.haptics.emulator.BoardEmulator;
 
 /**
  * On Linux a thread inherits its creator's scheduling policy, so every thread that the real-time haptic loop thread
@@ -30,6 +33,9 @@ class ThreadPolicyTest {
     private static String comm(File task) throws IOException {
         return new String(Files.readAllBytes(new File(task, "comm").toPath()), StandardCharsets.UTF_8).trim();
     }
+
+    /** Linux's number for the SCHED_DEADLINE policy. */
+    private static final int SCHED_DEADLINE = 6;
 
     /** {policy, rt priority} of a thread, from /proc/self/task/TID/stat. */
     private static int[] policy(File task) throws IOException {
@@ -57,7 +63,8 @@ class ThreadPolicyTest {
             }
             int[] expected = {0, 0};
             if (realtime && name.equals("tactus-haptic-l")) {
-                expected = new int[] {1, priority};
+                expected = loop.scheduling().contains("SCHED_DEADLINE") ? new int[] {SCHED_DEADLINE, 0}
+                        : new int[] {1, priority};
                 loopThreads++;
             } else if (realtime && HapticLoop.SAFETY_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, priority};
@@ -94,7 +101,82 @@ class ThreadPolicyTest {
     @Test
     void onlyTheLoopAndTheSafepointThreadsRunAtRealTimePriority() throws IOException {
         for (HapticLoop.Mode mode : HapticLoop.Mode.values()) {
-            try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018)) {
+            for (boolean deadline : new boolean[] {true, false}) {
+                runAndCheck(mode, deadline);
+            }
+        }
+    }
+
+    /**
+     * A thread that the loop thread starts while it runs: under SCHED_FIFO it would inherit the loop's policy, under
+     * SCHED_DEADLINE its creation would fail outright without the reset-on-fork flag. Either way it must come out
+     * at normal priority, and be created at all.
+     */
+    @Test
+    void aThreadStartedByTheLoopThreadRunsAtNormalPriority() throws Exception {
+        for (boolean deadline : new boolean[] {true, false}) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            Board board = new Board(emulator.connect());
+            try {
+                Device device = new Device((byte) 3, board);
+                HaplyPreset.HAPLY_2018.configure(device);
+                device.device_set_parameters();
+                ThreadStartingAvatar avatar = new ThreadStartingAvatar();
+                HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), avatar);
+                loop.setRealtimePriority(HapticSession.REALTIME_PRIORITY);
+                loop.setDeadlineScheduling(deadline);
+                loop.start();
+                int[] p = avatar.childPolicy.get(10, TimeUnit.SECONDS);
+                String sched = loop.scheduling();
+                loop.close();
+                assertTrue(sched.startsWith("real-time") || sched.startsWith("normal"), sched);
+                assertTrue(!deadline || !sched.startsWith("real-time") || sched.contains("SCHED_DEADLINE"),
+                        "the deadline policy was asked for: " + sched);
+                assertEquals(0, p[0], sched + ": the policy of a thread the loop thread started");
+                assertEquals(0, p[1], sched + ": the real-time priority of a thread the loop thread started");
+            } finally {
+                board.close();
+            }
+        }
+    }
+
+    /** An avatar that, at the loop thread's 50th tick, starts a thread that reports its own scheduling policy. */
+    private static final class ThreadStartingAvatar implements AvatarLink {
+        final CompletableFuture<int[]> childPolicy = new CompletableFuture<>();
+        private int ticks;
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            if (++ticks == 50) {
+                try {
+                    Thread child = new Thread(() -> {
+                        try {
+                            childPolicy.complete(policy(new File("/proc/thread-self")));
+                        } catch (IOException | RuntimeException e) {
+                            childPolicy.completeExceptionally(e);
+                        }
+                    }, "policy-child");
+                    child.start();
+                } catch (Throwable e) {   // under SCHED_DEADLINE without reset-on-fork: "unable to create native thread"
+                    childPolicy.completeExceptionally(e);
+                }
+            }
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = 0;
+            out[1] = 0;
+            out[2] = 0;
+        }
+
+        @Override
+        public void step(int n) {
+        }
+    }
+
+    private static void runAndCheck(HapticLoop.Mode mode, boolean deadline) throws IOException {
+        try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018)) {
                 PhysicalModel pm = new PhysicalModel(1000);
                 Vect3D home = s.home();
                 pm.addHapticInput3D("avatar", home, 5);
@@ -103,12 +185,14 @@ class ThreadPolicyTest {
                 pm.init();
                 HapticLoop loop = s.attach(pm, "avatar");
                 loop.setMode(mode);
+                loop.setDeadlineScheduling(deadline);
                 loop.start();
                 awaitTicks(loop, 300);
                 assertTrue(mode == HapticLoop.Mode.AUDIO || Math.abs(loop.torque(1)) + Math.abs(loop.torque(2)) > 0,
                         "the spring puts torque on the motors");
                 checkEveryThread(loop, HapticSession.REALTIME_PRIORITY);
-            }
+                assertTrue(!deadline || !loop.scheduling().startsWith("real-time")
+                        || loop.scheduling().contains("SCHED_DEADLINE"), loop.scheduling());
         }
     }
 }

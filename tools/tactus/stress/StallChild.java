@@ -27,7 +27,10 @@ import tactus.haptics.PhysicalModelAvatar;
  * seconds, garbage MB/s, telemetry read period in ms (0: none), the safepoint log's path (optional). With
  * {@code -Dtactus.stress.audio=true} the model is the paper's plucked string stepped by a {@code PhyUGen} at
  * 44.1 kHz and the loop runs in AUDIO mode, as in the audio-haptic examples; {@code -Dtactus.stress.reader=false}
- * leaves the reader thread out; {@code -Dtactus.stress.verbose=true} prints every tick more than 2 ms late and
+ * leaves the reader thread out; {@code -Dtactus.stress.deadline=false} keeps the loop at SCHED_FIFO instead of
+ * SCHED_DEADLINE; {@code -Dtactus.stress.rtSpinners=true} adds one SCHED_FIFO 1 process per CPU that keeps its
+ * core busy for the rest of the run (as a long compilation does with the compilers at real-time priority), so that the
+ * kernel's fair server must step in; {@code -Dtactus.stress.verbose=true} prints every tick more than 2 ms late and
  * where the loop thread was when no tick started for 8 ms.
  */
 public final class StallChild {
@@ -137,7 +140,18 @@ public final class StallChild {
         if (audio) {
             loop.setMode(HapticLoop.Mode.AUDIO);
         }
+        if ("false".equals(System.getProperty("tactus.stress.deadline"))) {
+            loop.setDeadlineScheduling(false);
+        }
         loop.start();
+        if (Boolean.getBoolean("tactus.stress.rtSpinners")) {
+            // once the loop runs at its policy: before, its own chrt call would be starved too
+            long waitUntil = System.nanoTime() + 10_000_000_000L;
+            while (loop.ticks() < 200 && loop.isRunning() && System.nanoTime() < waitUntil) {
+                Thread.sleep(5);
+            }
+            startRealtimeSpinners(seconds);
+        }
         if (VERBOSE) {
             startDiagnoser(loop, avatar);
         }
@@ -244,6 +258,23 @@ public final class StallChild {
      * Verbose runs only: a thread at a real-time priority above the loop's that looks every millisecond, and when
      * no tick has started for 8 ms, prints where the loop thread is (its Java stack and what Linux says of it).
      */
+    /**
+     * One process per CPU, each pinned to its CPU and at SCHED_FIFO 1, that keeps its core busy until about
+     * {@code seconds} have passed: what a long compilation does with the JIT compilers at real-time priority (a
+     * native thread, never in the way of a safepoint). Normal threads (the hog, the reader) then get a core only
+     * through the kernel's fair server, 50 ms a second, which stops every SCHED_FIFO thread on that CPU while it
+     * runs. The spinners end themselves: a shell that would kill them runs at normal priority and would wait.
+     */
+    private static void startRealtimeSpinners(double seconds) throws java.io.IOException {
+        int cpus = Runtime.getRuntime().availableProcessors();
+        String spin = "end=$(( $(date +%s) + " + (long) Math.ceil(seconds) + " )); while [ $(date +%s) -lt $end ]; do "
+                + "i=0; while [ $i -lt 20000 ]; do i=$((i+1)); done; done";
+        for (int c = 0; c < cpus; c++) {
+            new ProcessBuilder("taskset", "-c", Integer.toString(c), "chrt", "-f", "1", "sh", "-c", spin)
+                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.INHERIT).start();
+        }
+    }
+
     private static void startDiagnoser(HapticLoop loop, TimedAvatar avatar) {
         startDaemon("stall-diagnoser", () -> {
             try {
