@@ -129,8 +129,9 @@ public final class HapticStallStress {
                 lateInSafepoints += Double.parseDouble(m.group(8));
                 sched = m.group(10);
                 System.out.printf(Locale.ROOT, "run %d/%d: worst tick %.2f ms late%s, %s GC pauses (max %s ms), "
-                                + "%.0f s elapsed%n", i + 1, runs, worst[i], over ? " STALL" : "", m.group(4),
-                        m.group(5), (System.nanoTime() - t0) / 1e9);
+                                + "%.0f s elapsed%s%n", i + 1, runs, worst[i], over ? " STALL" : "", m.group(4),
+                        m.group(5), (System.nanoTime() - t0) / 1e9,
+                        "null".equals(m.group(9)) ? "" : ", FAILED: " + m.group(9));
             }
         } finally {
             if (hogProcess != null) {

@@ -247,7 +247,8 @@ public final class StallChild {
         }
         System.out.printf(Locale.ROOT, "RESULT ticks=%d worstLateMs=%.3f over20=%d gcPauses=%d gcMaxMs=%.0f "
                         + "lateMs=%.3f lateInGcMs=%.3f lateInSafepointsMs=%.3f failure=%s sched=%s%n", n, worst, over20,
-                pauses.gcCount(), pauses.gcMaxMs(), lateSum, lateInGc, lateInSafepoints, loop.failure(),
+                pauses.gcCount(), pauses.gcMaxMs(), lateSum, lateInGc, lateInSafepoints,
+                n < 2 ? "the loop ticked " + n + " times in " + seconds + " s" : loop.failure(),
                 loop.scheduling());
         System.out.flush();
         session.close();
