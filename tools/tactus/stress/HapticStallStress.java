@@ -38,7 +38,11 @@ import java.util.regex.Pattern;
 public final class HapticStallStress {
     private static final Pattern RESULT = Pattern.compile(
             "RESULT ticks=(\\d+) worstLateMs=([\\d.]+) over20=(\\d+) gcPauses=(\\d+) gcMaxMs=([\\d.]+) "
-                    + "lateMs=([\\d.]+) lateInGcMs=([\\d.]+) lateInSafepointsMs=([\\d.]+) failure=(.*) sched=(.*)");
+                    + "lateMs=([\\d.]+) lateInGcMs=([\\d.]+) lateInSafepointsMs=([\\d.]+) stealMs=(\\d+) failure=(.*) "
+                    + "sched=(.*)");
+
+    /** The group of RESULT that holds the steal time; failure and scheduling follow it. */
+    private static final int STEAL = 9;
 
     private HapticStallStress() {
     }
@@ -92,6 +96,8 @@ public final class HapticStallStress {
         double lateInGc = 0;
         double lateInSafepoints = 0;
         String sched = "";
+        long stolenInStalls = 0;
+        int stalledWithSteal = 0;
         long t0 = System.nanoTime();
         try {
             for (int i = 0; i < runs; i++) {
@@ -118,8 +124,12 @@ public final class HapticStallStress {
                 boolean over = Integer.parseInt(m.group(3)) > 0 || worst[i] > 20;
                 if (over) {
                     stalled++;
+                    stolenInStalls += Long.parseLong(m.group(STEAL));
+                    if (Long.parseLong(m.group(STEAL)) > 0) {
+                        stalledWithSteal++;
+                    }
                 }
-                if (!"null".equals(m.group(9))) {
+                if (!"null".equals(m.group(STEAL + 1))) {
                     failed++;
                 }
                 gcPauses += Integer.parseInt(m.group(4));
@@ -127,11 +137,11 @@ public final class HapticStallStress {
                 late += Double.parseDouble(m.group(6));
                 lateInGc += Double.parseDouble(m.group(7));
                 lateInSafepoints += Double.parseDouble(m.group(8));
-                sched = m.group(10);
+                sched = m.group(STEAL + 2);
                 System.out.printf(Locale.ROOT, "run %d/%d: worst tick %.2f ms late%s, %s GC pauses (max %s ms), "
-                                + "%.0f s elapsed%s%n", i + 1, runs, worst[i], over ? " STALL" : "", m.group(4),
-                        m.group(5), (System.nanoTime() - t0) / 1e9,
-                        "null".equals(m.group(9)) ? "" : ", FAILED: " + m.group(9));
+                                + "%s ms stolen by the hypervisor, %.0f s elapsed%s%n", i + 1, runs, worst[i],
+                        over ? " STALL" : "", m.group(4), m.group(5), m.group(STEAL), (System.nanoTime() - t0) / 1e9,
+                        "null".equals(m.group(STEAL + 1)) ? "" : ", FAILED: " + m.group(STEAL + 1));
             }
         } finally {
             if (hogProcess != null) {
@@ -145,11 +155,13 @@ public final class HapticStallStress {
                         + "runs with a tick more than 20 ms late: %d of %d; failed runs: %d%n"
                         + "worst lateness per run: p50 %.2f ms, p90 %.2f ms, p99 %.2f ms, max %.2f ms%n"
                         + "lateness above one period, all runs: %.1f ms, of which %.1f ms (%.0f %%) inside GC pauses "
-                        + "(%d pauses, longest %.1f ms) and %.1f ms (%.0f %%) inside any safepoint%n",
+                        + "(%d pauses, longest %.1f ms) and %.1f ms (%.0f %%) inside any safepoint%n"
+                        + "runs with a stall during which the hypervisor took CPU time from this machine: %d of %d "
+                        + "(%d ms in all, counted in 10 ms jiffies of /proc/stat's steal)%n",
                 setting, sched, stalled, runs, failed, q(sorted, 0.5), q(sorted, 0.9), q(sorted, 0.99),
                 sorted.length == 0 ? 0 : sorted[sorted.length - 1], late, lateInGc,
                 late > 0 ? 100 * lateInGc / late : 0, gcPauses, gcMax, lateInSafepoints,
-                late > 0 ? 100 * lateInSafepoints / late : 0);
+                late > 0 ? 100 * lateInSafepoints / late : 0, stalledWithSteal, stalled, stolenInStalls);
         System.out.print(summary);
         File f = new File(out);
         if (f.getParentFile() != null) {

@@ -27,7 +27,9 @@ import tactus.haptics.PhysicalModelAvatar;
  * seconds, garbage MB/s, telemetry read period in ms (0: none), the safepoint log's path (optional). With
  * {@code -Dtactus.stress.audio=true} the model is the paper's plucked string stepped by a {@code PhyUGen} at
  * 44.1 kHz and the loop runs in AUDIO mode, as in the audio-haptic examples; {@code -Dtactus.stress.reader=false}
- * leaves the reader thread out; {@code -Dtactus.stress.deadline=false} keeps the loop at SCHED_FIFO instead of
+ * leaves the reader thread out; {@code -Dtactus.stress.heapWarmup=false} turns the loop's heap warm-up off;
+ * {@code -Dtactus.stress.warmupMB=N} makes N MB of garbage before the loop starts;
+ * {@code -Dtactus.stress.deadline=false} keeps the loop at SCHED_FIFO instead of
  * SCHED_DEADLINE; {@code -Dtactus.stress.rtSpinners=true} adds one SCHED_FIFO 1 process per CPU that keeps its
  * core busy for the rest of the run (as a long compilation does with the compilers at real-time priority), so that the
  * kernel's fair server must step in; {@code -Dtactus.stress.verbose=true} prints every tick more than 2 ms late and
@@ -112,6 +114,7 @@ public final class StallChild {
         int telemetryMs = args.length > 2 ? Integer.parseInt(args[2]) : 0;
         String safepointLog = args.length > 3 ? args[3] : null;
         boolean audio = Boolean.getBoolean("tactus.stress.audio");
+        long stealAtStart = stealJiffies();
         HapticSession session = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018);
         PhysicalModel pm;
         TimedAvatar avatar;
@@ -139,6 +142,13 @@ public final class StallChild {
         HapticLoop loop = session.attach(avatar);
         if (audio) {
             loop.setMode(HapticLoop.Mode.AUDIO);
+        }
+        long warmupMB = Long.getLong("tactus.stress.warmupMB", 0);
+        for (long b = 0; b < warmupMB << 20; b += 1024) {
+            sink = new byte[1024];   // the collections that this garbage causes happen before the loop starts
+        }
+        if ("false".equals(System.getProperty("tactus.stress.heapWarmup"))) {
+            loop.setHeapWarmup(false);
         }
         if ("false".equals(System.getProperty("tactus.stress.deadline"))) {
             loop.setDeadlineScheduling(false);
@@ -246,8 +256,9 @@ public final class StallChild {
             }
         }
         System.out.printf(Locale.ROOT, "RESULT ticks=%d worstLateMs=%.3f over20=%d gcPauses=%d gcMaxMs=%.0f "
-                        + "lateMs=%.3f lateInGcMs=%.3f lateInSafepointsMs=%.3f failure=%s sched=%s%n", n, worst, over20,
+                        + "lateMs=%.3f lateInGcMs=%.3f lateInSafepointsMs=%.3f stealMs=%d failure=%s sched=%s%n", n, worst, over20,
                 pauses.gcCount(), pauses.gcMaxMs(), lateSum, lateInGc, lateInSafepoints,
+                (stealJiffies() - stealAtStart) * 10,
                 n < 2 ? "the loop ticked " + n + " times in " + seconds + " s" : loop.failure(),
                 loop.scheduling());
         System.out.flush();
@@ -273,6 +284,20 @@ public final class StallChild {
         for (int c = 0; c < cpus; c++) {
             new ProcessBuilder("taskset", "-c", Integer.toString(c), "chrt", "-f", "1", "sh", "-c", spin)
                     .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.INHERIT).start();
+        }
+    }
+
+    /**
+     * The time the hypervisor gave this virtual machine's CPUs to others ("steal", the eighth number of
+     * /proc/stat's cpu line), in jiffies of 10 ms; 0 where it cannot be read.
+     */
+    private static long stealJiffies() {
+        try {
+            String[] f = java.nio.file.Files.readAllLines(java.nio.file.Paths.get("/proc/stat")).get(0).trim()
+                    .split("\\s+");
+            return f.length > 8 ? Long.parseLong(f[8]) : 0;
+        } catch (java.io.IOException | RuntimeException e) {
+            return 0;
         }
     }
 
