@@ -93,6 +93,8 @@ public class PhyUGen extends UGen {
     /** The binding whose accumulator the audio thread has emptied, and the one it lost. */
     private AvatarBinding avatarStarted;
     private AvatarBinding avatarGone;
+    /** The thread that computed the last sample: a new one is told to {@link AudioScheduling} (once per switch). */
+    private Thread computingThread;
 
     /** An avatar attached with {@link #attachAvatar(String, AvatarExchange)}: its name, handle and exchange. */
     private static final class AvatarBinding {
@@ -411,10 +413,20 @@ public class PhyUGen extends UGen {
     @Override
     protected void uGenerate(float[] channels) {
         try {
+            noteComputingThread();
             generate(channels);
         } catch (Throwable t) { // nothing may reach Minim's output loop
             faults.unexpected(t);
             silence(channels);
+        }
+    }
+
+    /** Tells {@link AudioScheduling} of a new computing thread: a field read per sample otherwise. */
+    private void noteComputingThread() {
+        Thread t = Thread.currentThread();
+        if (t != computingThread) {
+            computingThread = t;
+            AudioScheduling.computingOn(t);
         }
     }
 
@@ -670,6 +682,7 @@ public class PhyUGen extends UGen {
      */
     protected final void stepModel() {
         try {
+            noteComputingThread();
             SteppedModel m = steppedModel();
             countTowardsRecheck(m);
             java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
