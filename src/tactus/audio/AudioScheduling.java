@@ -2,8 +2,7 @@ package tactus.audio;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.locks.LockSupport;
+import java.util.WeakHashMap;
 import java.util.regex.Pattern;
 import tactus.scheduling.RealtimeThreads;
 
@@ -14,8 +13,8 @@ import tactus.scheduling.RealtimeThreads;
  * SCHED_FIFO at {@link #realtimePriority()} (default {@value #DEFAULT_PRIORITY}), and the JVM's VM and collector
  * pause threads are raised to at least one above it and its JIT compilers to at least 1 (as the haptic loop does,
  * docs/haptics.md "Why the loop was late"), so that the sketch's own threads and other programs on a busy machine no
- * longer delay the output into a gap (docs/audio.md, "Audio under load"). The request is made by a helper thread of
- * its own ("Tactus audio scheduling"): the audio thread only hands its id over, once, and never waits. A thread that
+ * longer delay the output into a gap (docs/audio.md, "Audio under load"). The request is made by the
+ * {@link AudioHelper} thread: the audio thread only hands its id over, once, and never waits. A thread that
  * calls a PhyUGen's {@code uGenerate} itself (an {@link OfflineRenderer}, a sketch) is left alone.
  *
  * <p>Order with the haptic loop: the haptic loop (SCHED_FIFO 50 in a {@code HapticSession}) goes first, then the
@@ -39,19 +38,8 @@ public final class AudioScheduling {
     private static volatile int priority = initialPriority();
     private static volatile String status = "no audio output thread has played a PhyUGen yet";
     private static volatile Thread scheduled;
-    private static final ConcurrentLinkedQueue<Request> QUEUE = new ConcurrentLinkedQueue<>();
-    private static final Thread HELPER = start();
-
-    /** An output thread that played a PhyUGen for the first time, with its Linux id (null if unknown). */
-    private static final class Request {
-        final Thread thread;
-        final String threadId;
-
-        Request(Thread thread, String threadId) {
-            this.thread = thread;
-            this.threadId = threadId;
-        }
-    }
+    /** The output threads already asked for (touched by the helper thread only). */
+    private static final Map<Thread, Boolean> ASKED = new WeakHashMap<>();
 
     private AudioScheduling() {
     }
@@ -72,22 +60,6 @@ public final class AudioScheduling {
         System.err.println("Tactus audio: -D" + PROPERTY + "=" + p + " is not 0 (off) or a priority 1..99; using "
                 + DEFAULT_PRIORITY);
         return DEFAULT_PRIORITY;
-    }
-
-    private static Thread start() {
-        // started from a PhyUGen's constructor (the sketch's thread, at normal priority), so that this thread and
-        // the JDK's process reaper it starts do not inherit a real-time policy
-        Thread t = new Thread(AudioScheduling::run, "Tactus audio scheduling");
-        t.setDaemon(true);
-        t.start();
-        return t;
-    }
-
-    /** Makes sure the helper thread runs (it starts with the class); called outside the audio path. */
-    static void ensureStarted() {
-        if (!HELPER.isAlive()) {
-            throw new IllegalStateException("AudioScheduling: the helper thread is not running");
-        }
     }
 
     /**
@@ -136,51 +108,44 @@ public final class AudioScheduling {
         if (!isOutputThread(t) || priority == 0) {
             return;
         }
-        QUEUE.offer(new Request(t, RealtimeThreads.currentThreadId()));
-        LockSupport.unpark(HELPER);
+        String threadId = RealtimeThreads.currentThreadId();
+        AudioHelper.post(() -> ask(t, threadId));
     }
 
-    private static void run() {
-        java.util.Map<Thread, Boolean> done = new java.util.WeakHashMap<>();
-        while (true) {
-            Request r = QUEUE.poll();
-            if (r == null) {
-                LockSupport.park(AudioScheduling.class);
-                continue;
-            }
-            if (done.put(r.thread, Boolean.TRUE) != null || !r.thread.isAlive()) {
-                continue;
-            }
-            try {
-                apply(r);
-            } catch (RuntimeException e) {
-                status = "normal priority (real-time request failed: " + e + ")";
-            }
+    /** On the helper thread: asks once per output thread. */
+    private static void ask(Thread t, String threadId) {
+        if (ASKED.put(t, Boolean.TRUE) != null || !t.isAlive()) {
+            return;
+        }
+        try {
+            apply(t, threadId);
+        } catch (RuntimeException e) {
+            status = "normal priority (real-time request failed: " + e + ")";
         }
     }
 
-    private static void apply(Request r) {
+    private static void apply(Thread thread, String threadId) {
         int p = priority;
         if (p == 0) {
             status = "normal priority (real-time not requested)";
             return;
         }
         String why;
-        if (r.threadId == null) {
+        if (threadId == null) {
             why = "real-time scheduling is only requested on Linux";
         } else {
             Map<Pattern, Integer> others = new LinkedHashMap<>();
             others.put(RealtimeThreads.SAFEPOINT_THREADS, Math.min(99, p + 1));
             others.put(RealtimeThreads.COMPILER_THREADS, 1);
-            why = RealtimeThreads.applyToThread(r.threadId, others, p);
+            why = RealtimeThreads.applyToThread(threadId, others, p);
         }
         if (why == null) {
-            scheduled = r.thread;
-            status = "real-time (SCHED_FIFO " + p + " for thread \"" + r.thread.getName() + "\", VM and GC threads at "
+            scheduled = thread;
+            status = "real-time (SCHED_FIFO " + p + " for thread \"" + thread.getName() + "\", VM and GC threads at "
                     + Math.min(99, p + 1) + " or above, JIT compilers at 1 or above)";
         } else {
             status = "normal priority (real-time refused: " + why + ")";
-            System.err.println("Tactus audio: the output thread \"" + r.thread.getName() + "\" runs at normal "
+            System.err.println("Tactus audio: the output thread \"" + thread.getName() + "\" runs at normal "
                     + "priority (real-time refused: " + why + "). On a busy machine the sound may have gaps; see "
                     + "docs/audio.md, \"Audio under load\".");
         }

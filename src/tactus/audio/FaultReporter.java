@@ -28,7 +28,7 @@ final class FaultReporter {
 
     /** Makes sure the printing thread runs (it starts with the class); called outside the audio path. */
     static void ensureStarted() {
-        AudioScheduling.ensureStarted();   // the audio side's other helper thread, started here for the same reason
+        AudioHelper.ensureStarted();   // the audio side's other helper thread, started here for the same reason
         if (!THREAD.isAlive()) {
             throw new IllegalStateException("FaultReporter: the notice thread is not running");
         }
