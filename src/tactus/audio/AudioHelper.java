@@ -5,8 +5,9 @@ import java.util.concurrent.locks.LockSupport;
 
 /**
  * The audio side's helper thread ("Tactus audio helper", a daemon at normal priority): an audio thread hands it a
- * job that may wait or take time (asking Linux for real-time scheduling, {@link AudioScheduling}; putting a model back
- * in realtime stepping, {@link PhysicalModelStepper}) through a lock-free queue and an unpark, and never waits for it.
+ * job that may wait or take time (printing a fault notice, {@link FaultReporter}; asking Linux for real-time
+ * scheduling, {@link AudioScheduling}; putting a model back in realtime stepping, {@link PhysicalModelStepper})
+ * through a lock-free queue and an unpark, and never waits for it.
  * Started with the first PhyUGen, from the thread that creates it, so that neither this thread nor the threads it
  * starts inherit a real-time policy.
  */

@@ -43,7 +43,7 @@ import tactus.PhysicalModel;
  * diverged model, or one whose steps throw, makes the whole output silent ({@link #isSilenced()}); a listening
  * point whose element left the model outputs 0 while the others keep sounding ({@link ListeningPoint#isSilent()});
  * an avatar that left the model gets zero force ({@link #isAvatarLost()}). Each is said once on standard error
- * (from a thread of its own, not the audio thread), with how to recover, and undone as soon as the model is fixed
+ * (from a helper thread, not the audio thread), with how to recover, and undone as soon as the model is fixed
  * (the divergence cleared, the element added again under its name). {@link #getLastError()} keeps the cause. A
  * subclass's own {@code uGenerate} runs its own code: {@link #stepModel()} and {@link #mix()} are guarded the same
  * way, but an exception its own code throws (including a {@code DivergenceException} from a direct

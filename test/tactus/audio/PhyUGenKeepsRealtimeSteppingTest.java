@@ -47,6 +47,16 @@ class PhyUGenKeepsRealtimeSteppingTest {
         return pm;
     }
 
+    /** Plays {@code pm} through a PhyUGen on a silent output until it has stepped 0.1 s; the caller closes it. */
+    private static AudioOutput play(PhysicalModel pm) throws InterruptedException {
+        PhyUGen ugen = new PhyUGen(pm);
+        ugen.listenToMass(StringModel.mass(3), SteppedModel.Y, 300, 0);
+        AudioOutput out = LineOut.silent(Minim.MONO, 256, 44100f, null);
+        ugen.patch(out);
+        await(() -> pm.getStepCount() > 4410, () -> "the output plays: " + state(pm));
+        return out;
+    }
+
     private static void checkOwnedByTheOutputAgain(PhysicalModel pm) throws InterruptedException {
         await(() -> pm.isRealtimeStepping() && pm.getRealtimeOwner() instanceof SilentAudioOut.OutputThread,
                 () -> "the output thread steps the model in realtime again: " + state(pm));
@@ -59,12 +69,8 @@ class PhyUGenKeepsRealtimeSteppingTest {
     @Test
     void endingTheModeFromAnotherThreadWhileItPlaysIsUndone() throws Exception {
         PhysicalModel pm = string();
-        PhyUGen ugen = new PhyUGen(pm);
-        ugen.listenToMass(StringModel.mass(3), SteppedModel.Y, 300, 0);
-        AudioOutput out = LineOut.silent(Minim.MONO, 256, 44100f, null);
+        AudioOutput out = play(pm);
         try {
-            ugen.patch(out);
-            await(() -> pm.getStepCount() > 4410, () -> "the output plays: " + state(pm));
             for (int round = 0; round < 3; round++) {
                 pm.endRealtimeStepping();
                 checkOwnedByTheOutputAgain(pm);
@@ -83,12 +89,8 @@ class PhyUGenKeepsRealtimeSteppingTest {
             told.incrementAndGet();
             pm.endRealtimeStepping();   // from the stepping call on the audio thread
         });
-        PhyUGen ugen = new PhyUGen(pm);
-        ugen.listenToMass(StringModel.mass(3), SteppedModel.Y, 300, 0);
-        AudioOutput out = LineOut.silent(Minim.MONO, 256, 44100f, null);
+        AudioOutput out = play(pm);
         try {
-            ugen.patch(out);
-            await(() -> pm.getStepCount() > 4410, () -> "the output plays: " + state(pm));
             pm.setLinkStiffness("s3", 50);   // far over the limit: diverges within a few hundred steps
             await(() -> told.get() > 0, () -> "the model diverged and the listener ended the mode: " + state(pm));
             pm.setLinkStiffness("s3", StringModel.K);
