@@ -15,10 +15,10 @@ import java.util.regex.Pattern;
 
 /**
  * Asks Linux to run threads of this JVM under the real-time policy SCHED_FIFO, through the {@code chrt} program of
- * util-linux (Java has no call for it). The haptic loop uses it for its own thread, its safety threads and the JVM's
- * threads that a Java thread can end up waiting for (the VM thread and the collector's pause workers, the JIT
- * compilers; see docs/haptics.md, "Why the loop was late"); the audio side uses it for the output thread that plays
- * a {@code PhyUGen} (docs/audio.md, "Audio under load"). It works where the user may raise priorities (root,
+ * util-linux (Java has no call for it), for a thread and the JVM's threads that a Java thread can end up waiting for
+ * (the VM thread and the collector's pause workers, the JIT compilers; see docs/haptics.md, "Why the loop was
+ * late"). The audio side uses it for the output thread that plays a {@code PhyUGen} (docs/audio.md, "Audio under
+ * load"); the haptic loop still uses its own copy in {@code tactus.haptics}, which is meant to move here. It works where the user may raise priorities (root,
  * {@code CAP_SYS_NICE}, or an {@code rtprio} limit in {@code /etc/security/limits.conf}, as audio users often have);
  * elsewhere, and on other systems, it changes nothing and says why. Every call starts one short shell process: call
  * it once per thread, never from a thread that must not wait (an audio or haptic tick).
