@@ -121,7 +121,10 @@ public final class RealtimeThreads {
                 int[] p = policyOf(tid);
                 boolean realtime = p != null && (p[0] == 1 || p[0] == 2);
                 if (!tid.equals(threadId) && !(realtime && p[1] >= e.getValue())) {
-                    script.append("chrt -f -p ").append(e.getValue()).append(' ').append(tid).append(" 2>/dev/null; ");
+                    // looked at again when the shell runs: another request (a haptic loop's) may have raised it since
+                    script.append("p=$(chrt -p ").append(tid).append(" 2>/dev/null | sed -n 's/.*priority: //p'); ")
+                            .append("[ \"${p:-0}\" -lt ").append(e.getValue()).append(" ] && chrt -f -p ")
+                            .append(e.getValue()).append(' ').append(tid).append(" 2>/dev/null; ");
                 }
             }
         }
