@@ -5,6 +5,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Pattern;
+import tactus.scheduling.RealtimeThreads;
 
 /**
  * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,
@@ -634,14 +635,14 @@ public final class HapticLoop implements AutoCloseable {
             int below = Math.max(1, realtimePriority - 1);
             Map<Pattern, Integer> others = new LinkedHashMap<>();
             if (realtimeJvmThreads) {
-                others.put(RealtimeScheduling.SAFEPOINT_THREADS, below);
-                others.put(RealtimeScheduling.COMPILER_THREADS, 1);
+                others.put(RealtimeThreads.SAFEPOINT_THREADS, below);
+                others.put(RealtimeThreads.COMPILER_THREADS, 1);
             }
             others.put(SAFETY_THREADS, realtimePriority);
             // the watchdog was started just after this thread and names itself as it starts: wait until Linux
             // shows its name, or the chrt run would miss it and leave it at normal priority
-            RealtimeScheduling.awaitThreadNamed(LOOP_WATCHDOG_NAME, WATCHDOG_NAME_WAIT_MS);
-            RealtimeScheduling.Grant g = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority,
+            RealtimeThreads.awaitThreadNamed(LOOP_WATCHDOG_NAME, WATCHDOG_NAME_WAIT_MS);
+            RealtimeThreads.Grant g = RealtimeThreads.applyWithCurrentThread(others, realtimePriority,
                     deadlineScheduling ? period * DEADLINE_SHARE_PERCENT / 100 : 0, period);
             String jvm = realtimeJvmThreads ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "";
             scheduling = !g.granted() ? "normal priority (real-time refused: " + g.why + ")"
