@@ -6,7 +6,9 @@ package tactus.haptics.emulator;
  * on the joints and at the handle, integrated implicitly; Coulomb friction with a static threshold on each joint
  * (Karnopp's model: a joint at rest, |dq| below 1e-4 rad/s, stays at rest while the other torques on it stay below
  * the threshold); motor torques that act {@link PlantParameters#actuationDelay()} after they are commanded; an
- * external task-space force (the hand). The handle mass's velocity-product term m J^T (dJ/dt) dq is included, from
+ * external task-space force (the hand). Velocities are integrated implicitly in the damping, positions by the
+ * trapezoidal rule (so a torque held over a tick moves the handle as the zero-order hold of the theory says, with
+ * no half-substep lag). The handle mass's velocity-product term m J^T (dJ/dt) dq is included, from
  * the change of J over the last step. Allocation-free after construction; not thread-safe (its owner locks).
  *
  * <p>Simplifications (see docs/haptics-stability.md): rigid links and transmission, no motor electrical dynamics
@@ -252,8 +254,8 @@ public final class DevicePlant {
                     && Math.abs(other[r]) <= p.staticTorque()) {
                 v = 0;
             }
+            q[r] += h * 0.5 * (qd[r] + v);   // trapezoidal: exact for a constant acceleration, no half-step bias
             qd[r] = v;
-            q[r] += h * v;
         }
         if (!kin.forward(q, x, j)) {
             System.arraycopy(qSaved, 0, q, 0, n);   // the linkage reaches the end of its travel
