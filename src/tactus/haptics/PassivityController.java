@@ -16,8 +16,12 @@ package tactus.haptics;
  * energy created before. One thread (the haptic loop's) calls everything here; nothing allocates.
  */
 final class PassivityController {
-    /** The default damping limit, N s/m: chosen on the sampled plant (docs/haptics-stability.md, "Passivity control"). */
-    static final double DEFAULT_DAMPING_LIMIT = 50;
+    /**
+     * The default damping limit, N s/m: measured on the emulated 2DIY (0.019 kg along the wall, one tick of delay),
+     * where it lies near m / (T (d + 1/2)); a larger limit made the delayed damper itself shake the handle
+     * (docs/haptics-stability.md, "Passivity control").
+     */
+    static final double DEFAULT_DAMPING_LIMIT = 10;
 
     private double dampingLimit = DEFAULT_DAMPING_LIMIT;
     private double account;     // J, energy into the model through the port, as the controller counts it
