@@ -10,8 +10,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * The passivity observer, the time-domain passivity controller and the virtual coupling, on a sampled mass-damper
- * plant with a zero-order hold, in simulated time (deterministic). Plant: 0.05 kg handle with 0.5 N s/m, at 1 kHz; the
+ * The passivity observer, the time-domain passivity controller and the virtual coupling, on one axis of the emulator's
+ * {@link tactus.haptics.emulator.DevicePlant} driven through a zero-order hold, in simulated time (deterministic). Plant: 0.05 kg handle with 0.5 N s/m, at 1 kHz; the
  * hand adds 0.1 kg, a 300 N/m grip and 1 N s/m. Without control the sampled wall is stable only below about
  * 2 b / T (b the total damping): 3000 N/m with the hand, 1000 N/m for the handle alone (Colgate &amp; Schenkel).
  */
@@ -70,8 +70,9 @@ class PassivityControlTest {
             }
             double work = p.workOnHandle;
             assertTrue(Math.abs(work) > 1e-5, "the exchange is not trivial: " + work);
-            // the observer lags the plant by the last interval: compare before the next force acts
-            assertEquals(-work, rig.port.observer().netEnergy(), 1e-3 * Math.abs(work) + lastStep(rig), "delay " + delay);
+            // the observer lags the plant by the last interval, and the plant's delayed torque may start a substep
+            // (1/200 of a tick) late: within 1 %
+            assertEquals(-work, rig.port.observer().netEnergy(), 1e-2 * Math.abs(work) + lastStep(rig), "delay " + delay);
         }
     }
 

@@ -1,23 +1,32 @@
 package tactus.haptics;
 
+import tactus.haptics.emulator.CartesianPlantKinematics;
+import tactus.haptics.emulator.DevicePlant;
+import tactus.haptics.emulator.PlantParameters;
+
 /**
- * Test fixture: a one-axis device as a sampled-data plant. A handle of mass m with viscous damping b and an optional
- * Coulomb friction (a static threshold: a handle at rest moves only when the other forces exceed it), optionally held
- * by a hand (a spring-damper to a scripted intended position), driven by a force held constant between ticks (zero-
- * order hold) that takes effect d ticks after it is sent, simulated with many substeps per tick. It integrates the
- * work the device force does on the handle exactly, as the reference for the observer. Deterministic, simulated time.
+ * Test fixture: one axis of the emulator's {@link DevicePlant} (a prismatic joint: mass m, viscous damping b, optional
+ * Coulomb friction with its static threshold) driven through a zero-order hold, the force acting d ticks after it is
+ * sent, optionally held by a hand (a spring-damper to a scripted intended position; the hand's mass is part of m).
+ * Advances 200 plant substeps per tick and integrates the work the device force does on the handle exactly, as the
+ * reference for the observer. Deterministic, simulated time.
  */
 final class SampledPlant {
-    final double mass;
-    final double damping;
+    private static final int SUBSTEPS = 200;
     final double period;
-    private final int substeps;
-    private final double[] queue;   // forces waiting for their delay, N
-    private int head;
+    private final int delay;
+    private final double mass;
+    private final double damping;
     private double coulomb;
+    private DevicePlant plant;
     private double handStiffness;
     private double handDamping;
     private double intended = Double.NaN;   // NaN: no hand
+    private final double[] command = new double[1];
+    private final double[] hand = new double[1];
+    private double startX;
+    private double startV;
+    /** Handle position (m) and velocity (m/s); set x and v before the first tick for the initial state. */
     double x;
     double v;
     /** Work (J) the device force has done on the handle: energy the device gave to the hand and handle. */
@@ -27,8 +36,7 @@ final class SampledPlant {
         this.mass = mass;
         this.damping = damping;
         this.period = period;
-        this.substeps = 200;
-        this.queue = new double[delayTicks + 1];
+        this.delay = delayTicks;
     }
 
     SampledPlant coulomb(double newtons) {
@@ -47,35 +55,46 @@ final class SampledPlant {
         intended = position;
     }
 
-    /** Sends the force (N) computed this tick; it acts d ticks from now, for one tick. */
-    void send(double force) {
-        queue[head] = force;
+    private DevicePlant plant() {
+        if (plant == null) {
+            PlantParameters p = PlantParameters.cartesian3Dof().withoutFriction().withJointInertia(mass)
+                    .withJointDamping(damping).withFriction(coulomb, coulomb).withSubstep(period / SUBSTEPS)
+                    .withActuationDelay(delay * period);
+            plant = new DevicePlant(p, new CartesianPlantKinematics(1), new double[] {x});
+            startX = x;
+            startV = v;
+        }
+        return plant;
     }
 
-    /** Advances one tick under the force sent d ticks ago. */
+    /** Sends the force (N) computed this tick; it acts d ticks from now, for one tick. */
+    void send(double force) {
+        command[0] = force;
+        plant().commandTorques(command);
+    }
+
+    /** Advances one tick. */
     void advance() {
-        int acting = (head + 1) % queue.length;   // the oldest force in the queue (this tick's when d = 0)
-        double f = queue[acting];
-        head = acting;
-        double h = period / substeps;
-        for (int i = 0; i < substeps; i++) {
-            double hand = Double.isNaN(intended) ? 0 : handStiffness * (intended - x) - handDamping * v;
-            double push = f + hand;
-            double eff = mass + 0;   // the hand's mass is part of m when it holds the handle
-            double vNew;
-            if (v == 0 && Math.abs(push) <= coulomb) {
-                vNew = 0;   // stuck: the threshold holds it
+        DevicePlant p = plant();
+        double h = period / SUBSTEPS;
+        for (int i = 0; i < SUBSTEPS; i++) {
+            double before = p.q(0);
+            double vel = p.qd(0);
+            if (startV != 0) {   // the initial velocity: one push of m v0 over the first substep
+                hand[0] = mass * startV / h;
+                startV = 0;
             } else {
-                double fr = v != 0 ? -coulomb * Math.signum(v) : -coulomb * Math.signum(push);
-                vNew = (eff * v + h * (push + fr)) / (eff + h * damping);   // damping implicit
-                if (coulomb > 0 && v != 0 && Math.signum(vNew) != Math.signum(v)) {
-                    vNew = 0;   // friction stops it, never reverses it
-                }
+                hand[0] = Double.isNaN(intended) ? 0 : handStiffness * (intended - before) - handDamping * vel;
             }
-            double xNew = x + h * vNew;
-            workOnHandle += f * (xNew - x);
-            x = xNew;
-            v = vNew;
+            p.step(h, hand, 0);
+            workOnHandle += p.motorTorque(0) * (p.q(0) - before);
         }
+        x = p.q(0);
+        v = p.qd(0);
+    }
+
+    /** The handle's displacement since the first tick, m. */
+    double travelled() {
+        return x - startX;
     }
 }
