@@ -94,7 +94,7 @@ class SampledWallStabilityTest {
         double[][] points = {{5e-3, 0.001, 0}, {5e-3, 0.0005, 0.2}, {2e-3, 0.002, 0}};
         for (double[] pt : points) {
             WallRig.Config c = linearSpring(pt[0], pt[1], pt[2]);
-            EffectiveAxis ax = new EffectiveAxis(c.preset, c.plant);
+            EffectiveAxis ax = EffectiveAxis.atEquilibrium(c);
             assertEquals(0, ax.coupling, 1e-9, "the start pose is symmetric");
             double theory = SampledWallTheory.stiffnessLimit(ax.mass, ax.damping, c.period, 1, c.damping);
             double sim = EmulatorBoundary.find(c, 0.85 * theory, 1.2 * theory, 0.01);
@@ -110,7 +110,7 @@ class SampledWallStabilityTest {
     @Test
     void aRunDependsOnlyOnSimulatedTimeNotOnTheLoopThreadsWallClock() {
         WallRig.Config c = linearSpring(5e-3, 0.001, 0.1);
-        EffectiveAxis ax = new EffectiveAxis(c.preset, c.plant);
+        EffectiveAxis ax = EffectiveAxis.atEquilibrium(c);
         c.stiffness = 1.1 * SampledWallTheory.stiffnessLimit(ax.mass, ax.damping, c.period, 1, c.damping);
         c.ticks = 600;
         c.plant = PlantParameters.twoDiy();   // friction and the preset's encoders: every nonlinearity in play

@@ -5,7 +5,7 @@ import tactus.haptics.emulator.PantographPlantKinematics;
 import tactus.haptics.emulator.PlantParameters;
 
 /**
- * The 1-D device the theory sees along the pantograph's y axis at the rig's start pose: the task-space mass and
+ * The 1-D device the theory sees along the pantograph's y axis at a pose on its symmetry line x = d/2: the task-space mass and
  * damping matrices M = I_j (J J^T)^-1 + m 1 and B = b_j (J J^T)^-1 + b_t 1 (J the Jacobian dx/dq), read on their
  * yy entries. At the symmetric pose x = d/2 both matrices are diagonal, so motion along y does not couple to x.
  */
@@ -17,11 +17,16 @@ public final class EffectiveAxis {
     /** The largest off-diagonal entry of (J J^T)^-1 relative to its diagonal (0 at a symmetric pose). */
     public final double coupling;
 
-    /** The axis of this plant on this preset's pantograph at (d/2, {@link WallRig#START_Y}). */
-    public EffectiveAxis(HaplyPreset preset, PlantParameters p) {
+    /** The axis of a configuration's plant at its wall's equilibrium (the pose the oscillation is about). */
+    public static EffectiveAxis atEquilibrium(WallRig.Config c) {
+        return new EffectiveAxis(c.preset, c.plant, WallRig.START_Y + WallRig.wallY(c));
+    }
+
+    /** The axis of this plant on this preset's pantograph at (d/2, y), y in metres. */
+    public EffectiveAxis(HaplyPreset preset, PlantParameters p, double y) {
         PantographPlantKinematics k = new PantographPlantKinematics(preset.l(), preset.bigL(), preset.d());
         double[] q = new double[2];
-        if (!k.inverse(new double[] {preset.d() / 2, WallRig.START_Y}, q)) {
+        if (!k.inverse(new double[] {preset.d() / 2, y}, q)) {
             throw new IllegalStateException("EffectiveAxis: start pose out of reach");
         }
         double[] x = new double[2];

@@ -6,6 +6,8 @@ package tactus.hapticstability;
  * one-sided wall pressed by the configured hand (residual oscillation during the hold).
  */
 public final class EmulatorBoundary {
+    /** End of the press scenario's slow press-in (seconds of simulated time), where the felt stiffness is read. */
+    public static final double PRESS_END = 0.35;
     /** The press scenario's hold window (seconds of simulated time) in which the residual is read. */
     public static final double HOLD_FROM = 0.85;
     /** End of the hold window. */
@@ -22,7 +24,7 @@ public final class EmulatorBoundary {
 
     /** Judges a run of this configuration. */
     public static Touch judge(WallRig.Config c, WallRig.Trace t) {
-        return c.wall == WallRig.Wall.SPRING ? Touch.ofSpring(c, t) : Touch.ofPress(c, t, HOLD_FROM, HOLD_TO);
+        return c.wall == WallRig.Wall.SPRING ? Touch.ofSpring(c, t) : Touch.ofPress(c, t, PRESS_END, HOLD_FROM, HOLD_TO);
     }
 
     /**
@@ -60,5 +62,22 @@ public final class EmulatorBoundary {
             }
         }
         return 0.5 * (lo + hi);
+    }
+
+    /**
+     * The largest K = multiple * unit of an increasing list that is stable with every smaller one stable too; 0 if the
+     * first is unstable, and the last multiple's K (a lower bound) if none is.
+     */
+    public static double lastStable(WallRig.Config base, double[] multiples, double unit) {
+        WallRig.Config c = base.copy();
+        double last = 0;
+        for (double m : multiples) {
+            c.stiffness = m * unit;
+            if (!stable(c)) {
+                return last;
+            }
+            last = c.stiffness;
+        }
+        return last;
     }
 }

@@ -10,13 +10,13 @@ public final class Touch {
     public final boolean stable;
     /** Peak oscillation about the local mean (20 ms moving average) after the touch, metres. */
     public final double peak;
-    /** RMS oscillation about the local mean over the last 30 % of the run (SPRING) or of the hold (PLANE), metres. */
+    /** RMS oscillation over the last third of the run about its mean (SPRING), or about the 20 ms moving average during the hold (PLANE), metres. */
     public final double residual;
     /** Energy the device delivered to the hand over the touch, J (<= 0: passive); NaN without a hand. */
     public final double energyToHand;
-    /** Force over penetration during the hold, as a fraction of K; NaN without a hand. */
+    /** Slope of the hand's force against penetration while pressing in, as a fraction of K; NaN without a hand. */
     public final double feltFraction;
-    /** RMS of the deviation over the last third over the first third (SPRING); NaN for PLANE. */
+    /** Oscillation RMS over the last third over the first third's (SPRING; 0 if the handle never moved); NaN for PLANE. */
     public final double growth;
 
     private Touch(boolean stable, double peak, double residual, double energyToHand, double feltFraction, double growth) {
@@ -29,39 +29,46 @@ public final class Touch {
     }
 
     /** Oscillation threshold for a pressed wall: residual RMS above this (metres) counts as unstable. */
-    public static final double RESIDUAL_LIMIT = 2e-5;
+    public static final double RESIDUAL_LIMIT = 5e-6;
 
     /**
-     * Reads a two-sided spring run: the deviation e = y - y_eq; unstable if its RMS over the last third exceeds the
-     * first third's, or if |e| ever exceeds 4 times the initial step.
+     * Reads a two-sided spring run: e = y - y_eq, and its oscillation about each window's mean; unstable if the
+     * oscillation's RMS over the last third exceeds the first third's, or if |e| ever exceeds 4 times the initial
+     * step. A handle that friction holds (no oscillation at all) is stable.
      */
     public static Touch ofSpring(WallRig.Config c, WallRig.Trace t) {
         double eq = WallRig.wallY(c);
         int n = t.n;
         int third = n / 3;
-        double s1 = 0;
-        double s3 = 0;
         double peak = 0;
         for (int i = 0; i < n; i++) {
-            double e = t.y[i] - eq;
-            peak = Math.max(peak, Math.abs(e));
-            if (i < third) {
-                s1 += e * e;
-            } else if (i >= n - third) {
-                s3 += e * e;
-            }
+            peak = Math.max(peak, Math.abs(t.y[i] - eq));
         }
-        double growth = Math.sqrt(s3 / s1);
+        double a1 = acRms(t.y, 0, third);
+        double a3 = acRms(t.y, n - third, n);
+        double growth = a1 < 1e-9 ? 0 : a3 / a1;
         boolean stable = t.failure == null && growth < 1 && peak < 4 * c.offset;
-        double residual = Math.sqrt(s3 / third);
-        return new Touch(stable, peak, residual, Double.NaN, Double.NaN, growth);
+        return new Touch(stable, peak, a3, Double.NaN, Double.NaN, growth);
+    }
+
+    private static double acRms(double[] v, int from, int to) {
+        double mean = 0;
+        for (int i = from; i < to; i++) {
+            mean += v[i];
+        }
+        mean /= to - from;
+        double s = 0;
+        for (int i = from; i < to; i++) {
+            s += (v[i] - mean) * (v[i] - mean);
+        }
+        return Math.sqrt(s / (to - from));
     }
 
     /**
-     * Reads a pressed one-sided wall: the hold window is given in seconds; the touch is every sample from 50 ms before
-     * the first penetration to the end of the run.
+     * Reads a pressed one-sided wall: the hand presses in until pressEnd, holds from holdFrom to holdTo (seconds); the
+     * touch is every sample from 50 ms before the first penetration to the end of the run.
      */
-    public static Touch ofPress(WallRig.Config c, WallRig.Trace t, double holdFrom, double holdTo) {
+    public static Touch ofPress(WallRig.Config c, WallRig.Trace t, double pressEnd, double holdFrom, double holdTo) {
         double wall = WallRig.wallY(c);
         int n = t.n;
         int w = Math.max(1, (int) Math.round(0.02 / (t.t[1] - t.t[0])));
@@ -80,9 +87,6 @@ public final class Touch {
         double peak = 0;
         double sr = 0;
         int nr = 0;
-        double fSum = 0;
-        double penSum = 0;
-        int nh = 0;
         double energy = 0;
         int from = firstIn < 0 ? n : Math.max(1, firstIn - (int) Math.round(0.05 / (t.t[1] - t.t[0])));
         for (int i = from; i < n; i++) {
@@ -98,13 +102,30 @@ public final class Touch {
             if (t.t[i] >= holdFrom && t.t[i] <= holdTo) {
                 sr += e * e;
                 nr++;
-                fSum += -t.fy[i];
-                penSum += wall - t.y[i];
-                nh++;
             }
         }
         double residual = nr > 0 ? Math.sqrt(sr / nr) : 0;
-        double felt = penSum > 0 ? (fSum / penSum) / c.stiffness : Double.NaN;
+        // felt stiffness: the slope of the hand's push against the penetration while it presses in slowly (a
+        // least-squares line, so that a constant sliding friction and the hand's damping at a steady speed drop out),
+        // from the first contact to the end of the press
+        double sp = 0;
+        double sf = 0;
+        double spp = 0;
+        double spf = 0;
+        int np = 0;
+        for (int i = Math.max(0, firstIn); firstIn >= 0 && i < n && t.t[i] < pressEnd; i++) {
+            double pen = wall - t.y[i];
+            if (pen > 0) {
+                double f = -t.fy[i];
+                sp += pen;
+                sf += f;
+                spp += pen * pen;
+                spf += pen * f;
+                np++;
+            }
+        }
+        double den = np * spp - sp * sp;
+        double felt = np > 10 && den > 0 ? ((np * spf - sp * sf) / den) / c.stiffness : Double.NaN;
         boolean stable = t.failure == null && residual < RESIDUAL_LIMIT;
         return new Touch(stable, peak, residual, energy, felt, Double.NaN);
     }
