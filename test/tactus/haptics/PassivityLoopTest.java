@@ -23,15 +23,6 @@ import tactus.haptics.emulator.Hand;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class PassivityLoopTest {
 
-    private static Thread loopThread() {
-        for (Thread t : Thread.getAllStackTraces().keySet()) {
-            if (t.getName().equals("tactus-haptic-loop")) {
-                return t;
-            }
-        }
-        return null;
-    }
-
     private static void waitTicks(HapticLoop loop, long n) {
         long end = loop.ticks() + n;
         while (loop.ticks() < end && loop.isRunning()) {
@@ -87,7 +78,7 @@ class PassivityLoopTest {
             while (loop.ticks() < 2000 && loop.isRunning()) {
                 LockSupport.parkNanos(1_000_000);
                 if (t == null) {
-                    t = loopThread();
+                    t = HapticLoopAllocationTest.loopThread();
                 }
             }
             assertTrue(t != null && loop.isRunning(), String.valueOf(loop.failure()));
