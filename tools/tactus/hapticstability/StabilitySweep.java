@@ -27,6 +27,13 @@ public final class StabilitySweep {
      */
     public static final List<WallRig.Variant> VARIANTS = new ArrayList<>(List.of(WallRig.UNCONTROLLED));
 
+    static {
+        // passivity control, virtual coupling, both (tactus.haptics.PassivityVariants): the coupling from the plant's
+        // damping along the wall's axis, the observer told of the exchange's one tick of delay
+        VARIANTS.addAll(tactus.haptics.PassivityVariants.all(
+                EffectiveAxis.atEquilibrium(new WallRig.Config()).damping, 1));
+    }
+
     /** Multiples of the uncontrolled bound swept. */
     static final double[] MULTIPLES = {0.1, 0.3, 0.5, 1, 2, 5, 10, 20, 40};
 
