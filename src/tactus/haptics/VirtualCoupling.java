@@ -42,8 +42,9 @@ public final class VirtualCoupling {
      * between reading the position and the force taking effect (>= 0; 0 for a hold alone). The sampled spring-damper
      * (k, c) is passive on the device while {@code b > k T (d + 1/2) + c} (Colgate &amp; Schenkel 1997, with the delay);
      * this takes c = b / 4 and half of the stiffness that bound allows, {@code k = (b - c) / (2 T (d + 1/2))}, and a
-     * proxy of {@code m = 4 k T^2 (d + 1)^2} kg, heavy enough for a contact a hundred times stiffer than k to stay
-     * stable against the proxy at the loop's rate (see docs/haptics-stability.md).
+     * proxy of {@code m = 25 k T^2 (d + 1)^2} kg: the proxy, integrated explicitly at the loop's rate, stays stable
+     * against contacts up to {@code 4 m / T^2 = 100 (d + 1)^2 k} (see docs/haptics-stability.md, "Passivity
+     * control").
      *
      * @throws IllegalArgumentException naming the value when one is out of range
      */
