@@ -394,96 +394,6 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * Switches the time-domain passivity controller on or off, at any time (also while the loop runs; default off).
-     * When on, the loop adds a damper to the force whenever the {@linkplain #passivity() observer} sees the port give
-     * the hand more energy than it took (Hannaford &amp; Ryu 2002): a stiff wall that would buzz or bounce settles,
-     * and the hand never receives energy the model did not hold. A soft model that stays passive is not touched:
-     * measured figures are in docs/haptics-stability.md.
-     */
-    public void setPassivityControl(boolean on) {
-        port.setControl(on);
-    }
-
-    /** True while the passivity controller is on. */
-    public boolean isPassivityControl() {
-        return port.isControl();
-    }
-
-    /**
-     * The passivity observer: the energy (J, at the handle) that flowed into the model and back to the hand since the
-     * loop started, and the controller's activity. Read it from any thread, without a lock.
-     */
-    public PassivityObserver passivity() {
-        return port.observer();
-    }
-
-    /**
-     * Sets the largest damping (N s/m; finite, > 0; default 10) the passivity controller may add in one tick. More
-     * dissipates a burst of energy faster; too much, applied a tick late, shakes a light handle. A good value is near
-     * m / (T (d + 1/2)) for a handle (and hand) of mass m, period T and d ticks of exchange delay: the default suits
-     * the 2DIY (about 0.02 kg along an axis, measured on the emulator); a heavier device takes more.
-     */
-    public void setPassivityDampingLimit(double nsPerM) {
-        beforeStart("setPassivityDampingLimit");
-        if (!(nsPerM > 0) || !Double.isFinite(nsPerM)) {
-            throw new IllegalArgumentException("HapticLoop.setPassivityDampingLimit: limit must be a finite number > 0 N s/m, got "
-                    + nsPerM);
-        }
-        port.setDampingLimit(nsPerM);
-    }
-
-    /**
-     * Tells the passivity observer how many ticks pass between a position reading and the force sent at that tick
-     * taking effect at the handle (0..8; default 0, a hold alone), so that it charges each displacement to the force
-     * that acted over it. Configure before {@link #start()}.
-     */
-    public void setExchangeDelay(int ticks) {
-        beforeStart("setExchangeDelay");
-        if (ticks < 0 || ticks > HapticPort.MAX_DELAY) {
-            throw new IllegalArgumentException("HapticLoop.setExchangeDelay: delay must be 0.." + HapticPort.MAX_DELAY
-                    + " ticks, got " + ticks);
-        }
-        port.setDelay(ticks);
-    }
-
-    /** The exchange delay (ticks) the passivity observer assumes. */
-    public int exchangeDelay() {
-        return port.delay();
-    }
-
-    /** The largest damping (N s/m) the passivity controller may add in one tick. */
-    public double passivityDampingLimit() {
-        return port.dampingLimit();
-    }
-
-    /**
-     * Puts a {@link VirtualCoupling} between the handle and the avatar (null: none, the default): the avatar follows
-     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. Configure before
-     * {@link #start()}.
-     */
-    public void setVirtualCoupling(VirtualCoupling coupling) {
-        beforeStart("setVirtualCoupling");
-        port.setCoupling(coupling);
-    }
-
-    /** The virtual coupling between the handle and the avatar, or null. */
-    public VirtualCoupling virtualCoupling() {
-        return port.coupling();
-    }
-
-    /**
-     * Adds {@link FrictionCompensation} along the handle's motion (null: none, the default), at any time.
-     */
-    public void setFrictionCompensation(FrictionCompensation compensation) {
-        port.setFriction(compensation);
-    }
-
-    /** The friction compensation in use, or null. */
-    public FrictionCompensation frictionCompensation() {
-        return port.friction();
-    }
-
-    /**
      * How the loop thread is scheduled: "not started", "normal priority", "real-time (SCHED_FIFO n)" (with "; VM
      * and GC threads at n-1, JIT compilers at 1" when those were moved too), or
      * "normal priority (real-time refused: why)".
@@ -654,6 +564,96 @@ public final class HapticLoop implements AutoCloseable {
     /** The torque (N m) sent to joint j (1 or 2) at the last tick. */
     public double torque(int joint) {
         return joint == 1 ? torque1 : torque2;
+    }
+
+    /**
+     * Switches the time-domain passivity controller on or off, at any time (also while the loop runs; default off).
+     * When on, the loop adds a damper to the force whenever the {@linkplain #passivity() observer} sees the port give
+     * the hand more energy than it took (Hannaford &amp; Ryu 2002): a stiff wall that would buzz or bounce settles,
+     * and the hand never receives energy the model did not hold. A soft model that stays passive is not touched:
+     * measured figures are in docs/haptics-stability.md.
+     */
+    public void setPassivityControl(boolean on) {
+        port.setControl(on);
+    }
+
+    /** True while the passivity controller is on. */
+    public boolean isPassivityControl() {
+        return port.isControl();
+    }
+
+    /**
+     * The passivity observer: the energy (J, at the handle) that flowed into the model and back to the hand since the
+     * loop started, and the controller's activity. Read it from any thread, without a lock.
+     */
+    public PassivityObserver passivity() {
+        return port.observer();
+    }
+
+    /**
+     * Sets the largest damping (N s/m; finite, > 0; default 10) the passivity controller may add in one tick. More
+     * dissipates a burst of energy faster; too much, applied a tick late, shakes a light handle. A good value is near
+     * m / (T (d + 1/2)) for a handle (and hand) of mass m, period T and d ticks of exchange delay: the default suits
+     * the 2DIY (about 0.02 kg along an axis, measured on the emulator); a heavier device takes more.
+     */
+    public void setPassivityDampingLimit(double nsPerM) {
+        beforeStart("setPassivityDampingLimit");
+        if (!(nsPerM > 0) || !Double.isFinite(nsPerM)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityDampingLimit: limit must be a finite number > 0 N s/m, got "
+                    + nsPerM);
+        }
+        port.setDampingLimit(nsPerM);
+    }
+
+    /**
+     * Tells the passivity observer how many ticks pass between a position reading and the force sent at that tick
+     * taking effect at the handle (0..8; default 0, a hold alone), so that it charges each displacement to the force
+     * that acted over it. Configure before {@link #start()}.
+     */
+    public void setExchangeDelay(int ticks) {
+        beforeStart("setExchangeDelay");
+        if (ticks < 0 || ticks > HapticPort.MAX_DELAY) {
+            throw new IllegalArgumentException("HapticLoop.setExchangeDelay: delay must be 0.." + HapticPort.MAX_DELAY
+                    + " ticks, got " + ticks);
+        }
+        port.setDelay(ticks);
+    }
+
+    /** The exchange delay (ticks) the passivity observer assumes. */
+    public int exchangeDelay() {
+        return port.delay();
+    }
+
+    /** The largest damping (N s/m) the passivity controller may add in one tick. */
+    public double passivityDampingLimit() {
+        return port.dampingLimit();
+    }
+
+    /**
+     * Puts a {@link VirtualCoupling} between the handle and the avatar (null: none, the default): the avatar follows
+     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. Configure before
+     * {@link #start()}.
+     */
+    public void setVirtualCoupling(VirtualCoupling coupling) {
+        beforeStart("setVirtualCoupling");
+        port.setCoupling(coupling);
+    }
+
+    /** The virtual coupling between the handle and the avatar, or null. */
+    public VirtualCoupling virtualCoupling() {
+        return port.coupling();
+    }
+
+    /**
+     * Adds {@link FrictionCompensation} along the handle's motion (null: none, the default), at any time.
+     */
+    public void setFrictionCompensation(FrictionCompensation compensation) {
+        port.setFriction(compensation);
+    }
+
+    /** The friction compensation in use, or null. */
+    public FrictionCompensation frictionCompensation() {
+        return port.friction();
     }
 
     /** Ticks run so far. */
