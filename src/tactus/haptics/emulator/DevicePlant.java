@@ -303,7 +303,7 @@ public final class DevicePlant {
         }
     }
 
-    /** Solves a rhs-in-place system by Gaussian elimination with partial pivoting (n <= 3). */
+    /** Solves a rhs-in-place system by Gaussian elimination with partial pivoting (n &lt;= 3). */
     private void solve() {
         for (int col = 0; col < n; col++) {
             int piv = col;
