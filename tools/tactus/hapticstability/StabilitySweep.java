@@ -75,15 +75,9 @@ public final class StabilitySweep {
         };
     }
 
-    /** A press configuration on the given plant and variant. */
+    /** A press configuration on the given plant and variant: the pen grip presses a one-sided wall. */
     static WallRig.Config pressConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
-        WallRig.Config c = new WallRig.Config();
-        c.plant = plant;
-        c.variant = variant;
-        c.wall = WallRig.Wall.PLANE;
-        c.stiffness = k;
-        c.damping = b;
-        c.ticks = 1800;
+        WallRig.Config c = config(plant, variant, WallRig.Wall.PLANE, k, b, 1800);
         c.hand = Hand.grasp(press(c.preset.d() / 2, WallRig.START_Y, c.gap, 0.003), HAND_MASS, HAND_STIFFNESS,
                 HAND_DAMPING);
         return c;
@@ -91,13 +85,18 @@ public final class StabilitySweep {
 
     /** A no-hand configuration: a 1 mm step on a two-sided spring. */
     static WallRig.Config springConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
+        return config(plant, variant, WallRig.Wall.SPRING, k, b, 2000);
+    }
+
+    private static WallRig.Config config(PlantParameters plant, WallRig.Variant variant, WallRig.Wall wall, double k,
+                                         double b, int ticks) {
         WallRig.Config c = new WallRig.Config();
         c.plant = plant;
         c.variant = variant;
-        c.wall = WallRig.Wall.SPRING;
+        c.wall = wall;
         c.stiffness = k;
         c.damping = b;
-        c.ticks = 2000;
+        c.ticks = ticks;
         return c;
     }
 

@@ -12,7 +12,7 @@ public final class Touch {
     public final double peak;
     /** RMS oscillation over the last third of the run about its mean (SPRING), or about the 20 ms moving average during the hold (PLANE), metres. */
     public final double residual;
-    /** Energy the device delivered to the hand over the touch, J (<= 0: passive); NaN without a hand. */
+    /** Energy the device delivered to the hand over the touch, J (&lt;= 0: passive); NaN without a hand. */
     public final double energyToHand;
     /** Slope of the hand's force against penetration while pressing in, as a fraction of K; NaN without a hand. */
     public final double feltFraction;

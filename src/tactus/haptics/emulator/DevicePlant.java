@@ -144,6 +144,24 @@ public final class DevicePlant {
     }
 
     /**
+     * Sets the joint coordinates and velocities (radians or metres, per second) directly, for an owner that imposes a
+     * constraint the plant does not model (the end of a workspace). Returns false (nothing changed) if out of reach.
+     */
+    public boolean setState(double[] joints, double[] velocities) {
+        System.arraycopy(q, 0, qSaved, 0, n);
+        System.arraycopy(joints, 0, q, 0, n);
+        if (!kin.forward(q, x, j)) {
+            System.arraycopy(qSaved, 0, q, 0, n);
+            kin.forward(q, x, j);
+            return false;
+        }
+        System.arraycopy(velocities, 0, qd, 0, n);
+        taskVelocity();
+        hasPrevJ = false;
+        return true;
+    }
+
+    /**
      * Moves the handle to x over h seconds whatever the forces (a rigid hand): joint velocities by difference.
      * Returns false (the handle stays, at rest) if x is out of reach.
      */
@@ -285,7 +303,7 @@ public final class DevicePlant {
         }
     }
 
-    /** Solves a rhs-in-place system by Gaussian elimination with partial pivoting (n <= 3). */
+    /** Solves a rhs-in-place system by Gaussian elimination with partial pivoting (n &lt;= 3). */
     private void solve() {
         for (int col = 0; col < n; col++) {
             int piv = col;

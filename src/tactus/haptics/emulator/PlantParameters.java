@@ -92,7 +92,7 @@ public final class PlantParameters {
         return new PlantParameters(jointInertia, v, coulombTorque, staticTorque, handleMass, taskDamping, substep, actuationDelay);
     }
 
-    /** A copy with this Coulomb torque and static threshold (N m or N, 0 <= coulomb <= threshold). */
+    /** A copy with this Coulomb torque and static threshold (N m or N, 0 &lt;= coulomb &lt;= threshold). */
     public PlantParameters withFriction(double coulomb, double threshold) {
         return new PlantParameters(jointInertia, jointDamping, coulomb, threshold, handleMass, taskDamping, substep, actuationDelay);
     }
@@ -107,7 +107,7 @@ public final class PlantParameters {
         return new PlantParameters(jointInertia, jointDamping, coulombTorque, staticTorque, handleMass, v, substep, actuationDelay);
     }
 
-    /** A copy with this internal integration step (seconds, 0 < step <= 1e-3). */
+    /** A copy with this internal integration step (seconds, 0 &lt; step &lt;= 1e-3). */
     public PlantParameters withSubstep(double v) {
         return new PlantParameters(jointInertia, jointDamping, coulombTorque, staticTorque, handleMass, taskDamping, v, actuationDelay);
     }

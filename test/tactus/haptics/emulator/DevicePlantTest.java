@@ -137,19 +137,8 @@ class DevicePlantTest {
             out[1] = y0;
         }, 0.05, k, 3));
         try (Board board = new Board(emulator.connect())) {
-            Device dev = new Device((byte) 7, board);
-            preset.configure(dev);
-            dev.device_set_parameters();
-            PantographKinematics kin = preset.newKinematics();
-            double[] tau = new double[2];
-            for (int i = 0; i < 2000; i++) {
-                dev.device_read_data();
-                kin.forward(Math.toRadians(dev.angle(1)), Math.toRadians(dev.angle(2)));
-                kin.torques(0.4, -0.2, 1.0, tau);
-                dev.set_actuator_torque(1, (float) tau[0]);
-                dev.set_actuator_torque(2, (float) tau[1]);
-                dev.device_write_torques();
-            }
+            Device dev = setUp(preset, board);
+            pushFor(dev, preset.newKinematics(), 0.4, -0.2, 2000);
             assertEquals(0.4 / k, emulator.x() - x0, 0.03 * 0.4 / k, "x");
             assertEquals(-0.2 / k, emulator.y() - y0, 0.03 * 0.4 / k, "y");
             assertEquals(2.0, emulator.time(), 1e-9, "2000 writes of 1 ms");
@@ -166,26 +155,64 @@ class DevicePlantTest {
         double x0 = emulator.x();
         double y0 = emulator.y();
         try (Board board = new Board(emulator.connect())) {
-            Device dev = new Device((byte) 7, board);
-            preset.configure(dev);
-            dev.device_set_parameters();
+            Device dev = setUp(preset, board);
             PantographKinematics kin = preset.newKinematics();
-            double[] tau = new double[2];
-            double[] fs = {0.005, 0.3};   // N along y: below, then well above the joints' static threshold
-            double[] moved = new double[2];
-            for (int s = 0; s < 2; s++) {
-                for (int i = 0; i < 100; i++) {
-                    dev.device_read_data();
-                    kin.forward(Math.toRadians(dev.angle(1)), Math.toRadians(dev.angle(2)));
-                    kin.torques(0, fs[s], 1.0, tau);
-                    dev.set_actuator_torque(1, (float) tau[0]);
-                    dev.set_actuator_torque(2, (float) tau[1]);
-                    dev.device_write_torques();
-                }
-                moved[s] = Math.hypot(emulator.x() - x0, emulator.y() - y0);
-            }
-            assertEquals(0, moved[0], 0.0, "5 mN does not break the joints loose");
-            assertTrue(moved[1] > 1e-3, "0.3 N moves the handle: " + moved[1] + " m");
+            pushFor(dev, kin, 0, 0.005, 100);   // N along y: below the joints' static threshold
+            double small = Math.hypot(emulator.x() - x0, emulator.y() - y0);
+            pushFor(dev, kin, 0, 0.3, 100);     // well above it
+            double large = Math.hypot(emulator.x() - x0, emulator.y() - y0);
+            assertEquals(0, small, 0.0, "5 mN does not break the joints loose");
+            assertTrue(large > 1e-3, "0.3 N moves the handle: " + large + " m");
+        }
+    }
+
+    @Test
+    void theInverse3EmulatorWithACartesianPlantHoldsAgainstStaticFrictionAndSlidesAboveIt() {
+        SimulatedInverse3 dev = new SimulatedInverse3();
+        PlantParameters p = PlantParameters.cartesian3Dof();   // 0.2 kg, 0.5 N s/m, Coulomb 0.05 N, static 0.08 N
+        dev.setPlant(p);
+        double[] start = new double[3];
+        dev.position(start);
+        dev.setForce(0.07, 0, 0);
+        dev.advance(0.2);
+        double[] at = new double[3];
+        dev.position(at);
+        assertEquals(start[0], at[0], 0.0, "0.07 N is below the 0.08 N static threshold");
+        dev.setForce(0.3, 0, 0);
+        dev.advance(0.2);
+        dev.position(at);
+        double[] vel = new double[3];
+        dev.velocity(vel);
+        // (F - Fc) / b (1 - exp(-b t / m)) with F - Fc = 0.25 N
+        double expected = 0.25 / 0.5 * (1 - Math.exp(-0.5 * 0.2 / 0.2));
+        assertEquals(expected, vel[0], 0.01 * expected, "sliding under 0.3 N");
+        assertEquals(0, vel[1], 0.0, "no force on y");
+        // the box stops it: the plant follows the clamp
+        dev.setForce(2, 0, 0);
+        dev.advance(2.0);
+        dev.position(at);
+        assertEquals(SimulatedInverse3.HOME[0] + SimulatedInverse3.HALF_EXTENT[0], at[0], 1e-12, "at the wall");
+        dev.velocity(vel);
+        assertEquals(0, vel[0], 0.0, "at rest against the wall");
+    }
+
+    private static Device setUp(HaplyPreset preset, Board board) {
+        Device dev = new Device((byte) 7, board);
+        preset.configure(dev);
+        dev.device_set_parameters();
+        return dev;
+    }
+
+    /** Sends J^T F for a task-space force (N) at the measured pose for n ticks, as a sketch's loop does. */
+    private static void pushFor(Device dev, PantographKinematics kin, double fx, double fy, int n) {
+        double[] tau = new double[2];
+        for (int i = 0; i < n; i++) {
+            dev.device_read_data();
+            kin.forward(Math.toRadians(dev.angle(1)), Math.toRadians(dev.angle(2)));
+            kin.torques(fx, fy, 1.0, tau);
+            dev.set_actuator_torque(1, (float) tau[0]);
+            dev.set_actuator_torque(2, (float) tau[1]);
+            dev.device_write_torques();
         }
     }
 
