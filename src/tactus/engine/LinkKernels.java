@@ -126,7 +126,9 @@ final class LinkKernels {
      * link-by-link loop stores a force and loads it back at the next link. These are the same operations in the
      * same order for each mass (a mass of a segment receives +f from the link before it, then -f from its own),
      * so the results are bit for bit those of the link-by-link loop ({@code SpringDamper1DSegmentTest}), which
-     * {@link Engine#setStencilSweeps(boolean) setStencilSweeps(false)} selects for every link.
+     * {@link Engine#setStencilSweeps(boolean) setStencilSweeps(false)} selects for every link. A segment whose links
+     * all have the same parameters (a uniform string) holds them in registers too; which segments are uniform is
+     * looked at again after every parameter change.
      */
     static final class SpringDamper1D extends BatchKernel {
         /** Fewest links for a segment: below this the link-by-link loop is as fast. */
@@ -161,6 +163,10 @@ final class LinkKernels {
             }
             segStart = java.util.Arrays.copyOf(starts, count);
             segEnd = java.util.Arrays.copyOf(ends, count);
+            uniform = new boolean[count];
+            segK = new double[count];
+            segZ = new double[count];
+            segL = new double[count];
         }
 
         /** @return the number of segments (diagnostics and tests). */
@@ -168,15 +174,73 @@ final class LinkKernels {
             return segStart.length;
         }
 
+        /** The batch's parameter version that {@link #uniform} describes. */
+        private int seenParams = -1;
+        /** Per segment: true when its links share one stiffness, damping and length, held in segK, segZ, segL. */
+        private final boolean[] uniform;
+        private final double[] segK;
+        private final double[] segZ;
+        private final double[] segL;
+
         @Override
         public void run() {
+            if (b.paramsVersion != seenParams) {
+                findUniformSegments();
+            }
             int from = 0;
             for (int q = 0; q < segStart.length; q++) {
                 links(from, segStart[q]);
-                segment(segStart[q], segEnd[q]);
+                if (uniform[q]) {
+                    uniformSegment(segStart[q], segEnd[q], segK[q], segZ[q], segL[q]);
+                } else {
+                    segment(segStart[q], segEnd[q]);
+                }
                 from = segEnd[q];
             }
             links(from, b.n);
+        }
+
+        /** Looks again (after a parameter change) which segments have one set of parameters for all their links. */
+        private void findUniformSegments() {
+            seenParams = b.paramsVersion;
+            for (int q = 0; q < segStart.length; q++) {
+                int js = segStart[q];
+                double kk = b.k[js], zz = b.z[js], l = b.len[js];
+                boolean same = true;
+                for (int j = js + 1; j < segEnd[q] && same; j++) {
+                    // compared as bits: the constants must give exactly the values the links hold (-0.0, NaN)
+                    same = Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(kk)
+                            && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(zz)
+                            && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(l);
+                }
+                uniform[q] = same;
+                segK[q] = kk;
+                segZ[q] = zz;
+                segL[q] = l;
+            }
+        }
+
+        /** As {@link #segment}, for links that all have stiffness kk, damping zz and length l: fewer loads per link. */
+        private void uniformSegment(int js, int je, double kk, double zz, double l) {
+            final double[] z = p.z, fz = p.fz, dp = b.dp;
+            final int shift = b.a[js] - js;
+            double near = z[js + shift];
+            double far = z[js + shift + 1];
+            double e = near - far;
+            double f = kk * (e - l) + zz * (e - dp[js]);
+            dp[js] = e;
+            fz[js + shift] -= f;
+            for (int j = js + 1; j < je; j++) {
+                int t = j + shift;
+                near = far;
+                far = z[t + 1];
+                e = near - far;
+                double g = kk * (e - l) + zz * (e - dp[j]);
+                dp[j] = e;
+                fz[t] = (fz[t] + f) - g;
+                f = g;
+            }
+            fz[je + shift] += f;
         }
 
         /** The links [from, to) one by one. */

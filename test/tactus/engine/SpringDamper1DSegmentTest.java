@@ -21,6 +21,11 @@ class SpringDamper1DSegmentTest {
 
     /** A struck 1-D string of n masses of a kind between two Ground1D, with varied parameters and rest lengths. */
     private static Engine string(MassKind kind, int n, boolean sweeps, int[] ids) {
+        return string(kind, n, sweeps, ids, false);
+    }
+
+    /** @param uniform true: every inner link with the same stiffness, damping and length (a uniform string) */
+    private static Engine string(MassKind kind, int n, boolean sweeps, int[] ids, boolean uniform) {
         Engine e = new Engine();
         e.setStencilSweeps(sweeps);
         int g0 = e.addMass(MassKind.GROUND1D, 1, 0, 0, 0, 0, 0, 0);
@@ -31,7 +36,11 @@ class SpringDamper1DSegmentTest {
                 e.setOscillator(m, 0.001 * (1 + i % 4), 0.0001);
             }
             ids[i] = m;
-            e.addLink(LinkKind.SPRING_DAMPER1D, prev, m, 0.2 + 0.01 * (i % 5), 0.0005 * (i % 3), 0.001 * (i % 2));
+            if (uniform) {
+                e.addLink(LinkKind.SPRING_DAMPER1D, prev, m, 0.2, 0.0005, 0.001);
+            } else {
+                e.addLink(LinkKind.SPRING_DAMPER1D, prev, m, 0.2 + 0.01 * (i % 5), 0.0005 * (i % 3), 0.001 * (i % 2));
+            }
             prev = m;
         }
         int g1 = e.addMass(MassKind.GROUND1D, 1, n + 1, 0, 0, 0, 0, 0);
@@ -99,6 +108,42 @@ class SpringDamper1DSegmentTest {
                 lockstep(seg, ref, ids, n, kind + ", " + n + " masses");
                 assertNotEquals(0.0, seg.plan().z[ids[n / 3]], "the string should move");
             }
+        }
+    }
+
+    /**
+     * A uniform string (its segment's parameters held as constants), made non-uniform by one link's change and
+     * uniform again, then changed as a whole: the same bits as link by link at every step.
+     */
+    @Test
+    void aUniformStringStaysBitIdenticalThroughParameterChanges() {
+        for (int n : new int[] {9, 64, 300}) {
+            int[] ids = new int[n + 1];
+            Engine seg = string(MassKind.MASS1D, n, true, ids, true);
+            Engine ref = string(MassKind.MASS1D, n, false, new int[n + 1], true);
+            seg.compile();
+            ref.compile();
+            assertEquals(1, segments(seg));
+            int link = n / 2; // an inner link (link ids follow the order they were added)
+            for (int step = 0; step < 500; step++) {
+                for (Engine e : new Engine[] {seg, ref}) {
+                    if (step == 50) {
+                        e.setLinkParams(link, 0.25, 0.0005, 0.001);
+                    } else if (step == 150) {
+                        e.setLinkParams(link, 0.2, 0.0005, 0.001);
+                    } else if (step == 250) {
+                        for (int l = 0; l < e.linkIdCount(); l++) {
+                            e.setLinkParams(l, 0.15, 0.002, 0);
+                        }
+                    } else if (step == 350) {
+                        e.setLinkParams(link, 0.15, 0.002, -0.0);
+                    }
+                }
+                seg.step(1);
+                ref.step(1);
+                assertSame(seg, ref, "uniform string of " + n + ", step " + step);
+            }
+            assertNotEquals(0.0, seg.plan().z[0] - 0.01 * Math.sin(0.7), "the string should move");
         }
     }
 

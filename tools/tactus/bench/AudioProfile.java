@@ -14,7 +14,8 @@ import tactus.engine.MassKind;
 /**
  * Where a small model's audio sample goes (docs/performance.md, "Where a small model's sample goes"): the same 1-D
  * string stepped through layers that each add one part of the audio path, measured interleaved in one JVM, so that
- * the difference between two layers is what that part costs per sample:
+ * the difference between two layers is what that part costs per sample (thread CPU time, so that other load on the
+ * machine counts as little as possible):
  * <ol>
  *   <li>the engine alone, {@code Engine.step(n)} over a whole buffer (the physics and the divergence guard);</li>
  *   <li>the engine, one {@code step(1)} per sample and one position read ({@code Engine.position});</li>
@@ -27,6 +28,7 @@ import tactus.engine.MassKind;
  */
 public final class AudioProfile {
     private static final int BUFFER = 512;
+    private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
 
     private AudioProfile() {
     }
@@ -95,19 +97,19 @@ public final class AudioProfile {
                 }
             }
         }
-        int rounds = 9;
+        int rounds = 15;
         double[][] ns = new double[layers.length][rounds];
         for (int round = 0; round < rounds; round++) {
             for (int k = 0; k < layers.length; k++) {
                 int l = (k + round) % layers.length;
-                long t0 = System.nanoTime();
+                long t0 = CPU.getCurrentThreadCpuTime();
                 for (int b = 0; b < buffersPerRun; b++) {
                     layers[l].run();
                 }
-                ns[l][round] = (System.nanoTime() - t0) / (double) (buffersPerRun * BUFFER);
+                ns[l][round] = (CPU.getCurrentThreadCpuTime() - t0) / (double) (buffersPerRun * BUFFER);
             }
         }
-        System.out.printf(Locale.ROOT, "1-D string, %d masses (median of %d interleaved rounds, ns per sample)%n", n, rounds);
+        System.out.printf(Locale.ROOT, "1-D string, %d masses (median of %d interleaved rounds, ns of thread CPU time per sample)%n", n, rounds);
         double prev = 0;
         for (int l = 0; l < layers.length; l++) {
             java.util.Arrays.sort(ns[l]);
