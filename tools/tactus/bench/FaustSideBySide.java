@@ -47,7 +47,7 @@ import tactus.faust.FaustToolchain;
 public final class FaustSideBySide {
     /** Model ids, in report order. */
     static final String[] MODELS = {"string1d-30", "string1d-100", "string1d-300", "string1d-1000", "plate-8x8",
-        "string3d-100", "string3d-1000", "voices16-string1d-100"};
+        "string3d-100", "string3d-1000", "voices8-string1d-100", "voices16-string1d-100"};
     private static final int RATE = 44100;
     private static final double SAMPLE_NS = 1e9 / RATE;
     private static final String TAG = "<!-- side by side with Faust (gradle bench) -->";
@@ -63,7 +63,9 @@ public final class FaustSideBySide {
         File work = new File("build/faustbench");
         int timeoutSeconds = 900;
         long faustMemoryKb = 6_000_000;
-        int[] largest = {5_000, 10_000, 12_500, 15_000};
+        /** 1-D string sizes (masses) for the largest string in real time; 3-D strings of {@link #largest3d}. */
+        int[] largest = {10_000, 12_500, 15_000};
+        int[] largest3d = {5_000, 6_000};
         /** Only compile the Faust programs (into {@link #work}), measure nothing. */
         boolean compileOnly;
     }
@@ -87,6 +89,7 @@ public final class FaustSideBySide {
             } else if (a.startsWith("--largest=")) {
                 o.largest = a.length() == 10 ? new int[0]
                         : Arrays.stream(a.substring(10).split(",")).mapToInt(Integer::parseInt).toArray();
+                o.largest3d = new int[0];
             } else if (a.equals("--compile-only")) {
                 o.compileOnly = true;
             } else {
@@ -100,8 +103,8 @@ public final class FaustSideBySide {
 
     /** @return the model of an id (for voices: one voice). */
     static PhysicalModel model(String id) {
-        if (id.startsWith("voices16-")) {
-            return model(id.substring(9));
+        if (id.startsWith("voices")) {
+            return model(voice(id));
         }
         if (id.equals("plate-8x8")) {
             return plate(8);
@@ -112,8 +115,8 @@ public final class FaustSideBySide {
 
     /** @return the listening mass of a model: mass 2n/3 + 1 of a string, p3_5 of the plate. */
     static String listened(String id) {
-        if (id.startsWith("voices16-")) {
-            return listened(id.substring(9));
+        if (id.startsWith("voices")) {
+            return listened(voice(id));
         }
         if (id.equals("plate-8x8")) {
             return "p3_5";
@@ -122,32 +125,19 @@ public final class FaustSideBySide {
         return "m" + (2 * n / 3 + 1);
     }
 
+    /** @return the number of voices of a model id: V for "voicesV-&lt;model&gt;", else 1. */
     static int voices(String id) {
-        return id.startsWith("voices16-") ? 16 : 1;
+        return id.startsWith("voices") ? Integer.parseInt(id.substring(6, id.indexOf('-'))) : 1;
     }
 
-    /**
-     * The paper's 1-D metal plate as in the Faust agreement test: n x n Osc1D (M 1, K 0.0005) joined to their right
-     * and lower neighbours by SpringDamper1D (K 0.15, Z 0.00002), struck at p2_2.
-     */
+    /** @return the model one voice of a "voicesV-&lt;model&gt;" id plays. */
+    static String voice(String id) {
+        return id.substring(id.indexOf('-') + 1);
+    }
+
+    /** The 8 x 8 plate of {@link FaustCost#plate}, struck at p2_2. */
     static PhysicalModel plate(int n) {
-        PhysicalModel m = new PhysicalModel(RATE, 60);
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                m.addOsc1D("p" + i + "_" + j, 1, 0.0005, 0, new Vect3D(i, j, 0), new Vect3D());
-            }
-        }
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                if (i + 1 < n) {
-                    m.addSpringDamper1D("x" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + (i + 1) + "_" + j);
-                }
-                if (j + 1 < n) {
-                    m.addSpringDamper1D("y" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + i + "_" + (j + 1));
-                }
-            }
-        }
-        m.init();
+        PhysicalModel m = FaustCost.plate(n);
         m.triggerForceImpulse("p2_2", 0, 0, 1);
         return m;
     }
@@ -404,7 +394,7 @@ public final class FaustSideBySide {
      *     (a file {@code <id>.failed}), so that a model faust cannot compile is not tried again at every run
      */
     static Path[] compile(String id, Path work, int timeout) throws IOException {
-        String name = id.startsWith("voices16-") ? id.substring(9) : id;
+        String name = id.startsWith("voices") ? voice(id) : id;
         String dsp = dsp(name);
         Path failed = work.resolve(name + ".failed");
         Path src = work.resolve(name + ".dsp");
@@ -430,28 +420,30 @@ public final class FaustSideBySide {
     }
 
     /**
-     * The largest 1-D string a PhyUGen plays in real time on one core: 1-D strings of the given sizes rendered
-     * through Minim's tick in the Tactus child, CPU time per sample.
+     * The largest string a PhyUGen plays in real time on one core: 1-D and 3-D strings of the given sizes rendered
+     * through Minim's tick in a Tactus child, CPU time per sample, the best of a few runs.
      *
-     * @return per size: {masses, wall ns, cpu ns}
+     * @return per size: {masses, 1 for 3-D, wall ns, cpu ns}
      */
     private static List<double[]> largestString(Options o) throws IOException {
         List<double[]> out = new ArrayList<>();
-        if (o.largest.length == 0) {
+        if (o.largest.length + o.largest3d.length == 0) {
             return out;
         }
         try (TactusProcess tactus = new TactusProcess()) {
-            for (int n : o.largest) {
-                double[] best = null;
-                for (int r = 0; r < (o.quick ? 2 : 3); r++) {
-                    double[] t = tactus.measure("string1d-" + n, o.quick ? 0.5 : 1.0);
-                    if (best == null || t[3] < best[3]) {
-                        best = t;
+            for (int threeD = 0; threeD < 2; threeD++) {
+                for (int n : threeD == 0 ? o.largest : o.largest3d) {
+                    double[] best = null;
+                    for (int r = 0; r < (o.quick ? 2 : 3); r++) {
+                        double[] t = tactus.measure((threeD == 0 ? "string1d-" : "string3d-") + n, o.quick ? 0.5 : 1.0);
+                        if (best == null || t[3] < best[3]) {
+                            best = t;
+                        }
                     }
+                    out.add(new double[] {n, threeD, best[2], best[3]});
+                    System.out.printf(Locale.ROOT, "%s string of %d masses through PhyUGen: %.0f ns per sample (cpu)%n",
+                            threeD == 0 ? "1-D" : "3-D", n, best[3]);
                 }
-                out.add(new double[] {n, best[2], best[3]});
-                System.out.printf(Locale.ROOT, "1-D string of %d masses through PhyUGen: %.0f ns per sample (cpu)%n", n,
-                        best[3]);
             }
         }
         return out;
@@ -494,8 +486,9 @@ public final class FaustSideBySide {
         switch (id) {
             case "plate-8x8":
                 return "8×8 metal plate (64 Osc1D, 112 SpringDamper1D)";
+            case "voices8-string1d-100":
             case "voices16-string1d-100":
-                return "16 voices of the 100-mass 1-D string";
+                return voices(id) + " voices of the 100-mass 1-D string (per sample of all voices)";
             default:
                 int n = Integer.parseInt(id.substring(id.indexOf('-') + 1));
                 return String.format(Locale.ROOT, "%s string, %,d masses", id.startsWith("string3d") ? "3-D" : "1-D", n);
@@ -507,7 +500,7 @@ public final class FaustSideBySide {
         if (id.startsWith("string3d")) {
             return 4;
         }
-        if (id.equals("string1d-30") || id.startsWith("voices16")) {
+        if (id.equals("string1d-30") || id.startsWith("voices")) {
             return 1;
         }
         if (id.equals("string1d-100") || id.equals("plate-8x8")) {
@@ -529,7 +522,7 @@ public final class FaustSideBySide {
                 cpuName(), Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.version"),
                 version("faust", "--version"), version("g++", "--version"), loadStart, loadEnd));
         s.append("ns per sample, CPU time of the measuring thread (Tactus) or process (Faust), median of the rounds "
-                + "(min–max); a voice row is per sample of all 16 voices. Share = PhyUGen's time over the 22.7 µs of a "
+                + "(min–max); a voices row is per sample of all its voices. Share = PhyUGen's time over the 22.7 µs of a "
                 + "sample at 44.1 kHz. Ratio = Faust's time / PhyUGen's time, per round (above 1: Tactus faster).\n\n");
         s.append("| model | Faust -O3 | Faust -O3 -march=native | Tactus `computeStep` + read | Tactus `PhyUGen` (Minim tick) "
                 + "| PhyUGen share of 22.7 µs | ratio -O3 / PhyUGen | ratio native / PhyUGen | target | verdict |\n");
@@ -557,12 +550,12 @@ public final class FaustSideBySide {
         }
         s.append(String.join("; ", wall)).append(".\n\n");
         if (!largest.isEmpty()) {
-            s.append("**The largest 1-D string a PhyUGen plays in real time on one core** (Minim's tick, one listening "
-                    + "point, CPU time, best of the runs): ");
+            s.append("**The largest string a PhyUGen plays in real time on one core** (Minim's tick, one listening "
+                    + "point, CPU time, best of the runs; the strings of the table above): ");
             List<String> l = new ArrayList<>();
             for (double[] d : largest) {
-                l.add(String.format(Locale.ROOT, "%,d masses (%,d elements) %.1f µs per sample, %.0f%% of a core", (int) d[0],
-                        2 * (int) d[0] + 1, d[2] / 1000, 100 * d[2] / SAMPLE_NS));
+                l.add(String.format(Locale.ROOT, "%s, %,d masses (%,d elements): %.1f µs per sample, %.0f%% of a core",
+                        d[1] == 1 ? "3-D" : "1-D", (int) d[0], 2 * (int) d[0] + 1, d[3] / 1000, 100 * d[3] / SAMPLE_NS));
             }
             s.append(String.join("; ", l)).append(". Target (issue #27): at least 25,000 elements in real time.\n\n");
         }
@@ -570,7 +563,7 @@ public final class FaustSideBySide {
                 + "mass along z; no input), translated with `faust -double` and compiled against "
                 + "`tools/tactus/faust/offline.cpp` with `g++ -O3` and `g++ -O3 -march=native` (kept in build/faustbench). "
                 + "A Faust measurement is one process: `-bench` renders in blocks of 256 samples, a tenth of the samples "
-                + "untimed first, then about %.2f s timed; `-voices 16` renders 16 instances in turn per block. Tactus runs "
+                + "untimed first, then about %.2f s timed; `-voices V` renders V instances in turn per block. Tactus runs "
                 + "in one child JVM (`-Xms1g -Xmx1g -XX:+UseParallelGC`) that builds each model on first use, warms it for "
                 + "2 s, then measures about %.2f s of `computeStep()` + `Mass.getPosition(Vect3D)` per sample (each voice "
                 + "its own model) and %.2f s of a `Summer` ticked per sample with the model's `PhyUGen`(s) patched into it, "

@@ -130,6 +130,31 @@ public final class FaustCost {
         return m;
     }
 
+    /**
+     * The paper's 1-D metal plate (as the Faust agreement test and the bench use it): n x n Osc1D (M 1, K 0.0005)
+     * joined to their right and lower neighbours by SpringDamper1D (K 0.15, Z 0.00002), at rest, 44.1 kHz.
+     */
+    public static PhysicalModel plate(int n) {
+        PhysicalModel m = new PhysicalModel(44100, 60);
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                m.addOsc1D("p" + i + "_" + j, 1, 0.0005, 0, new Vect3D(i, j, 0), new Vect3D());
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                if (i + 1 < n) {
+                    m.addSpringDamper1D("x" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + (i + 1) + "_" + j);
+                }
+                if (j + 1 < n) {
+                    m.addSpringDamper1D("y" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + i + "_" + (j + 1));
+                }
+            }
+        }
+        m.init();
+        return m;
+    }
+
     /** @return export options for {@link #string}: output mass 2n/3 + 1 along z, a force input on mass n/5 + 1. */
     public static FaustExportOptions options(int n, boolean threeD) {
         return new FaustExportOptions().listen("m" + (2 * n / 3 + 1), 2).forceInput("m" + (n / 5 + 1), 2);
