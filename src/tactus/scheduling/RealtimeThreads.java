@@ -26,7 +26,7 @@ import java.util.regex.Pattern;
  * it once per thread, never from a thread that must not wait (an audio or haptic tick).
  */
 public final class RealtimeThreads {
-    private static final long CHRT_TIMEOUT_MS = 2000;
+    private static final long CHRT_TIMEOUT_MS = 5000;
     /** One request at a time: a request that only raises threads must see the previous request's result. */
     private static final Object REQUESTS = new Object();
     private static final Pattern THREAD_ID = Pattern.compile("\\d+");
