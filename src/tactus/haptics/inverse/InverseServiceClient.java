@@ -46,6 +46,7 @@ public final class InverseServiceClient implements AutoCloseable {
     public static final int WINDOW = 1 << 16;
 
     private final URI uri;
+    private final String profile;
     private final ForceMessage out = new ForceMessage();
     private final AtomicBoolean sending = new AtomicBoolean();
     private final Receiver receiver = new Receiver();
@@ -53,6 +54,7 @@ public final class InverseServiceClient implements AutoCloseable {
     private volatile CompletableFuture<WebSocket> pending;
     private volatile String lost;
     private volatile boolean closed;
+    private volatile boolean closedAfterZero;
     private volatile long sentNanos;
     private volatile long sent;
     private volatile long busy;
@@ -66,8 +68,9 @@ public final class InverseServiceClient implements AutoCloseable {
     private final long[] roundTrips = new long[WINDOW];
     private volatile long roundTripCount;
 
-    private InverseServiceClient(URI uri) {
+    private InverseServiceClient(URI uri, String profile) {
         this.uri = uri;
+        this.profile = profile;
     }
 
     /** Connects to the service at {@link #DEFAULT_URI}, waiting up to 2 s; see {@link #connect(URI, long)}. */
@@ -82,11 +85,16 @@ public final class InverseServiceClient implements AutoCloseable {
      * @throws HaplyLinkException with a message that names the address and what to check
      */
     public static InverseServiceClient connect(URI uri, long timeoutMillis) {
+        return connect(uri, timeoutMillis, PROFILE);
+    }
+
+    /** As {@link #connect(URI, long)}, with this profile name in the session handshake (the guard's own session). */
+    static InverseServiceClient connect(URI uri, long timeoutMillis, String profile) {
         if (uri == null || timeoutMillis < 1) {
             throw new IllegalArgumentException("InverseServiceClient.connect: need an address and a timeout >= 1 ms, got "
                     + uri + ", " + timeoutMillis);
         }
-        InverseServiceClient c = new InverseServiceClient(uri);
+        InverseServiceClient c = new InverseServiceClient(uri, profile);
         c.open(timeoutMillis);
         return c;
     }
@@ -110,7 +118,7 @@ public final class InverseServiceClient implements AutoCloseable {
             throw new HaplyLinkException("interrupted while connecting to the Haply Inverse Service at " + uri, e);
         }
         try {
-            socket.sendText(out.handshake(PROFILE), true).get(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L),
+            socket.sendText(out.handshake(profile), true).get(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L),
                     TimeUnit.MILLISECONDS);
         } catch (Exception e) {
             socket.abort();
@@ -212,6 +220,11 @@ public final class InverseServiceClient implements AutoCloseable {
     /** Why the connection ended (closed by the service, failed), or null while it is open. */
     public String lostReason() {
         return lost;
+    }
+
+    /** True if {@link #close()} ran and the service's socket took its zero force. */
+    public boolean closedAfterZero() {
+        return closedAfterZero;
     }
 
     /** True once {@link #close()} ran. */
@@ -374,7 +387,7 @@ public final class InverseServiceClient implements AutoCloseable {
             return;
         }
         closed = true;    // from here sendForce refuses, so nothing can follow the zero force
-        zeroForce();
+        closedAfterZero = zeroForce();
         WebSocket ws = socket;
         if (ws != null) {
             try {
