@@ -216,8 +216,8 @@ public final class Inverse3Device implements HapticDevice {
     @Override
     public void sendForce(double fx, double fy, double fz) {
         InverseServiceClient c = client;
-        if (c.lostReason() != null && reconnecting != null) {
-            forcesHeld++;         // no session with the service: nothing to send, no force at the device
+        if (c.lostReason() != null && reconnectMillis > 0 && !closed && gaveUp == null) {
+            forcesHeld++;         // no session with the service (the next update() reconnects): nothing to send
             guard.forceSent(0, 0, 0);
             return;
         }

@@ -1,22 +1,14 @@
 package tactus.haptics.inverse;
 
-import java.io.File;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.URI;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Paths;
-import java.security.CodeSource;
-import java.util.ArrayList;
-import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.locks.LockSupport;
 
 import com.fasterxml.jackson.core.JsonFactory;
 
 import tactus.haptics.GuardMemory;
+import tactus.haptics.GuardProcess;
 
 /**
  * The sketch's side of the {@link InverseGuard}: starts the guard process for a connection to the Inverse
@@ -36,7 +28,7 @@ final class InverseGuardLink {
     /** How often the heartbeat thread beats while a force is on, in milliseconds. */
     static final int BEAT_MS = 5;
     /** The link of a device without a guard. */
-    static final InverseGuardLink NONE = new InverseGuardLink(null, null, null);
+    static final InverseGuardLink NONE = new InverseGuardLink(null, null);
     /**
      * The heartbeat thread's name: its first 15 characters are those of the 2DIY's torque watchdog, which is how
      * a guard on Linux finds the thread in {@code /proc} to tell a starved JVM from a paused one.
@@ -45,15 +37,13 @@ final class InverseGuardLink {
     private static final String[] JVM_OPTIONS = {"-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-Xms8m", "-Xmx48m",
             "-Xss512k", "-XX:-UsePerfData", "-Djava.awt.headless=true"};
 
-    private final Process process;
+    private final GuardProcess guard;
     private final GuardMemory memory;
-    private OutputStream toGuard;
     private volatile boolean armed;
     private volatile boolean released;
 
-    private InverseGuardLink(Process process, OutputStream toGuard, GuardMemory memory) {
-        this.process = process;
-        this.toGuard = toGuard;
+    private InverseGuardLink(GuardProcess guard, GuardMemory memory) {
+        this.guard = guard;
         this.memory = memory;
     }
 
@@ -73,16 +63,8 @@ final class InverseGuardLink {
             return NONE;
         }
         try {
-            ProcessBuilder pb = new ProcessBuilder(command());
-            Map<String, String> env = pb.environment();
-            env.remove("JAVA_TOOL_OPTIONS");
-            env.remove("_JAVA_OPTIONS");
-            env.remove("JDK_JAVA_OPTIONS");
-            pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
-            pb.redirectError(ProcessBuilder.Redirect.INHERIT);
-            Process p = pb.start();
-            InverseGuardLink link = new InverseGuardLink(p, p.getOutputStream(), memory);
-            link.send(InverseGuard.HELLO + "\nheartbeat " + HEARTBEAT_STALE_MS + " " + memory.path() + "\nservice " + service);
+            InverseGuardLink link = new InverseGuardLink(GuardProcess.start(command(), "the Inverse3 guard"), memory);
+            link.guard.send(InverseGuard.HELLO + "\nheartbeat " + HEARTBEAT_STALE_MS + " " + memory.path() + "\nservice " + service);
             Thread beat = new Thread(link::beatWhileArmed, BEAT_THREAD);
             beat.setDaemon(true);
             beat.start();
@@ -104,7 +86,7 @@ final class InverseGuardLink {
             return false;
         }
         long deadline = System.nanoTime() + ms * 1_000_000L;
-        while (memory.state() == GuardMemory.STATE_WAITING && System.nanoTime() - deadline < 0 && process.isAlive()) {
+        while (memory.state() == GuardMemory.STATE_WAITING && System.nanoTime() - deadline < 0 && guard.process().isAlive()) {
             LockSupport.parkNanos(2_000_000L);
         }
         memory.unlink();
@@ -148,7 +130,7 @@ final class InverseGuardLink {
 
     /** Ends the link; with forceZeroed the guard exits at once, otherwise it zeroes the force itself now. */
     synchronized void release(boolean forceZeroed) {
-        if (toGuard == null) {
+        if (guard == null || released) {
             return;
         }
         released = true;
@@ -156,62 +138,19 @@ final class InverseGuardLink {
         memory.arm(false);
         memory.unlink();
         if (forceZeroed) {
-            send("clean");
+            guard.send("clean");
         }
-        try {
-            toGuard.close();
-        } catch (IOException ignored) {
-            // the guard is gone
-        }
-        toGuard = null;
+        guard.closeInput();
     }
 
     /** The guard process, or null (for tests). */
     Process process() {
-        return process;
-    }
-
-    private synchronized void send(String lines) {
-        if (toGuard == null) {
-            return;
-        }
-        try {
-            toGuard.write((lines + "\n").getBytes(StandardCharsets.UTF_8));
-            toGuard.flush();
-        } catch (IOException e) {
-            System.err.println("Tactus: the Inverse3 guard is gone (" + e.getMessage() + ")");
-            toGuard = null;
-        }
+        return guard == null ? null : guard.process();
     }
 
     /** The guard's command line: this JVM's java, small-footprint options, Tactus and jackson-core. */
     static List<String> command() {
-        String java = ProcessHandle.current().info().command()
-                .orElse(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
-        List<String> cmd = new ArrayList<>();
-        cmd.add(java);
-        for (String o : JVM_OPTIONS) {
-            cmd.add(o);
-        }
-        String tmp = System.getProperty("java.io.tmpdir");
-        if (tmp != null) {
-            cmd.add("-Djava.io.tmpdir=" + tmp);
-        }
-        Set<String> entries = new LinkedHashSet<>();
-        for (Class<?> c : new Class<?>[] {InverseGuard.class, GuardMemory.class, JsonFactory.class}) {
-            CodeSource cs = c.getProtectionDomain().getCodeSource();
-            if (cs == null || cs.getLocation() == null) {
-                throw new IllegalStateException("no code source for " + c.getName());
-            }
-            try {
-                entries.add(Paths.get(cs.getLocation().toURI()).toString());
-            } catch (java.net.URISyntaxException e) {
-                throw new IllegalStateException("code source of " + c.getName() + ": " + e.getMessage(), e);
-            }
-        }
-        cmd.add("-cp");
-        cmd.add(String.join(File.pathSeparator, entries));
-        cmd.add(InverseGuard.class.getName());
-        return cmd;
+        return GuardProcess.command(InverseGuard.class.getName(), JVM_OPTIONS, new String[] {"java.io.tmpdir"},
+                InverseGuard.class, GuardMemory.class, JsonFactory.class);
     }
 }

@@ -35,7 +35,8 @@ import tactus.haptics.HaplyLinkException;
  * fails later marks the client lost ({@link #lostReason()}); the next {@link #sendForce} throws. Every ending the
  * client controls sends zero force first: {@link #close()}, and a JVM shutdown hook (System.exit, SIGTERM,
  * Ctrl-C) while it is open. Where the JVM ends with no hook (SIGKILL, a crash) the operating system closes the
- * socket, and what the force does then is up to the service (see {@code docs/haptics.md}).
+ * socket, and what the force does then is up to the service, or to an {@link InverseGuard} (see
+ * {@link Inverse3Device#openGuarded} and {@code docs/haptics.md}).
  */
 public final class InverseServiceClient implements AutoCloseable {
     /** The service's simulation channel on this machine. */
