@@ -874,12 +874,14 @@ public final class InverseServiceEmulator implements AutoCloseable {
     }
 
     /**
-     * Runs the emulator until the process ends: {@code [--port N] [--hand still|tour] [--grip none|wired|wireless]}.
+     * Runs the emulator until the process ends: {@code [--port N] [--hand still|tour] [--grip none|wired|wireless]
+     * [--worst-case]} ({@link #setWorstCase()}: to see the Inverse3 guard at work).
      * Defaults: the service's port 10001, a hand that tours the workspace on a slow Lissajous path through a
      * spring (so that forces show as a lag), no VerseGrip.
      */
     public static void main(String[] args) throws InterruptedException {
         int port = SERVICE_PORT;
+        boolean worst = false;
         String hand = "tour";
         String grip = null;
         for (int i = 0; i < args.length; i++) {
@@ -891,11 +893,14 @@ public final class InverseServiceEmulator implements AutoCloseable {
             } else if ("--hand".equals(a) && next != null) {
                 hand = next;
                 i++;
+            } else if ("--worst-case".equals(a)) {
+                worst = true;
             } else if ("--grip".equals(a) && next != null) {
                 grip = "wired".equals(next) ? "verse_grip" : "wireless".equals(next) ? "wireless_verse_grip" : null;
                 i++;
             } else {
-                System.err.println("usage: InverseServiceEmulator [--port N] [--hand still|tour] [--grip none|wired|wireless]");
+                System.err.println("usage: InverseServiceEmulator [--port N] [--hand still|tour] [--grip none|wired|wireless] "
+                        + "[--worst-case]");
                 System.exit(2);
             }
         }
@@ -905,8 +910,12 @@ public final class InverseServiceEmulator implements AutoCloseable {
         }
         InverseServiceEmulator emu = start(port, dev);
         emu.setVerseGrip(grip);
+        if (worst) {
+            emu.setWorstCase();
+        }
         System.out.println("Tactus Inverse Service emulator on " + emu.uri() + ": one Inverse3 (" + DEVICE_ID + ")"
-                + (grip != null ? " and a " + grip.replace('_', ' ') : "") + ", hand: " + hand + ". Ctrl-C stops it.");
+                + (grip != null ? " and a " + grip.replace('_', ' ') : "") + ", hand: " + hand
+                + (worst ? ", worst case (forces held, kept on close, one owner session)" : "") + ". Ctrl-C stops it.");
         Runtime.getRuntime().addShutdownHook(new Thread(emu::close));
         while (true) {
             Thread.sleep(5000);

@@ -70,16 +70,16 @@ public final class Inverse3Device implements HapticDevice {
 
     /**
      * Connects as {@link #open(URI, long)} and starts an {@link InverseGuard} for this connection (unless the
-     * property {@code tactus.inverseGuard} is "false"), waiting up to 3 s more for the guard to open its own
+     * property {@code tactus.inverseGuard} is "false"), waiting up to 5 s more for the guard to open its own
      * session with the service.
      */
     public static Inverse3Device openGuarded(URI uri, long timeoutMillis) {
         Inverse3Device d = open(uri, timeoutMillis);
         if (InverseGuardLink.enabled()) {
             InverseGuardLink g = InverseGuardLink.start(uri);
-            if (g.isGuarded() && !g.awaitReady(3_000)) {
+            if (g.isGuarded() && !g.awaitReady(5_000)) {
                 System.err.println("Tactus: the Inverse3 guard could not open its own session with the service at " + uri
-                        + " in 3 s; it keeps trying");
+                        + " in 5 s; it keeps trying");
             }
             d.guard = g;
             d.guardActsSeen = g.guardActs();

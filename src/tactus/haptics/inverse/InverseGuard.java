@@ -46,7 +46,7 @@ public final class InverseGuard {
     /** How long a starved (runnable) sketch JVM may give no heartbeat before the guard acts anyway, in milliseconds. */
     static final long STARVED_LIMIT_MS = 500;
     private static final long PARENT_POLL_MS = 100;
-    private static final long CONNECT_TIMEOUT_MS = 1_000;
+    private static final long CONNECT_TIMEOUT_MS = 2_000;
 
     private volatile GuardMemory memory;
     private volatile long staleNanos = 100_000_000L;
@@ -109,7 +109,10 @@ public final class InverseGuard {
         }
     }
 
-    /** Keeps the guard's own session open (reopened every 0.5 s at most while the service is away). */
+    /**
+     * Keeps the guard's own session open (reopened every 0.5 s at most while the service is away); says ready once
+     * it has one, and unable after a failed attempt (the sketch's side keeps waiting a little for a later one).
+     */
     private void keepConnected() {
         boolean first = true;
         while (!acting) {

@@ -78,15 +78,15 @@ final class InverseGuardLink {
     }
 
     /**
-     * Waits up to ms for the guard to have its own session with the service; then removes the shared file's name.
-     * Returns true if the guard is ready.
+     * Waits up to ms for the guard to have its own session with the service (it keeps trying after a failed first
+     * attempt); then removes the shared file's name. Returns true if the guard is ready.
      */
     boolean awaitReady(long ms) {
         if (memory == null) {
             return false;
         }
         long deadline = System.nanoTime() + ms * 1_000_000L;
-        while (memory.state() == GuardMemory.STATE_WAITING && System.nanoTime() - deadline < 0 && guard.process().isAlive()) {
+        while (memory.state() != GuardMemory.STATE_READY && System.nanoTime() - deadline < 0 && guard.process().isAlive()) {
             LockSupport.parkNanos(2_000_000L);
         }
         memory.unlink();
