@@ -58,6 +58,12 @@ public final class HapticSession implements AutoCloseable {
      */
     public static final double TOUR_CENTRE_TIME = 2.5;
     /**
+     * How long a session waits for the Inverse Service to answer once something listens on its port, in
+     * milliseconds: a cold JVM on a loaded machine took over a second for the WebSocket upgrade and the snapshot.
+     * Where nothing listens, the connection is refused in a few milliseconds whatever this is.
+     */
+    public static final long CONNECT_MS = 5_000;
+    /**
      * How long a session on an Inverse3 keeps reconnecting when the Inverse Service drops the connection (stopped,
      * restarted), in milliseconds; then the loop stops with the reason.
      */
@@ -183,7 +189,7 @@ public final class HapticSession implements AutoCloseable {
         }
         java.net.URI uri = java.net.URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
         try {
-            Inverse3Device d = Inverse3Device.openGuarded(uri, 1000);
+            Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS);
             d.setReconnect(RECONNECT_MS);
             return new HapticSession(app, d, "Haply " + d.kind() + " through the Inverse Service at " + uri);
         } catch (HaplyLinkException e) {

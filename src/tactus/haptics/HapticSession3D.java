@@ -90,7 +90,7 @@ public final class HapticSession3D implements AutoCloseable {
         if (!"off".equals(off)) {
             URI uri = URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
             try {
-                Inverse3Device d = Inverse3Device.openGuarded(uri, 1000);
+                Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS);
                 d.setReconnect(HapticSession.RECONNECT_MS);
                 return onInverse(app, d, null, "Haply " + d.kind() + " through the Inverse Service at " + uri);
             } catch (HaplyLinkException e) {
