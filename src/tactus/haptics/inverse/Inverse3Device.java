@@ -185,7 +185,6 @@ public final class Inverse3Device implements HapticDevice {
             rampStart = System.nanoTime();
             reconnections++;
             reconnecting = null;
-            System.err.println("tactus: reconnected to " + describeWith(f) + "; the force ramps back in over " + RAMP_MS + " ms");
         }
         long f = c.read(state);
         if (f == lastFrame) {
@@ -257,16 +256,19 @@ public final class Inverse3Device implements HapticDevice {
     private void startReconnecting(InverseServiceClient old, String why) {
         long giveUp = reconnectMillis;
         reconnecting = "reconnecting to the Haply Inverse Service at " + uri + " (" + why + ")";
-        System.err.println("tactus: " + why + " Reconnecting for up to " + giveUp / 1000.0 + " s; no force meanwhile, the "
-                + "avatar holds");
         Thread t = new Thread(() -> reconnect(old, why, giveUp), "tactus-inverse-reconnect");
         t.setDaemon(true);
         reconnector = t;
         t.start();
     }
 
-    /** The reconnecting thread: tries with a back-off of 50 ms doubling to 1 s, until it connects or gives up. */
+    /**
+     * The reconnecting thread (all printing is here, not on the haptic thread): tries with a back-off of 50 ms
+     * doubling to 1 s, until it connects or gives up.
+     */
     private void reconnect(InverseServiceClient old, String why, long giveUpMillis) {
+        System.err.println("tactus: " + why + " Reconnecting for up to " + giveUpMillis / 1000.0 + " s; no force "
+                + "meanwhile, the avatar holds");
         old.close();
         long start = System.nanoTime();
         long delay = 50;
@@ -283,6 +285,8 @@ public final class Inverse3Device implements HapticDevice {
                     return;
                 }
                 fresh = n;
+                System.err.println("tactus: reconnected to the Haply Inverse Service at " + uri + " (attempt " + attempt
+                        + "); the force ramps back in over " + RAMP_MS + " ms");
                 return;
             } catch (HaplyLinkException e) {
                 last = e.getMessage();
@@ -312,11 +316,7 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public String describe() {
-        return describeWith(client);
-    }
-
-    private String describeWith(InverseServiceClient c) {
-        return "Haply " + kind() + " " + state.deviceId + " through the Inverse Service at " + c.uri();
+        return "Haply " + kind() + " " + state.deviceId + " through the Inverse Service at " + client.uri();
     }
 
     @Override
