@@ -529,14 +529,16 @@ public final class HapticSession implements AutoCloseable {
      * refreshed at most once a second, so that the figures stay readable (the string is made only then).
      */
     public String telemetryLine() {
-        HapticLoop l = loop;
-        return hand.telemetryLine(l, t -> {
-            String sched = l.scheduling();
-            return String.format(java.util.Locale.ROOT,
-                    "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
-                    100 * t.missedFraction(), t.jitterP99Us,
-                    sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
-        });
+        return hand.telemetryLine(loop, HapticSession::telemetryText);
+    }
+
+    private static String telemetryText(HapticLoop l) {
+        HapticTelemetry t = l.telemetry();
+        String sched = l.scheduling();
+        return String.format(java.util.Locale.ROOT,
+                "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
+                100 * t.missedFraction(), t.jitterP99Us,
+                sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
     }
 
     /**

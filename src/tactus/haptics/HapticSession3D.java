@@ -322,9 +322,13 @@ public final class HapticSession3D implements AutoCloseable {
      * telemetry snapshot copies the loop's window of 65,536 ticks).
      */
     public String telemetryLine() {
-        HapticLoop l = loop;
-        return hand.telemetryLine(l, t -> String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s",
-                t.achievedHz, t.nominalHz, 100 * t.missedFraction(), l.scheduling()));
+        return hand.telemetryLine(loop, HapticSession3D::telemetryText);
+    }
+
+    private static String telemetryText(HapticLoop l) {
+        HapticTelemetry t = l.telemetry();
+        return String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s", t.achievedHz,
+                t.nominalHz, 100 * t.missedFraction(), l.scheduling());
     }
 
     /** The force the hand felt at the last tick, in newtons along the model's axes, into out[0..2] (the draw thread). */

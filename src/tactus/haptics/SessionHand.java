@@ -63,14 +63,18 @@ final class SessionHand {
         return device != null && device.isReconnecting() ? banner + " (" + device.status() + ")" : banner;
     }
 
-    /** The loop's telemetry line as the format makes it, made again at most once a second (or for a new loop). */
-    synchronized String telemetryLine(HapticLoop loop, java.util.function.Function<HapticTelemetry, String> format) {
+    /**
+     * The loop's telemetry line as the format makes it (from the loop's {@link HapticLoop#telemetry()}), made again at
+     * most once a second or for a new loop; pass a method reference that captures nothing, so that a call in
+     * {@code draw()} allocates nothing between two refreshes.
+     */
+    synchronized String telemetryLine(HapticLoop loop, java.util.function.Function<HapticLoop, String> format) {
         if (loop == null) {
             return "no haptic loop";
         }
         long now = System.nanoTime();
         if (loop != telemetryOf || now - telemetryAt > 1_000_000_000L) {
-            telemetryText = format.apply(loop.telemetry());
+            telemetryText = format.apply(loop);
             telemetryOf = loop;
             telemetryAt = now;
         }

@@ -22,8 +22,9 @@ import tactus.haptics.HaplyLinkException;
  * <p>The sketch's side ({@link InverseGuardLink}) starts it and tells it, one line each on its standard input:
  * {@value #HELLO}; {@code heartbeat <staleMs> <path>} (a {@link GuardMemory}); {@code service <uri>}; and
  * {@code clean} when the sketch closed its connection after zero force. The guard opens its own session
- * (profile {@value #PROFILE}) at once, sends nothing through it while the sketch lives, and reopens it when the
- * service drops it. It acts:
+ * (profile {@value #PROFILE}) at once, sends no command through it while the sketch lives (an empty message every
+ * 0.5 s, as the haply crate's {@code send_ping}, keeps it alive), and reopens it when the service drops it. It
+ * acts:
  * <ul>
  * <li>when the heartbeat has not changed for the stale time while the sketch says a force is on (a paused JVM;
  * on Linux it waits up to {@value #STARVED_LIMIT_MS} ms while the sketch's heartbeat thread is runnable, that is
@@ -129,6 +130,8 @@ public final class InverseGuard {
                     m.setState(GuardMemory.STATE_READY);
                 }
                 first = false;
+            } else {
+                c.ping();   // an empty message, as the haply crate's send_ping: keeps an idle session alive
             }
             LockSupport.parkNanos(500_000_000L);
         }

@@ -251,6 +251,19 @@ public final class InverseServiceClient implements AutoCloseable {
     }
 
     private boolean trySend(double fx, double fy, double fz) {
+        return trySend(fx, fy, fz, false);
+    }
+
+    /**
+     * Sends an empty message, {@code {}} (what the haply crate's {@code send_ping} sends "to keep the WebSocket
+     * connection alive"), which the service answers with a state frame; no command. Returns false, sending
+     * nothing, while the previous message is still being written or once the connection is lost or closed.
+     */
+    boolean ping() {
+        return lost == null && !closed && trySend(0, 0, 0, true);
+    }
+
+    private boolean trySend(double fx, double fy, double fz, boolean empty) {
         if (!sending.compareAndSet(false, true)) {
             busy++;
             return false;
@@ -270,7 +283,7 @@ public final class InverseServiceClient implements AutoCloseable {
             }
             WebSocket ws = socket;
             sentNanos = System.nanoTime();
-            pending = ws.sendText(out.force(fx, fy, fz), true);
+            pending = ws.sendText(empty ? "{}" : out.force(fx, fy, fz), true);
             sent++;
             return true;
         } catch (RuntimeException e) {

@@ -14,7 +14,7 @@ public final class InverseGuardChild {
 
     /** Runs the child. */
     public static void main(String[] args) throws Exception {
-        Inverse3Device dev = Inverse3Device.openGuarded(URI.create(args[0]), 5000);
+        Inverse3Device dev = Inverse3Device.openGuarded(URI.create(args[0]), 20_000);
         HapticLoop loop = new HapticLoop(dev, new Inverse3LoopTest.ConstantAvatar(1, 0, 0));
         loop.useRealUnits();
         loop.start();

@@ -65,8 +65,10 @@ class InverseReconnectTest {
                 assertTrue(loop.isRunning(), String.valueOf(loop.failure()));
                 assertTrue(dev.status().contains("reconnected 1 time"), dev.status());
                 loop.stop();
-                List<double[]> end = second.receivedForces();
-                assertEquals(0, end.get(end.size() - 1)[0], 0, "stop() sends zero force to the new service");
+                await(() -> {
+                    List<double[]> end = second.receivedForces();
+                    return end.get(end.size() - 1)[0] == 0;
+                }, 5_000, "stop() sends zero force to the new service");
             }
         } finally {
             first.close();
