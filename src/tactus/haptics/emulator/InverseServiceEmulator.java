@@ -89,7 +89,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
     private volatile boolean keepOnClose;
     private volatile boolean exclusive;
     private WebSocketServerConnection owner;          // the session whose force is on (guarded by this)
-    private long lastForceNanos;                      // its last force command (guarded by this)
+    private volatile long lastForceNanos;             // its last force command (written holding this)
     private volatile long forceZeroedAtNanos;
     private volatile long forcesRefused;
     private volatile long forcesLapsed;
@@ -438,6 +438,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
      * at most 10 ms after its hold.
      */
     private void tick() {
+        double[] tick = new double[3];
         long wait = 1_000_000L;
         while (!closed) {
             java.util.concurrent.locks.LockSupport.parkNanos(wait);
@@ -449,16 +450,21 @@ public final class InverseServiceEmulator implements AutoCloseable {
                 wait = 50_000_000L;
                 continue;
             }
-            synchronized (this) {
-                long left = lastForceNanos + hold - System.nanoTime();
-                device.force(tmpF);
-                boolean on = tmpF[0] != 0 || tmpF[1] != 0 || tmpF[2] != 0;
-                if (on && left < 0) {
-                    applyForce(0, 0, 0);
-                    forcesLapsed++;
+            long left = lastForceNanos + hold - System.nanoTime();
+            device.force(tick);   // the device's own lock only: the serving threads are not held up
+            boolean on = tick[0] != 0 || tick[1] != 0 || tick[2] != 0;
+            if (on && left < 0) {
+                synchronized (this) {   // look again under the lock: a command may have come meanwhile
+                    if (lastForceNanos + hold - System.nanoTime() < 0) {
+                        device.force(tmpF);
+                        if (tmpF[0] != 0 || tmpF[1] != 0 || tmpF[2] != 0) {
+                            applyForce(0, 0, 0);
+                            forcesLapsed++;
+                        }
+                    }
                 }
-                wait = on && left > 0 ? Math.max(1_000_000L, Math.min(10_000_000L, left + 100_000L)) : 10_000_000L;
             }
+            wait = on && left > 0 ? Math.max(1_000_000L, Math.min(10_000_000L, left + 100_000L)) : 10_000_000L;
         }
     }
 
