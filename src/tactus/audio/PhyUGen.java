@@ -43,7 +43,7 @@ import tactus.PhysicalModel;
  * diverged model, or one whose steps throw, makes the whole output silent ({@link #isSilenced()}); a listening
  * point whose element left the model outputs 0 while the others keep sounding ({@link ListeningPoint#isSilent()});
  * an avatar that left the model gets zero force ({@link #isAvatarLost()}). Each is said once on standard error
- * (from a thread of its own, not the audio thread), with how to recover, and undone as soon as the model is fixed
+ * (from a helper thread, not the audio thread), with how to recover, and undone as soon as the model is fixed
  * (the divergence cleared, the element added again under its name). {@link #getLastError()} keeps the cause. A
  * subclass's own {@code uGenerate} runs its own code: {@link #stepModel()} and {@link #mix()} are guarded the same
  * way, but an exception its own code throws (including a {@code DivergenceException} from a direct
@@ -93,6 +93,8 @@ public class PhyUGen extends UGen {
     /** The binding whose accumulator the audio thread has emptied, and the one it lost. */
     private AvatarBinding avatarStarted;
     private AvatarBinding avatarGone;
+    /** The thread that computed the last sample: a new one is told to {@link AudioScheduling} (once per switch). */
+    private Thread computingThread;
 
     /** An avatar attached with {@link #attachAvatar(String, AvatarExchange)}: its name, handle and exchange. */
     private static final class AvatarBinding {
@@ -411,10 +413,20 @@ public class PhyUGen extends UGen {
     @Override
     protected void uGenerate(float[] channels) {
         try {
+            noteComputingThread();
             generate(channels);
         } catch (Throwable t) { // nothing may reach Minim's output loop
             faults.unexpected(t);
             silence(channels);
+        }
+    }
+
+    /** Tells {@link AudioScheduling} of a new computing thread: a field read per sample otherwise. */
+    private void noteComputingThread() {
+        Thread t = Thread.currentThread();
+        if (t != computingThread) {
+            computingThread = t;
+            AudioScheduling.computingOn(t);
         }
     }
 
@@ -670,6 +682,7 @@ public class PhyUGen extends UGen {
      */
     protected final void stepModel() {
         try {
+            noteComputingThread();
             SteppedModel m = steppedModel();
             countTowardsRecheck(m);
             java.util.concurrent.locks.Lock sampleLock = m.sampleLock();

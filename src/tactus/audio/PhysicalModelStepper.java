@@ -1,6 +1,7 @@
 package tactus.audio;
 
 import java.util.Arrays;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.IntConsumer;
 import tactus.Mass;
 import tactus.PhysicalModel;
@@ -12,7 +13,9 @@ import tactus.paramSystem;
  * realtime stepping ({@link PhysicalModel#beginRealtimeStepping()}): the thread that steps it (Minim's audio thread)
  * takes no lock and never waits for another thread; other threads' changes are queued and applied between two
  * samples. It also holds the model's rate ({@link PhysicalModel#holdSimRate(Object)}): from then on only
- * {@link #setStepRate(int)} changes it, and {@code setSimRate} from the sketch is refused.
+ * {@link #setStepRate(int)} changes it, and {@code setSimRate} from the sketch is refused. If the mode ends while the
+ * model is still played ({@code endRealtimeStepping()}), the next step asks the {@link AudioHelper} thread to begin
+ * it again (see {@link #step()}); to take the model back, stop playing it first.
  *
  * <p>Names are resolved once into handles (slots that keep the name, so that an element removed and added again
  * is found again by {@link #reattachMass(int)} and its kin). The per-sample methods run on the audio thread only,
@@ -23,7 +26,12 @@ import tactus.paramSystem;
 public final class PhysicalModelStepper implements SteppedModel {
     private final PhysicalModel model;
     private final boolean realUnits;
-    private final IntConsumer rateSetter;
+    private final Object rateHolder;
+    /** Sets the model's rate while this stepper holds it; replaced when realtime stepping is begun again. */
+    private volatile IntConsumer rateSetter;
+    /** True from when the audio thread finds the realtime mode ended until the helper has begun it again. */
+    private volatile boolean resuming;
+    private volatile long resumes;
     /** Scratch vectors of the audio thread (the per-sample methods); never touched by a setup method. */
     private final Vect3D audioScratch = new Vect3D();
     private final Vect3D audioTarget = new Vect3D();
@@ -86,6 +94,8 @@ public final class PhysicalModelStepper implements SteppedModel {
         this.model = model;
         this.realUnits = model.getParamSystem() == paramSystem.REAL_UNITS;
         this.rate = model.getSimRate();
+        this.rateHolder = rateHolder;
+        AudioHelper.ensureStarted();   // from this (the sketch's) thread, before an audio thread needs it
         model.beginRealtimeStepping();
         this.rateSetter = model.holdSimRate(rateHolder);
     }
@@ -111,10 +121,39 @@ public final class PhysicalModelStepper implements SteppedModel {
         rate = stepsPerSecond;
     }
 
+    /**
+     * One step on the audio thread, which takes the stepping role first, whoever stepped the model before. If the
+     * realtime mode has ended while the model is played ({@code endRealtimeStepping()} from a DivergenceListener or
+     * another thread), the step runs in locked mode and the {@link AudioHelper} thread is asked to begin the mode
+     * again and hold the rate again: in locked mode the audio thread would wait for the model's lock behind the
+     * sketch's threads and analyse stability itself, the gaps of docs/audio.md, "Audio under load".
+     */
     @Override
     public void step() {
-        model.takeRealtimeStepping(); // the audio thread steps this model, whoever stepped it before
+        if (!model.takeRealtimeStepping() && !resuming) {
+            resuming = true;
+            AudioHelper.post(this::resumeRealtime);
+        }
         model.computeStep();
+    }
+
+    /** On the helper thread: puts the model back in realtime stepping and holds its rate for the driver again. */
+    private void resumeRealtime() {
+        try {
+            model.beginRealtimeStepping();   // takes the model's lock, which ends a mode ended from inside a step
+            rateSetter = model.holdSimRate(rateHolder);
+            resumes++;
+        } catch (RuntimeException e) {
+            // the model refused (it is being torn down?): look again in a while, not at every sample
+            LockSupport.parkNanos(250_000_000L);
+        } finally {
+            resuming = false;
+        }
+    }
+
+    /** @return how many times this stepper put the model back in realtime stepping after the mode ended. */
+    public long realtimeResumes() {
+        return resumes;
     }
 
     /** @return true while the model has diverged and is frozen (until {@code clearDivergence()}). */

@@ -42,13 +42,20 @@ public final class SilentAudioOut implements AudioOut {
         this.bufferSize = bufferSize;
     }
 
+    /** The output's thread: {@link AudioScheduling} asks real-time scheduling for it when it plays a PhyUGen. */
+    static final class OutputThread extends Thread {
+        OutputThread(Runnable body) {
+            super(body, "Tactus silent audio out");
+        }
+    }
+
     @Override
     public synchronized void open() {
         if (running) {
             return;
         }
         running = true;
-        thread = new Thread(this::run, "Tactus silent audio out");
+        thread = new OutputThread(this::run);
         thread.setDaemon(true);
         thread.setPriority(Thread.MAX_PRIORITY);
         thread.start();

@@ -340,7 +340,8 @@ public final class Engine implements AutoCloseable {
      * Disabled: as before sweeps existed, every mass kernel first, then each run in two passes (near ends,
      * then far ends); kept to compare the two (benchmarks, tests). Both give the same physics: a mass whose
      * forces all come from its run's links (the inside of a chain) gets the same bits either way, others may
-     * differ by round-off (forces from several kernels are summed in another order).
+     * differ by round-off (forces from several kernels are summed in another order). Enabled, SpringDamper1D
+     * links that form a chain in batch order also run as one loop per chain (bit-identical to one by one).
      */
     public void setStencilSweeps(boolean enabled) {
         if (enabled != sweeps) {

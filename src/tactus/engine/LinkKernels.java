@@ -118,18 +118,137 @@ final class LinkKernels {
     /**
      * SpringDamper1D: on the signed difference {@code e = z1 - z2},
      * {@code F = K (e - l0) + Z (e(n) - e(n-1))}; mass 1 receives -F and mass 2 receives +F along z.
+     *
+     * <p>The links are taken in batch order. A stretch of at least {@link #MIN_SEGMENT} consecutive links that
+     * join slots {@code s + i} and {@code s + i + 1} (a 1-D string built in order, the rows of a plate) runs as
+     * a <em>segment</em>: one loop that carries the previous link's force and the far end's position in
+     * registers and writes each mass's force once, {@code F(t) = (F(t) + f(t - 1)) - f(t)}, where the
+     * link-by-link loop stores a force and loads it back at the next link. These are the same operations in the
+     * same order for each mass (a mass of a segment receives +f from the link before it, then -f from its own),
+     * so the results are bit for bit those of the link-by-link loop ({@code SpringDamper1DSegmentTest}), which
+     * {@link Engine#setStencilSweeps(boolean) setStencilSweeps(false)} selects for every link. A segment whose links
+     * all have the same parameters (a uniform string) holds them in registers too; which segments are uniform is
+     * looked at again after every parameter change.
      */
     static final class SpringDamper1D extends BatchKernel {
+        /** Fewest links for a segment: below this the link-by-link loop is as fast. */
+        static final int MIN_SEGMENT = 8;
+        /** Batch index ranges [segStart[q], segEnd[q]) run as segments; everything between them link by link. */
+        private final int[] segStart;
+        private final int[] segEnd;
+
         SpringDamper1D(LinkBatch b, StepPlan p) {
             super(b, p);
+            int[] starts = new int[4];
+            int[] ends = new int[4];
+            int count = 0;
+            int j = p.sweepRuns ? 0 : b.n; // stencil sweeps off (Engine.setStencilSweeps): every link one by one
+            while (j < b.n) {
+                int e = j;
+                while (e < b.n && b.b[e] == b.a[e] + 1 && (e == j || b.a[e] == b.a[e - 1] + 1)) {
+                    e++;
+                }
+                if (e - j >= MIN_SEGMENT) {
+                    if (count == starts.length) {
+                        starts = java.util.Arrays.copyOf(starts, 2 * count);
+                        ends = java.util.Arrays.copyOf(ends, 2 * count);
+                    }
+                    starts[count] = j;
+                    ends[count] = e;
+                    count++;
+                    j = e;
+                } else {
+                    j = Math.max(j + 1, e);
+                }
+            }
+            segStart = java.util.Arrays.copyOf(starts, count);
+            segEnd = java.util.Arrays.copyOf(ends, count);
+            uniform = new boolean[count];
+            segK = new double[count];
+            segZ = new double[count];
+            segL = new double[count];
         }
+
+        /** @return the number of segments (diagnostics and tests). */
+        int segments() {
+            return segStart.length;
+        }
+
+        /** The batch's parameter version that {@link #uniform} describes. */
+        private int seenParams = -1;
+        /** Per segment: true when its links share one stiffness, damping and length, held in segK, segZ, segL. */
+        private final boolean[] uniform;
+        private final double[] segK;
+        private final double[] segZ;
+        private final double[] segL;
 
         @Override
         public void run() {
+            if (b.paramsVersion != seenParams) {
+                findUniformSegments();
+            }
+            int from = 0;
+            for (int q = 0; q < segStart.length; q++) {
+                links(from, segStart[q]);
+                if (uniform[q]) {
+                    uniformSegment(segStart[q], segEnd[q], segK[q], segZ[q], segL[q]);
+                } else {
+                    segment(segStart[q], segEnd[q]);
+                }
+                from = segEnd[q];
+            }
+            links(from, b.n);
+        }
+
+        /** Looks again (after a parameter change) which segments have one set of parameters for all their links. */
+        private void findUniformSegments() {
+            seenParams = b.paramsVersion;
+            for (int q = 0; q < segStart.length; q++) {
+                int js = segStart[q];
+                double kk = b.k[js], zz = b.z[js], l = b.len[js];
+                boolean same = true;
+                for (int j = js + 1; j < segEnd[q] && same; j++) {
+                    // compared as bits: the constants must give exactly the values the links hold (-0.0, NaN)
+                    same = Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(kk)
+                            && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(zz)
+                            && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(l);
+                }
+                uniform[q] = same;
+                segK[q] = kk;
+                segZ[q] = zz;
+                segL[q] = l;
+            }
+        }
+
+        /** As {@link #segment}, for links that all have stiffness kk, damping zz and length l: fewer loads per link. */
+        private void uniformSegment(int js, int je, double kk, double zz, double l) {
+            final double[] z = p.z, fz = p.fz, dp = b.dp;
+            final int shift = b.a[js] - js;
+            double near = z[js + shift];
+            double far = z[js + shift + 1];
+            double e = near - far;
+            double f = kk * (e - l) + zz * (e - dp[js]);
+            dp[js] = e;
+            fz[js + shift] -= f;
+            for (int j = js + 1; j < je; j++) {
+                int t = j + shift;
+                near = far;
+                far = z[t + 1];
+                e = near - far;
+                double g = kk * (e - l) + zz * (e - dp[j]);
+                dp[j] = e;
+                fz[t] = (fz[t] + f) - g;
+                f = g;
+            }
+            fz[je + shift] += f;
+        }
+
+        /** The links [from, to) one by one. */
+        private void links(int from, int to) {
             final double[] z = p.z, fz = p.fz;
             final int[] ia = b.a, ib = b.b;
             final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
-            for (int j = 0, n = b.n; j < n; j++) {
+            for (int j = from; j < to; j++) {
                 int a = ia[j], c = ib[j];
                 double e = z[a] - z[c];
                 double f = k[j] * (e - l0[j]) + zz[j] * (e - dp[j]);
@@ -137,6 +256,30 @@ final class LinkKernels {
                 fz[a] -= f;
                 fz[c] += f;
             }
+        }
+
+        /** The links [js, je) (at least two), link js + i joining slots s + i and s + i + 1 (s = a[js]). */
+        private void segment(int js, int je) {
+            final double[] z = p.z, fz = p.fz;
+            final double[] k = b.k, zz = b.z, l0 = b.len, dp = b.dp;
+            final int shift = b.a[js] - js; // slot of mass 1 of link j
+            double near = z[js + shift];
+            double far = z[js + shift + 1];
+            double e = near - far;
+            double f = k[js] * (e - l0[js]) + zz[js] * (e - dp[js]);
+            dp[js] = e;
+            fz[js + shift] -= f;
+            for (int j = js + 1; j < je; j++) {
+                int t = j + shift;
+                near = far;
+                far = z[t + 1];
+                e = near - far;
+                double g = k[j] * (e - l0[j]) + zz[j] * (e - dp[j]);
+                dp[j] = e;
+                fz[t] = (fz[t] + f) - g;
+                f = g;
+            }
+            fz[je + shift] += f;
         }
     }
 

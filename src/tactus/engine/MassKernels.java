@@ -188,12 +188,35 @@ final class MassKernels {
         @Override
         void step(int from, int to) {
             if (plain) {
-                free(p.z, p.pz, p.fz, p.invM, from, to);
+                free1D(p.z, p.pz, p.fz, p.fx, p.fy, p.invM, from, to);
             } else {
-                damped(p.z, p.pz, p.fz, p.invM, p.retention, p.medium.gz, from, to);
+                damped1D(p.z, p.pz, p.fz, p.fx, p.fy, p.invM, p.retention, p.medium.gz, from, to);
             }
-            Arrays.fill(p.fx, from, to, 0.0);
-            Arrays.fill(p.fy, from, to, 0.0);
+        }
+    }
+
+    /** {@link #free} on z, clearing the x and y forces in the same loop (a 1-D mass moves one coordinate). */
+    static void free1D(double[] x, double[] px, double[] f, double[] f1, double[] f2, double[] im, int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + (xi - px[i]) + f[i] * im[i];
+            px[i] = xi;
+            f[i] = 0;
+            f1[i] = 0;
+            f2[i] = 0;
+        }
+    }
+
+    /** {@link #damped} on z, clearing the x and y forces in the same loop. */
+    static void damped1D(double[] x, double[] px, double[] f, double[] f1, double[] f2, double[] im, double[] d, double g,
+                         int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + d[i] * (xi - px[i]) + f[i] * im[i] + g;
+            px[i] = xi;
+            f[i] = 0;
+            f1[i] = 0;
+            f2[i] = 0;
         }
     }
 
@@ -235,9 +258,21 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            oscillate(p.z, p.pz, p.restZ, p.fz, p.invM, p.retention, p.oscStiffnessPerMass, p.medium.gz, from, to);
-            Arrays.fill(p.fx, from, to, 0.0);
-            Arrays.fill(p.fy, from, to, 0.0);
+            oscillate1D(p.z, p.pz, p.restZ, p.fz, p.fx, p.fy, p.invM, p.retention, p.oscStiffnessPerMass,
+                    p.medium.gz, from, to);
+        }
+    }
+
+    /** {@link #oscillate} on z, clearing the x and y forces in the same loop (an Osc1D moves one coordinate). */
+    static void oscillate1D(double[] x, double[] px, double[] r, double[] f, double[] f1, double[] f2, double[] im,
+                            double[] d, double[] k, double g, int s, int e) {
+        for (int i = s; i < e; i++) {
+            double xi = x[i];
+            x[i] = xi + d[i] * (xi - px[i]) - k[i] * (xi - r[i]) + f[i] * im[i] + g;
+            px[i] = xi;
+            f[i] = 0;
+            f1[i] = 0;
+            f2[i] = 0;
         }
     }
 

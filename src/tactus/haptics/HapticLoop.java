@@ -5,6 +5,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Pattern;
+import tactus.scheduling.RealtimeThreads;
 
 /**
  * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,
@@ -88,6 +89,8 @@ public final class HapticLoop implements AutoCloseable {
     /** The link whose beginStepping() the last start() called, until stop() ends it. */
     private volatile AvatarLink stepping;
     private DecoupledAvatar ownDecoupler;
+    /** Between the device and the avatar: the passivity observer and controller, coupling, friction compensation. */
+    private final HapticPort port = new HapticPort();
 
     private volatile boolean running;
     private volatile Thread thread;
@@ -114,6 +117,8 @@ public final class HapticLoop implements AutoCloseable {
     private final double[] force = new double[3];
     private final double[] held = new double[2];   // the force per step being rendered (model units)
     private final double[] tau = new double[2];
+    private final double[] portTarget = new double[3];
+    private final double[] portForce = new double[3];
     private volatile double devX = Double.NaN;
     private volatile double devY = Double.NaN;
     private volatile double torque1;
@@ -454,6 +459,7 @@ public final class HapticLoop implements AutoCloseable {
         if (spatial != null) {
             mapping = effectiveMapping();
         }
+        port.start(1.0 / rateHz);
         if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar) && !avatar.neverWaits()) {
             ownDecoupler = new DecoupledAvatar(avatar);
             active = ownDecoupler;
@@ -601,6 +607,96 @@ public final class HapticLoop implements AutoCloseable {
         return joint == 1 ? torque1 : torque2;
     }
 
+    /**
+     * Switches the time-domain passivity controller on or off, at any time (also while the loop runs; default off).
+     * When on, the loop adds a damper to the force whenever the {@linkplain #passivity() observer} sees the port give
+     * the hand more energy than it took (Hannaford &amp; Ryu 2002): a stiff wall that would buzz or bounce settles,
+     * and the hand never receives energy the model did not hold. A soft model that stays passive is not touched:
+     * measured figures are in docs/haptics-stability.md.
+     */
+    public void setPassivityControl(boolean on) {
+        port.setControl(on);
+    }
+
+    /** True while the passivity controller is on. */
+    public boolean isPassivityControl() {
+        return port.isControl();
+    }
+
+    /**
+     * The passivity observer: the energy (J, at the handle) that flowed into the model and back to the hand since the
+     * loop started, and the controller's activity. Read it from any thread, without a lock.
+     */
+    public PassivityObserver passivity() {
+        return port.observer();
+    }
+
+    /**
+     * Sets the largest damping (N s/m; finite, > 0; default 10) the passivity controller may add in one tick. More
+     * dissipates a burst of energy faster; too much, applied a tick late, shakes a light handle. A good value is near
+     * m / (T (d + 1/2)) for a handle (and hand) of mass m, period T and d ticks of exchange delay: the default suits
+     * the 2DIY (about 0.02 kg along an axis, measured on the emulator); a heavier device takes more.
+     */
+    public void setPassivityDampingLimit(double nsPerM) {
+        beforeStart("setPassivityDampingLimit");
+        if (!(nsPerM > 0) || !Double.isFinite(nsPerM)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityDampingLimit: limit must be a finite number > 0 N s/m, got "
+                    + nsPerM);
+        }
+        port.setDampingLimit(nsPerM);
+    }
+
+    /**
+     * Tells the passivity observer how many ticks pass between a position reading and the force sent at that tick
+     * taking effect at the handle (0..8; default 0, a hold alone), so that it charges each displacement to the force
+     * that acted over it. Configure before {@link #start()}.
+     */
+    public void setExchangeDelay(int ticks) {
+        beforeStart("setExchangeDelay");
+        if (ticks < 0 || ticks > HapticPort.MAX_DELAY) {
+            throw new IllegalArgumentException("HapticLoop.setExchangeDelay: delay must be 0.." + HapticPort.MAX_DELAY
+                    + " ticks, got " + ticks);
+        }
+        port.setDelay(ticks);
+    }
+
+    /** The exchange delay (ticks) the passivity observer assumes. */
+    public int exchangeDelay() {
+        return port.delay();
+    }
+
+    /** The largest damping (N s/m) the passivity controller may add in one tick. */
+    public double passivityDampingLimit() {
+        return port.dampingLimit();
+    }
+
+    /**
+     * Puts a {@link VirtualCoupling} between the handle and the avatar (null: none, the default): the avatar follows
+     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. Configure before
+     * {@link #start()}.
+     */
+    public void setVirtualCoupling(VirtualCoupling coupling) {
+        beforeStart("setVirtualCoupling");
+        port.setCoupling(coupling);
+    }
+
+    /** The virtual coupling between the handle and the avatar, or null. */
+    public VirtualCoupling virtualCoupling() {
+        return port.coupling();
+    }
+
+    /**
+     * Adds {@link FrictionCompensation} along the handle's motion (null: none, the default), at any time.
+     */
+    public void setFrictionCompensation(FrictionCompensation compensation) {
+        port.setFriction(compensation);
+    }
+
+    /** The friction compensation in use, or null. */
+    public FrictionCompensation frictionCompensation() {
+        return port.friction();
+    }
+
     /** Ticks run so far. */
     public long ticks() {
         return ticks;
@@ -634,14 +730,14 @@ public final class HapticLoop implements AutoCloseable {
             int below = Math.max(1, realtimePriority - 1);
             Map<Pattern, Integer> others = new LinkedHashMap<>();
             if (realtimeJvmThreads) {
-                others.put(RealtimeScheduling.SAFEPOINT_THREADS, below);
-                others.put(RealtimeScheduling.COMPILER_THREADS, 1);
+                others.put(RealtimeThreads.SAFEPOINT_THREADS, below);
+                others.put(RealtimeThreads.COMPILER_THREADS, 1);
             }
             others.put(SAFETY_THREADS, realtimePriority);
             // the watchdog was started just after this thread and names itself as it starts: wait until Linux
             // shows its name, or the chrt run would miss it and leave it at normal priority
-            RealtimeScheduling.awaitThreadNamed(LOOP_WATCHDOG_NAME, WATCHDOG_NAME_WAIT_MS);
-            RealtimeScheduling.Grant g = RealtimeScheduling.applyWithCurrentThread(others, realtimePriority,
+            RealtimeThreads.awaitThreadNamed(LOOP_WATCHDOG_NAME, WATCHDOG_NAME_WAIT_MS);
+            RealtimeThreads.Grant g = RealtimeThreads.applyWithCurrentThread(others, realtimePriority,
                     deadlineScheduling ? period * DEADLINE_SHARE_PERCENT / 100 : 0, period);
             String jvm = realtimeJvmThreads ? "; VM and GC threads at " + below + ", JIT compilers at 1" : "";
             scheduling = !g.granted() ? "normal priority (real-time refused: " + g.why + ")"
@@ -742,7 +838,8 @@ public final class HapticLoop implements AutoCloseable {
         long steps;
         try {
             if (poseOk) {
-                active.setTarget(sx * alpha * x + ox, alpha * y + oy, oz);
+                port.sense(x, y, 0, portTarget);
+                active.setTarget(sx * alpha * portTarget[0] + ox, alpha * portTarget[1] + oy, oz);
             }
             if (mode == Mode.HAPTICS_ONLY) {
                 active.step(stepsPerTick);
@@ -774,24 +871,37 @@ public final class HapticLoop implements AutoCloseable {
         if (Double.isNaN(x)) {
             forceX = 0;                      // no position yet (start-up): nothing to render
             forceY = 0;
+            port.sent(0);
             return writeTorques(0, 0);
+        }
+        if (poseOk && Double.isFinite(fx) && Double.isFinite(fy)) {
+            portForce[0] = fx;
+            portForce[1] = fy;
+            portForce[2] = 0;
+            port.command(portForce);
+            fx = portForce[0];
+            fy = portForce[1];
         }
         if (!poseOk || !Double.isFinite(fx) || !Double.isFinite(fy) || Math.hypot(fx, fy) > forceLimit) {
             faults++;
             forceX = 0;
             forceY = 0;
+            port.sent(0);
             return writeTorques(0, 0);
         }
         forceX = fx;
         forceY = fy;
         kin.torques(fx, fy, torqueGain, tau);
         double m = Math.max(Math.abs(tau[0]), Math.abs(tau[1]));
+        double scale = torqueGain;
         if (m > torqueLimit) {
             double s = torqueLimit / m;
             tau[0] *= s;
             tau[1] *= s;
+            scale *= s;
             clamped++;
         }
+        port.sent(scale);                    // the force at the handle is g J^-T tau: the gain and the limit's scale
         return writeTorques(tau[0], tau[1]);
     }
 
@@ -873,7 +983,8 @@ public final class HapticLoop implements AutoCloseable {
                 pos3[0] = devX;
                 pos3[1] = devY;
                 pos3[2] = devZ;
-                m.toModel(pos3, model3);
+                port.sense(devX, devY, devZ, portTarget);
+                m.toModel(portTarget, model3);
                 active.setTarget(model3[0], model3[1], model3[2]);
             }
             if (mode == Mode.HAPTICS_ONLY) {
@@ -903,23 +1014,32 @@ public final class HapticLoop implements AutoCloseable {
             forceX = 0;
             forceY = 0;
             forceZ = 0;
+            port.sent(0);
             return sendDeviceForce(0, 0, 0);
         }
         m.forceToDevice(held3, beta, force3);
+        if (spatial.dimensions() == 2) {
+            force3[2] = 0;
+        }
+        if (Double.isFinite(force3[0]) && Double.isFinite(force3[1]) && Double.isFinite(force3[2])) {
+            port.command(force3);
+        }
         double fx = force3[0];
         double fy = force3[1];
-        double fz = spatial.dimensions() == 2 ? 0 : force3[2];
+        double fz = force3[2];
         if (!Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)
                 || Math.sqrt(fx * fx + fy * fy + fz * fz) > forceLimit) {
             faults++;
             forceX = 0;
             forceY = 0;
             forceZ = 0;
+            port.sent(0);
             return sendDeviceForce(0, 0, 0);
         }
         forceX = fx;
         forceY = fy;
         forceZ = fz;
+        port.sent(1);
         return sendDeviceForce(fx, fy, fz);
     }
 

@@ -57,6 +57,17 @@ public final class HapticSession implements AutoCloseable {
      * soon, so that a scene built in the middle is touched within the first seconds.
      */
     public static final double TOUR_CENTRE_TIME = 2.5;
+    /**
+     * How long a session waits for the Inverse Service to answer once something listens on its port, in
+     * milliseconds: a cold JVM on a loaded machine took over a second for the WebSocket upgrade and the snapshot.
+     * Where nothing listens, the connection is refused in a few milliseconds whatever this is.
+     */
+    public static final long CONNECT_MS = 5_000;
+    /**
+     * How long a session on an Inverse3 keeps reconnecting when the Inverse Service drops the connection (stopped,
+     * restarted), in milliseconds; then the loop stops with the reason.
+     */
+    public static final long RECONNECT_MS = 30_000;
     /** Half-size of the idle tour against the workspace's half-size (each axis). */
     public static final double TOUR_EXTENT = 0.7;
 
@@ -77,17 +88,12 @@ public final class HapticSession implements AutoCloseable {
     private final double[] tmp = new double[2];
 
     private volatile HapticLoop loop;
-    private volatile boolean mouseSeen;
-    private volatile boolean idleTour = true;
-    private long tourStart;                        // System.nanoTime() of the first toured pre(); 0: not yet
+    private final SessionHand hand = new SessionHand();
     private final double[] tourTarget = new double[2];
     private double viewScale = 1;
     private double viewX;
     private double viewY;
     private boolean closed;
-    private HapticLoop telemetryOf;
-    private long telemetryAt;
-    private String telemetryText = "";
 
     private HapticSession(PApplet app, HaplyPreset preset, HaplyConnection c, String fallbackReason) {
         this.app = app;
@@ -183,7 +189,8 @@ public final class HapticSession implements AutoCloseable {
         }
         java.net.URI uri = java.net.URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
         try {
-            Inverse3Device d = Inverse3Device.open(uri, 1000);
+            Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS);
+            d.setReconnect(RECONNECT_MS);
             return new HapticSession(app, d, "Haply " + d.kind() + " through the Inverse Service at " + uri);
         } catch (HaplyLinkException e) {
             return null;
@@ -345,10 +352,8 @@ public final class HapticSession implements AutoCloseable {
      * the hand tours on its own until the mouse moves), and why the loop stopped if it stopped by itself.
      */
     public String status() {
-        HapticLoop l = loop;
-        String f = l == null ? null : l.failure();
-        String s = isTouring() ? boardStatus + "; the hand tours on its own until you move the mouse" : boardStatus;
-        return f == null ? s : s + ". Haptic loop stopped: " + f;
+        return SessionHand.status(SessionHand.withReconnection(boardStatus, inverse == null ? null : inverse.inverse()),
+                isTouring(), loop);
     }
 
     /**
@@ -359,12 +364,12 @@ public final class HapticSession implements AutoCloseable {
      * was; switching it on again resumes the path from where its clock stands.
      */
     public void setIdleTour(boolean on) {
-        idleTour = on;
+        hand.setIdleTour(on);
     }
 
     /** True if the idle tour is switched on (see {@link #setIdleTour(boolean)}); it may have ended already. */
     public boolean isIdleTour() {
-        return idleTour;
+        return hand.idleTour();
     }
 
     /**
@@ -372,7 +377,7 @@ public final class HapticSession implements AutoCloseable {
      * {@code pre()}, and no mouse event yet.
      */
     public boolean isTouring() {
-        return idleTour && !mouseSeen && app != null && isEmulated();
+        return hand.touring(isEmulated(), app != null);
     }
 
     /**
@@ -524,22 +529,16 @@ public final class HapticSession implements AutoCloseable {
      * refreshed at most once a second, so that the figures stay readable (the string is made only then).
      */
     public String telemetryLine() {
-        HapticLoop l = loop;
-        if (l == null) {
-            return "no haptic loop";
-        }
-        long now = System.nanoTime();
-        if (l != telemetryOf || now - telemetryAt > 1_000_000_000L) {
-            HapticTelemetry t = l.telemetry();
-            String sched = l.scheduling();
-            telemetryText = String.format(java.util.Locale.ROOT,
-                    "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
-                    100 * t.missedFraction(), t.jitterP99Us,
-                    sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
-            telemetryOf = l;
-            telemetryAt = now;
-        }
-        return telemetryText;
+        return hand.telemetryLine(loop, HapticSession::telemetryText);
+    }
+
+    private static String telemetryText(HapticLoop l) {
+        HapticTelemetry t = l.telemetry();
+        String sched = l.scheduling();
+        return String.format(java.util.Locale.ROOT,
+                "haptics %.0f Hz of %.0f, %.2f %% missed, jitter p99 %.0f us, %s", t.achievedHz, t.nominalHz,
+                100 * t.missedFraction(), t.jitterP99Us,
+                sched.startsWith("real-time") ? "real-time" : sched.startsWith("normal") ? "normal priority" : sched);
     }
 
     /**
@@ -550,14 +549,10 @@ public final class HapticSession implements AutoCloseable {
         if (app == null) {
             return;
         }
-        if (mouseSeen) {
+        if (hand.mouseSeen()) {
             handTowardsPixel(app.mouseX, app.mouseY);
         } else if (isTouring()) {
-            long now = System.nanoTime();
-            if (tourStart == 0) {
-                tourStart = now == 0 ? 1 : now;
-            }
-            idleTourTarget((now - tourStart) * 1e-9, tourTarget);
+            idleTourTarget(hand.tourSeconds(System.nanoTime()), tourTarget);
             connection.setHandTarget(tourTarget[0], tourTarget[1]);
         }
     }
@@ -567,10 +562,7 @@ public final class HapticSession implements AutoCloseable {
      * and hands the hand to the mouse.
      */
     public void mouseEvent(MouseEvent e) {
-        int a = e.getAction();
-        if (a == MouseEvent.MOVE || a == MouseEvent.DRAG || a == MouseEvent.PRESS) {
-            mouseSeen = true;
-        }
+        hand.mouseEvent(e);
     }
 
     /**

@@ -56,17 +56,12 @@ public final class HapticSession3D implements AutoCloseable {
     private final int height;
     private volatile WorkspaceMapping mapping;
     private volatile HapticLoop loop;
-    private volatile boolean mouseSeen;
-    private volatile boolean idleTour = true;
+    private final SessionHand hand = new SessionHand();
     private final InverseState gripState = new InverseState();
-    private long tourStart;
     private boolean closed;
     private final double[] tmpModel = new double[3];
     private final double[] tmpDevice = new double[3];
     private final double[] tmpForce = new double[3];
-    private HapticLoop telemetryOf;
-    private long telemetryAt;
-    private String telemetryText = "";
 
     private HapticSession3D(PApplet app, HapticDevice device, Inverse3Device inverse, InverseServiceEmulator emulator,
                             HaplyConnection board, String banner, double[] centre, double[] halfSize) {
@@ -95,7 +90,8 @@ public final class HapticSession3D implements AutoCloseable {
         if (!"off".equals(off)) {
             URI uri = URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
             try {
-                Inverse3Device d = Inverse3Device.open(uri, 1000);
+                Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS);
+                d.setReconnect(HapticSession.RECONNECT_MS);
                 return onInverse(app, d, null, "Haply " + d.kind() + " through the Inverse Service at " + uri);
             } catch (HaplyLinkException e) {
                 why = e.getMessage();
@@ -312,36 +308,27 @@ public final class HapticSession3D implements AutoCloseable {
 
     /** Switches the emulated hand's idle tour (on by default; the first mouse move ends it). */
     public void setIdleTour(boolean on) {
-        idleTour = on;
+        hand.setIdleTour(on);
     }
 
     /** One line for the screen: which device, and why the loop stopped if it stopped by itself. */
     public String status() {
-        HapticLoop l = loop;
-        String f = l == null ? null : l.failure();
-        String s = isEmulated() && idleTour && !mouseSeen && app != null
-                ? banner + "; the hand tours on its own until you move the mouse" : banner;
-        return f == null ? s : s + ". Haptic loop stopped: " + f;
+        return SessionHand.status(SessionHand.withReconnection(banner, inverse), hand.touring(isEmulated(), app != null),
+                loop);
     }
 
     /**
      * A short line of telemetry, as {@link HapticSession#telemetryLine()}, refreshed at most once a second (a
      * telemetry snapshot copies the loop's window of 65,536 ticks).
      */
-    public synchronized String telemetryLine() {
-        HapticLoop l = loop;
-        if (l == null) {
-            return "no haptic loop";
-        }
-        long now = System.nanoTime();
-        if (l != telemetryOf || now - telemetryAt > 1_000_000_000L) {
-            HapticTelemetry t = l.telemetry();
-            telemetryText = String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s", t.achievedHz,
-                    t.nominalHz, 100 * t.missedFraction(), l.scheduling());
-            telemetryOf = l;
-            telemetryAt = now;
-        }
-        return telemetryText;
+    public String telemetryLine() {
+        return hand.telemetryLine(loop, HapticSession3D::telemetryText);
+    }
+
+    private static String telemetryText(HapticLoop l) {
+        HapticTelemetry t = l.telemetry();
+        return String.format(java.util.Locale.ROOT, "haptics %.0f Hz of %.0f, %.2f %% missed, %s", t.achievedHz,
+                t.nominalHz, 100 * t.missedFraction(), l.scheduling());
     }
 
     /** The force the hand felt at the last tick, in newtons along the model's axes, into out[0..2] (the draw thread). */
@@ -365,19 +352,15 @@ public final class HapticSession3D implements AutoCloseable {
         if (app == null || emulator == null) {
             return;
         }
-        long now = System.nanoTime();
-        if (tourStart == 0) {
-            tourStart = now == 0 ? 1 : now;
-        }
-        double t = (now - tourStart) * 1e-9;
-        if (mouseSeen) {
+        double t = hand.tourSeconds(System.nanoTime());
+        if (hand.mouseSeen()) {
             tmpModel[0] = app.mouseX;
             tmpModel[1] = app.mouseY;
             tmpModel[2] = 0;
             mapping.toDevice(tmpModel, tmpDevice);
             int depth = mapping.deviceAxis(2);
             tmpDevice[depth] = centre[depth] + 0.6 * halfSize[depth] * Math.sin(2 * Math.PI * t / 8);
-        } else if (idleTour) {
+        } else if (hand.idleTour()) {
             idleTourTarget(t, tmpDevice);
         } else {
             return;
@@ -401,10 +384,7 @@ public final class HapticSession3D implements AutoCloseable {
 
     /** Processing calls this for mouse events: the first move, drag or press ends the idle tour. */
     public void mouseEvent(MouseEvent e) {
-        int a = e.getAction();
-        if (a == MouseEvent.MOVE || a == MouseEvent.DRAG || a == MouseEvent.PRESS) {
-            mouseSeen = true;
-        }
+        hand.mouseEvent(e);
     }
 
     /** Draws {@link #status()} in the bottom-left corner, whatever the sketch's transforms (they are restored). */

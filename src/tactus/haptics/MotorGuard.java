@@ -76,7 +76,7 @@ public final class MotorGuard {
      * stop signal the whole process group, and the guard must outlive the sketch to do its job (it ends on its own once the
      * sketch is gone; SIGKILL still ends it).
      */
-    private static void ignoreTerminalSignals() {
+    static void ignoreTerminalSignals() {
         for (String name : new String[] {"INT", "TERM", "HUP", "TSTP"}) {
             try {
                 sun.misc.Signal.handle(new sun.misc.Signal(name), sun.misc.SignalHandler.SIG_IGN);

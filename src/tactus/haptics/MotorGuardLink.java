@@ -1,17 +1,9 @@
 package tactus.haptics;
 
 import com.fazecast.jSerialComm.SerialPort;
-import java.io.File;
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Paths;
-import java.security.CodeSource;
-import java.util.ArrayList;
-import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
 
 /**
  * The board's side of the {@link MotorGuard}: starts the guard process when a board opens a serial port (before
@@ -25,7 +17,7 @@ final class MotorGuardLink {
     /** System property that turns the guard off when "false" (default on). */
     static final String PROPERTY = "tactus.motorGuard";
     /** The link of a board without a guard (in-process transports, or the guard turned off). */
-    static final MotorGuardLink NONE = new MotorGuardLink(null, null, GuardHeartbeat.NONE);
+    static final MotorGuardLink NONE = new MotorGuardLink(null, GuardHeartbeat.NONE);
     /**
      * How long the sketch's JVM may give no heartbeat, while a torque is on, before the guard zeroes the motors,
      * in milliseconds. A running JVM beats at every torque write and at least every 5 ms (the board's watchdog
@@ -46,13 +38,11 @@ final class MotorGuardLink {
     private static final String[] INHERITED_PROPERTIES = {"java.io.tmpdir", "fazecast.jSerialComm.appid",
             "jSerialComm.library.path", "jSerialComm.library.randomizeNativeName", "os.arch_full"};
 
-    private final Process process;
+    private final GuardProcess guard;   // null for NONE
     private final GuardHeartbeat heartbeat;
-    private OutputStream toGuard;
 
-    private MotorGuardLink(Process process, OutputStream toGuard, GuardHeartbeat heartbeat) {
-        this.process = process;
-        this.toGuard = toGuard;
+    private MotorGuardLink(GuardProcess guard, GuardHeartbeat heartbeat) {
+        this.guard = guard;
         this.heartbeat = heartbeat;
     }
 
@@ -135,15 +125,7 @@ final class MotorGuardLink {
                     + "paused sketch are not zeroed");
         }
         try {
-            ProcessBuilder pb = new ProcessBuilder(command());
-            Map<String, String> env = pb.environment();
-            env.remove("JAVA_TOOL_OPTIONS");   // a debugger agent there would make the guard fail to start
-            env.remove("_JAVA_OPTIONS");
-            env.remove("JDK_JAVA_OPTIONS");
-            pb.redirectOutput(ProcessBuilder.Redirect.DISCARD);
-            pb.redirectError(ProcessBuilder.Redirect.INHERIT);
-            Process p = pb.start();
-            MotorGuardLink link = new MotorGuardLink(p, p.getOutputStream(), heartbeat);
+            MotorGuardLink link = new MotorGuardLink(GuardProcess.start(command(), "the motor guard"), heartbeat);
             link.send(MotorGuard.HELLO + (heartbeat.isShared() ? "\nheartbeat " + HEARTBEAT_STALE_MS + " "
                     + heartbeat.path() : "") + "\nport " + baud + " " + portName);
             return link;
@@ -165,7 +147,7 @@ final class MotorGuardLink {
         }
         long deadline = System.nanoTime() + ms * 1_000_000L;
         while (heartbeat.state() == GuardHeartbeat.STATE_WAITING && System.nanoTime() - deadline < 0
-                && process.isAlive()) {
+                && guard.process().isAlive()) {
             java.util.concurrent.locks.LockSupport.parkNanos(1_000_000);
         }
         long state = heartbeat.state();
@@ -193,7 +175,7 @@ final class MotorGuardLink {
      * (the board has let go of the port).
      */
     synchronized void release(boolean motorsZeroed) {
-        if (toGuard == null) {
+        if (guard == null || !guard.isOpen()) {
             return;
         }
         heartbeat.arm(false);
@@ -201,66 +183,23 @@ final class MotorGuardLink {
         if (motorsZeroed) {
             send("clean");
         }
-        try {
-            toGuard.close();
-        } catch (IOException ignored) {
-            // the guard is gone
-        }
-        toGuard = null;
+        guard.closeInput();
     }
 
     /** The guard process, or null for {@link #NONE} (for tests). */
     Process process() {
-        return process;
+        return guard == null ? null : guard.process();
     }
 
-    private synchronized void send(String lines) {
-        if (toGuard == null) {
-            return;
-        }
-        try {
-            toGuard.write((lines + "\n").getBytes(StandardCharsets.UTF_8));
-            toGuard.flush();
-        } catch (IOException e) {
-            System.err.println("Tactus: the motor guard is gone (" + e.getMessage() + ")");
-            toGuard = null;
+    private void send(String lines) {
+        if (guard != null) {
+            guard.send(lines);
         }
     }
 
     /** The command line that starts a guard: this JVM's java, small-footprint options, Tactus and jSerialComm. */
     static List<String> command() {
-        String java = ProcessHandle.current().info().command()
-                .orElse(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
-        List<String> cmd = new ArrayList<>();
-        cmd.add(java);
-        for (String o : JVM_OPTIONS) {
-            cmd.add(o);
-        }
-        for (String k : INHERITED_PROPERTIES) {
-            String v = System.getProperty(k);
-            if (v != null) {
-                cmd.add("-D" + k + "=" + v);
-            }
-        }
-        cmd.add("-cp");
-        cmd.add(classPath());
-        cmd.add(MotorGuard.class.getName());
-        return cmd;
-    }
-
-    private static String classPath() {
-        Set<String> entries = new LinkedHashSet<>();
-        for (Class<?> c : new Class<?>[] {MotorGuard.class, SerialPort.class}) {
-            CodeSource cs = c.getProtectionDomain().getCodeSource();
-            if (cs == null || cs.getLocation() == null) {
-                throw new IllegalStateException("no code source for " + c.getName());
-            }
-            try {
-                entries.add(Paths.get(cs.getLocation().toURI()).toString());
-            } catch (java.net.URISyntaxException e) {
-                throw new IllegalStateException("code source of " + c.getName() + ": " + e.getMessage(), e);
-            }
-        }
-        return String.join(File.pathSeparator, entries);
+        return GuardProcess.command(MotorGuard.class.getName(), JVM_OPTIONS, INHERITED_PROPERTIES, MotorGuard.class,
+                SerialPort.class);
     }
 }

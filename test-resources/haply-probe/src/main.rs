@@ -2,6 +2,9 @@
 //! crate, lists the devices from the service's snapshot, then N times sends a force to the first Inverse3 and
 //! prints the force it sent and the position it read next. Output lines, one fact each:
 //!   DEVICE <id> <type>
+//!   VERSION <project_name> <git_tag>          (GET /version, the crate's HTTP client)
+//!   HTTPDEVICE <id> <type>                    (GET /devices)
+//!   SESSION <id> <profile>                    (GET /sessions)
 //!   SENT <k> <fx> <fy> <fz>
 //!   POS <k> <x> <y> <z>
 //!   DONE
@@ -64,6 +67,26 @@ async fn main() {
     }
     if id.is_empty() {
         fail("no Inverse3 in the service's snapshot");
+    }
+
+    // the service's HTTP routes on the same port, as the crate reads them
+    let version = device.get_service_version().await.unwrap_or_else(|e| fail(&format!("GET /version: {}", e)));
+    println!("VERSION {} {}", version.project_name, version.git_tag);
+    let listed = device.list_devices().await.unwrap_or_else(|e| fail(&format!("GET /devices: {}", e)));
+    for c in &listed {
+        match c {
+            Config::DeviceConfig(d) => println!("HTTPDEVICE {} {:?}", d.device_info.id, d.type_),
+            Config::VGConfig(v) => println!("HTTPDEVICE {} {:?}", v.id, v.type_),
+            Config::WVGConfig(v) => println!("HTTPDEVICE {} {:?}", v.id, v.type_),
+        }
+    }
+    let sessions = haply::http::InverseHttpClient::new(&http)
+        .get_sessions()
+        .await
+        .unwrap_or_else(|e| fail(&format!("GET /sessions: {}", e)));
+    for s in &sessions.sessions {
+        let profile = s.config.as_ref().and_then(|c| c.profile_name.clone()).unwrap_or_default();
+        println!("SESSION {} {}", s.session_id, profile);
     }
 
     for k in 0..n {

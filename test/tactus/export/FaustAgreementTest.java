@@ -200,24 +200,7 @@ class FaustAgreementTest {
     }
 
     static PhysicalModel plate(int n) {
-        PhysicalModel m = new PhysicalModel(44100, 60);
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                m.addOsc1D("p" + i + "_" + j, 1, 0.0005, 0, new Vect3D(i, j, 0), new Vect3D());
-            }
-        }
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                if (i + 1 < n) {
-                    m.addSpringDamper1D("x" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + (i + 1) + "_" + j);
-                }
-                if (j + 1 < n) {
-                    m.addSpringDamper1D("y" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + i + "_" + (j + 1));
-                }
-            }
-        }
-        m.init();
-        return m;
+        return tactus.faust.FaustCost.plate(n);
     }
 
     @Test

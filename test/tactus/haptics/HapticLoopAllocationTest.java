@@ -13,7 +13,7 @@ import tactus.haptics.emulator.Hand;
 /** The haptic thread allocates nothing per tick (with an avatar that allocates nothing itself). */
 class HapticLoopAllocationTest {
 
-    private static Thread loopThread() {
+    static Thread loopThread() {
         for (Thread t : Thread.getAllStackTraces().keySet()) {
             if (t.getName().equals("tactus-haptic-loop")) {
                 return t;

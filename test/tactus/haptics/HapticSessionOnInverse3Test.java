@@ -80,7 +80,8 @@ class HapticSessionOnInverse3Test {
                 s.close();
             }
             long deadline = System.nanoTime() + 2_000_000_000L;
-            while (service.zeroedOnDisconnect() == 0 && System.nanoTime() < deadline) {
+            // every session gone: the sketch's and its guard's (either may end first)
+            while ((service.zeroedOnDisconnect() == 0 || service.openConnections() > 0) && System.nanoTime() < deadline) {
                 LockSupport.parkNanos(1_000_000);
             }
             List<double[]> f = service.receivedForces();

@@ -69,11 +69,11 @@ class ThreadPolicyTest {
             } else if (realtime && HapticLoop.SAFETY_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, priority};
             } else if (realtime && loop.scheduling().contains("VM and GC threads")
-                    && RealtimeScheduling.SAFEPOINT_THREADS.matcher(name).matches()) {
+                    && tactus.scheduling.RealtimeThreads.SAFEPOINT_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, priority - 1};
                 safepointThreads++;
             } else if (realtime && loop.scheduling().contains("JIT compilers at 1")
-                    && RealtimeScheduling.COMPILER_THREADS.matcher(name).matches()) {
+                    && tactus.scheduling.RealtimeThreads.COMPILER_THREADS.matcher(name).matches()) {
                 expected = new int[] {1, 1};
                 compilerThreads++;
             }

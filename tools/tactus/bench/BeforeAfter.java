@@ -24,7 +24,7 @@ import java.util.Locale;
  * ratio after/before is taken per round, so that load drift on a shared machine cancels out. Times are this
  * thread's CPU time (time spent descheduled does not count).
  *
- * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|string-1000|mesh-100|marbles-200]
+ * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|audio1d|string-1000|mesh-100|marbles-200]
  * [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
  * --before=<classes dir or jar> | --before-commit=<rev> [--after=<classes dir or jar>] [--deps=<jar:jar...>]
  * [--scene=...] [--rounds=15] [--forks=N] [N ...]}. {@code --forks=N} repeats the comparison in N fresh JVMs
@@ -54,10 +54,36 @@ public final class BeforeAfter {
         }
 
         Build(ClassLoader loader, int n) throws ReflectiveOperationException {
+            this(loader, n, false);
+        }
+
+        /**
+         * @param oneD true for the 1-D string of {@code FaustCost} and the Faust side by side (n Mass1D between two
+         *     Ground1D, n + 1 SpringDamper1D, K 0.2, Z 0.0005, struck once), listened to at mass 2n/3 + 1 along z
+         */
+        Build(ClassLoader loader, int n, boolean oneD) throws ReflectiveOperationException {
             Class<?> pm = Class.forName("tactus.PhysicalModel", true, loader);
             Class<?> v3 = Class.forName("tactus.Vect3D", true, loader);
             Object model = pm.getConstructor(int.class).newInstance(RATE);
             java.lang.reflect.Constructor<?> vec = v3.getConstructor(double.class, double.class, double.class);
+            if (oneD) {
+                pm.getMethod("addGround1D", String.class, v3).invoke(model, "g0", vec.newInstance(0.0, 0.0, 0.0));
+                pm.getMethod("addGround1D", String.class, v3).invoke(model, "g1", vec.newInstance(n + 1.0, 0.0, 0.0));
+                java.lang.reflect.Method mass = pm.getMethod("addMass1D", String.class, double.class, v3, v3);
+                for (int i = 1; i <= n; i++) {
+                    mass.invoke(model, "m" + i, 1.0, vec.newInstance((double) i, 0.0, 0.0), vec.newInstance(0.0, 0.0, 0.0));
+                }
+                java.lang.reflect.Method link = pm.getMethod("addSpringDamper1D", String.class, double.class,
+                        double.class, double.class, String.class, String.class);
+                for (int i = 0; i <= n; i++) {
+                    link.invoke(model, "s" + i, 0.0, 0.2, 0.0005, i == 0 ? "g0" : "m" + i, i == n ? "g1" : "m" + (i + 1));
+                }
+                pm.getMethod("init").invoke(model);
+                pm.getMethod("triggerForceImpulse", String.class, double.class, double.class, double.class)
+                        .invoke(model, "m" + (n / 5 + 1), 0.0, 0.0, 1.0);
+                tick = ugenTick(loader, pm, model, "m" + (2 * n / 3 + 1), 2);
+                return;
+            }
             pm.getMethod("addGround3D", String.class, v3).invoke(model, "g0", vec.newInstance(0.0, 0.0, 0.0));
             int apex = Math.max(1, n / 4);
             java.lang.reflect.Method mass = pm.getMethod("addMass2DPlane", String.class, double.class, v3, v3);
@@ -75,12 +101,18 @@ public final class BeforeAfter {
                 link.invoke(model, "s" + i, 0.05, 0.2, 0.0001, a, b);
             }
             pm.getMethod("init").invoke(model);
+            tick = ugenTick(loader, pm, model, "m3", 1);
+        }
+
+        /** A PhyUGen of this build playing the model, listening to a mass along an axis: its bound tick. */
+        private static MethodHandle ugenTick(ClassLoader loader, Class<?> pm, Object model, String mass, int axis)
+                throws ReflectiveOperationException {
             Class<?> ugen = Class.forName("tactus.audio.PhyUGen", true, loader);
             Object u = ugen.getConstructor(pm).newInstance(model);
             ugen.getMethod("listenToMass", String.class, int.class, double.class, double.class)
-                    .invoke(u, "m3", 1, 100.0, 0.0);
+                    .invoke(u, mass, axis, 100.0, 0.0);
             ugen.getMethod("setSampleRate", float.class).invoke(u, (float) RATE);
-            tick = MethodHandles.publicLookup().findVirtual(ugen, "tick", MethodType.methodType(void.class, float[].class))
+            return MethodHandles.publicLookup().findVirtual(ugen, "tick", MethodType.methodType(void.class, float[].class))
                     .bindTo(u).asType(MethodType.methodType(void.class, float[].class));
         }
 
@@ -229,10 +261,11 @@ public final class BeforeAfter {
                     + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200] [--rounds=15] [N ...]");
         }
         if (sizes.isEmpty()) {
-            sizes.addAll(Arrays.asList(1000, 3000, 4000, 5000, 6000, 10000));
+            sizes.addAll(scene.equals("audio1d") ? Arrays.asList(30, 100, 300, 1000)
+                    : Arrays.asList(1000, 3000, 4000, 5000, 6000, 10000));
         }
         ClassLoader shared = new URLClassLoader(urls(deps), ClassLoader.getPlatformClassLoader());
-        if (!scene.equals("audio")) {
+        if (!scene.equals("audio") && !scene.equals("audio1d")) {
             // The scene's class is loaded again by each build's loader, beside that build, so that it links to it.
             String tools = classPathEntries(false, "tactus/bench/paper/PaperScenes.class");
             ClassLoader lb = new URLClassLoader(urls(before + File.pathSeparator + tools), shared);
@@ -248,9 +281,10 @@ public final class BeforeAfter {
                 + "| real-time factor before | after |");
         System.out.println("|---|---|---|---|---|---|");
         for (int n : sizes) {
-            Build a0 = AFTER_FIRST ? new Build(la, n) : null;
-            Build b = new Build(lb, n);
-            Build a = a0 != null ? a0 : new Build(la, n);
+            boolean oneD = scene.equals("audio1d");
+            Build a0 = AFTER_FIRST ? new Build(la, n, oneD) : null;
+            Build b = new Build(lb, n, oneD);
+            Build a = a0 != null ? a0 : new Build(la, n, oneD);
             long samples = Math.max(2000, 40_000_000L / (n + 50));
             for (int w = 0; w < 4; w++) {
                 b.render(samples);
@@ -278,7 +312,8 @@ public final class BeforeAfter {
             Arrays.sort(ratio);
             double mb = tb[rounds / 2];
             double ma = ta[rounds / 2];
-            System.out.printf(Locale.ROOT, "| %,d (%,d) | %,.0f | %,.0f | %.3f (%.3f-%.3f) | %.2fx | %.2fx |%n", n, 2 * n + 1,
+            System.out.printf(Locale.ROOT, "| %,d (%,d)%s | %,.0f | %,.0f | %.3f (%.3f-%.3f) | %.2fx | %.2fx |%n", n, 2 * n + 1,
+                    oneD ? ", 1-D" : "",
                     mb, ma, ratio[rounds / 2], ratio[0], ratio[rounds - 1], 1e9 / RATE / mb, 1e9 / RATE / ma);
         }
         System.out.println("load average at end " + Bench.loadavg());

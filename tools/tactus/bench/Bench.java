@@ -28,7 +28,7 @@ import java.util.function.Supplier;
  *   <li>{@code --jdk=17|25|both}: which JDKs to run (default both; 17 means the running java);</li>
  *   <li>{@code --jdk25=/path/to/bin/java}: the second JDK (default
  *       {@value #JDK25});</li>
- *   <li>{@code --scenes=standard,paper,paper/<id>,<id>}: which parts run (see {@link Selection}; default all);</li>
+ *   <li>{@code --scenes=standard,paper,paper/<id>,faust,faust/<id>,<id>}: which parts run (see {@link Selection}; default all);</li>
  *   <li>{@code --paper-source=<PaperScenes.java>}, {@code --paper-miphysics=<jar>}, {@code --paper-work=<dir>},
  *       {@code --paper-rounds=N}: the side-by-side part against the paper's engine ({@link SideBySide}).</li>
  * </ul>
@@ -88,27 +88,49 @@ public final class Bench {
             side.scenes = selection.paper;
             SideBySide.run(new File(out), side);
         }
+        if (selection.faust != null) {
+            FaustSideBySide.Options f = new FaustSideBySide.Options();
+            f.quick = quick;
+            f.models = selection.faust;
+            FaustSideBySide.run(new File(out), f);
+        }
     }
 
     /**
      * What {@code --scenes=} selects (Gradle: {@code -Pscenes=}): a comma-separated list of {@code standard} (every
      * scene of this class), {@code paper} (every side-by-side scene), {@code paper/<id>} (one side-by-side scene, see
-     * {@link tactus.bench.paper.PaperScenes#SCENES}) and standard scene ids. Absent: everything.
+     * {@link tactus.bench.paper.PaperScenes#SCENES}), {@code faust} (every model of the side by side with Faust),
+     * {@code faust/<id>} (one, see {@link FaustSideBySide#MODELS}) and standard scene ids. Absent: everything.
      */
     static final class Selection {
         boolean standard;
         List<String> only;
         List<String> paper;
+        /** The models of the side by side with Faust ({@link FaustSideBySide#MODELS}), or null. */
+        List<String> faust;
 
         Selection(String spec) {
             if (spec == null || spec.isEmpty()) {
                 standard = true;
                 paper = new ArrayList<>(Arrays.asList(tactus.bench.paper.PaperScenes.SCENES));
+                faust = new ArrayList<>(Arrays.asList(FaustSideBySide.MODELS));
                 return;
             }
             for (String t : spec.split(",")) {
                 if (t.equals("standard")) {
                     standard = true;
+                } else if (t.equals("faust")) {
+                    faust = new ArrayList<>(Arrays.asList(FaustSideBySide.MODELS));
+                } else if (t.startsWith("faust/")) {
+                    String id = t.substring(6);
+                    if (!Arrays.asList(FaustSideBySide.MODELS).contains(id)) {
+                        throw new IllegalArgumentException("unknown Faust side-by-side model " + id + "; models: "
+                                + Arrays.toString(FaustSideBySide.MODELS));
+                    }
+                    if (faust == null) {
+                        faust = new ArrayList<>();
+                    }
+                    faust.add(id);
                 } else if (t.equals("paper")) {
                     paper = new ArrayList<>(Arrays.asList(tactus.bench.paper.PaperScenes.SCENES));
                 } else if (t.startsWith("paper/")) {

@@ -1056,7 +1056,10 @@ final class Report {
         line("## Reproducing");
         blank();
         line("`gradle bench` runs everything (the standard scenes, about 10 minutes, then the side-by-side scenes "
-                + "against the paper's engine, see that section) and rewrites this file, keeping its kept sections. "
+                + "against the paper's engine, then the side by side with Faust; see those sections) and rewrites this "
+                + "file, keeping its kept sections. `-Pscenes=faust` runs the Faust comparison alone (about 4 minutes once "
+                + "the programs are compiled; compiling the 3-D string of 1,000 masses takes faust and g++ several "
+                + "minutes once, kept in build/faustbench), `-Pscenes=faust/string1d-100` one model. "
                 + "`-Pscenes=standard` runs the standard scenes only, `-Pquick` shortens the runs, "
                 + "`-PbenchArgs=\"--only=chain-1000,overhead --jdk=17\"` passes options through. By hand: "
                 + "`java -cp build/classes/java/tools:build/classes/java/main:<processing core jar> tactus.bench.Bench "

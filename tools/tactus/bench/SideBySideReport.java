@@ -377,7 +377,12 @@ final class SideBySideReport {
      * @return the new text
      */
     static String replaceSection(String report, String section) {
-        int tag = report.indexOf(TAG);
+        return replaceSection(report, section, TAG);
+    }
+
+    /** As {@link #replaceSection(String, String)}, for the kept block that carries {@code marker}. */
+    static String replaceSection(String report, String section, String marker) {
+        int tag = report.indexOf(marker);
         if (tag >= 0) {
             int begin = report.lastIndexOf(Bench.KEPT_BEGIN, tag);
             int end = report.indexOf(Bench.KEPT_END, tag);

@@ -95,8 +95,11 @@ public final class FaustCost {
         }
     }
 
-    /** A string of n masses between two fixed points: 1-D (Mass1D, SpringDamper1D) or 3-D (Mass3D, SpringDamper3D). */
-    static PhysicalModel string(int n, boolean threeD) {
+    /**
+     * A string of n masses between two fixed points, struck at mass n/5 + 1: 1-D (Mass1D, SpringDamper1D, K 0.2,
+     * Z 0.0005) or 3-D (Mass3D, SpringDamper3D, l0 0.8 at spacing 1, K 0.2, Z 0.0005).
+     */
+    public static PhysicalModel string(int n, boolean threeD) {
         PhysicalModel m = new PhysicalModel(44100);
         if (threeD) {
             m.addGround3D("g0", new Vect3D(0, 0, 0));
@@ -127,7 +130,33 @@ public final class FaustCost {
         return m;
     }
 
-    static FaustExportOptions options(int n, boolean threeD) {
+    /**
+     * The paper's 1-D metal plate (as the Faust agreement test and the bench use it): n x n Osc1D (M 1, K 0.0005)
+     * joined to their right and lower neighbours by SpringDamper1D (K 0.15, Z 0.00002), at rest, 44.1 kHz.
+     */
+    public static PhysicalModel plate(int n) {
+        PhysicalModel m = new PhysicalModel(44100, 60);
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                m.addOsc1D("p" + i + "_" + j, 1, 0.0005, 0, new Vect3D(i, j, 0), new Vect3D());
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                if (i + 1 < n) {
+                    m.addSpringDamper1D("x" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + (i + 1) + "_" + j);
+                }
+                if (j + 1 < n) {
+                    m.addSpringDamper1D("y" + i + "_" + j, 0, 0.15, 0.00002, "p" + i + "_" + j, "p" + i + "_" + (j + 1));
+                }
+            }
+        }
+        m.init();
+        return m;
+    }
+
+    /** @return export options for {@link #string}: output mass 2n/3 + 1 along z, a force input on mass n/5 + 1. */
+    public static FaustExportOptions options(int n, boolean threeD) {
         return new FaustExportOptions().listen("m" + (2 * n / 3 + 1), 2).forceInput("m" + (n / 5 + 1), 2);
     }
 

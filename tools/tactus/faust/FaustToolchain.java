@@ -74,42 +74,78 @@ public final class FaustToolchain {
      */
     public static Program compile(String dsp, Path dir, String name, boolean doublePrecision, String gccOptimisation,
                                   int timeoutSeconds) throws IOException {
+        long t0 = System.nanoTime();
+        Path cpp = faustCpp(dsp, dir, name, doublePrecision, timeoutSeconds, false);
+        long t1 = System.nanoTime();
+        Path exe = gpp(cpp, dir.resolve(name), gccOptimisation, timeoutSeconds, false);
+        long t2 = System.nanoTime();
+        return new Program(exe, (t1 - t0) / 1_000_000, (t2 - t1) / 1_000_000);
+    }
+
+    /**
+     * Translates a program to C++ with {@code faust} against the offline architecture.
+     *
+     * @param reuse true to skip faust when {@code dir} already holds the C++ of this very source (same text)
+     * @return the C++ file, {@code dir/name.cpp}
+     */
+    public static Path faustCpp(String dsp, Path dir, String name, boolean doublePrecision, int timeoutSeconds,
+                                boolean reuse) throws IOException {
+        dir = dir.toAbsolutePath();
         Files.createDirectories(dir);
         Path arch = dir.resolve("tactus-offline.cpp");
-        if (!Files.exists(arch)) {
-            try (InputStream in = FaustToolchain.class.getResourceAsStream("offline.cpp")) {
-                if (in == null) {
-                    throw new IOException("offline.cpp is not on the class path next to FaustToolchain");
-                }
-                Files.copy(in, arch);
+        byte[] archText;
+        try (InputStream in = FaustToolchain.class.getResourceAsStream("offline.cpp")) {
+            if (in == null) {
+                throw new IOException("offline.cpp is not on the class path next to FaustToolchain");
             }
+            archText = in.readAllBytes();
         }
         Path src = dir.resolve(name + ".dsp");
-        Files.write(src, dsp.getBytes(StandardCharsets.UTF_8));
         Path cpp = dir.resolve(name + ".cpp");
-        Path exe = dir.resolve(name);
-        List<String> faust = new ArrayList<>(List.of("faust"));
+        byte[] dspText = dsp.getBytes(StandardCharsets.UTF_8);
+        boolean sameArch = Files.exists(arch) && java.util.Arrays.equals(Files.readAllBytes(arch), archText);
+        if (reuse && sameArch && Files.exists(cpp) && Files.exists(src)
+                && java.util.Arrays.equals(Files.readAllBytes(src), dspText)
+                && Files.getLastModifiedTime(cpp).compareTo(Files.getLastModifiedTime(src)) >= 0) {
+            return cpp;
+        }
+        if (!sameArch) {
+            Files.write(arch, archText);
+        }
+        Files.write(src, dspText);
+        Files.deleteIfExists(cpp);
+        List<String> faust = new ArrayList<>();
+        if (faustMemoryKb > 0) {
+            faust.addAll(List.of("bash", "-c", "ulimit -v " + faustMemoryKb + " && exec \"$0\" \"$@\""));
+        }
+        faust.addAll(List.of("faust", "-t", Integer.toString(timeoutSeconds)));   // faust's own timeout is 120 s
         if (doublePrecision) {
             faust.add("-double");
         }
         faust.addAll(List.of("-a", arch.toString(), src.toString(), "-o", cpp.toString()));
-        faust.addAll(1, List.of("-t", Integer.toString(timeoutSeconds)));   // faust's own timeout is 120 s
-        if (faustMemoryKb > 0) {
-            faust = List.of("bash", "-c", "ulimit -v " + faustMemoryKb + " && exec \"$0\" \"$@\"", "faust");
-            faust = new ArrayList<>(faust);
-            faust.addAll(List.of("-t", Integer.toString(timeoutSeconds)));
-            if (doublePrecision) {
-                faust.add("-double");
-            }
-            faust.addAll(List.of("-a", arch.toString(), src.toString(), "-o", cpp.toString()));
-        }
-        long t0 = System.nanoTime();
         run(faust, dir, timeoutSeconds, null);
-        long t1 = System.nanoTime();
-        run(List.of("g++", gccOptimisation, "-std=c++11", cpp.toString(), "-o", exe.toString()), dir, timeoutSeconds,
-                null);
-        long t2 = System.nanoTime();
-        return new Program(exe, (t1 - t0) / 1_000_000, (t2 - t1) / 1_000_000);
+        return cpp;
+    }
+
+    /**
+     * Compiles C++ with {@code g++}.
+     *
+     * @param options g++ options separated by spaces, for example "-O3" or "-O3 -march=native"
+     * @param reuse true to skip g++ when the executable is newer than the C++
+     * @return the executable
+     */
+    public static Path gpp(Path cpp, Path exe, String options, int timeoutSeconds, boolean reuse) throws IOException {
+        cpp = cpp.toAbsolutePath();
+        exe = exe.toAbsolutePath();
+        if (reuse && Files.exists(exe) && Files.getLastModifiedTime(exe).compareTo(Files.getLastModifiedTime(cpp)) > 0) {
+            return exe;
+        }
+        List<String> gcc = new ArrayList<>(List.of("g++"));
+        gcc.addAll(java.util.Arrays.asList(options.trim().split("\\s+")));
+        gcc.addAll(List.of("-std=c++11", cpp.toString(), "-o", exe.toString()));
+        Files.deleteIfExists(exe);
+        run(gcc, cpp.getParent(), timeoutSeconds, null);
+        return exe;
     }
 
     /**
@@ -142,11 +178,25 @@ public final class FaustToolchain {
 
     /** Runs the program's benchmark mode; @return nanoseconds per sample. */
     public static double nanosPerSample(Program p, int samples, int timeoutSeconds) throws IOException {
-        Path out = p.executable.resolveSibling(p.executable.getFileName() + ".bench");
-        run(List.of(p.executable.toString(), Integer.toString(samples), "-bench"), p.executable.getParent(),
-                timeoutSeconds, out);
+        return benchmark(p.executable, samples, 1, timeoutSeconds)[0];
+    }
+
+    /**
+     * Runs the program's benchmark mode ({@code -bench}, after its own warm-up of a tenth of the samples).
+     *
+     * @param voices instances rendered side by side ({@code -voices})
+     * @return nanoseconds per sample of wall-clock time and of the process's CPU time
+     */
+    public static double[] benchmark(Path exe, int samples, int voices, int timeoutSeconds) throws IOException {
+        Path out = exe.resolveSibling(exe.getFileName() + ".bench");
+        run(List.of(exe.toString(), Integer.toString(samples), "-bench", "-voices", Integer.toString(voices)),
+                exe.getParent(), timeoutSeconds, out);
         String line = new String(Files.readAllBytes(out), StandardCharsets.UTF_8).trim();
-        return Double.parseDouble(line.substring(0, line.indexOf(' ')));
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("^([0-9.]+) ns/sample \\(cpu ([0-9.]+) ns").matcher(line);
+        if (!m.find()) {
+            throw new IllegalStateException(exe + " -bench printed " + line);
+        }
+        return new double[] {Double.parseDouble(m.group(1)), Double.parseDouble(m.group(2))};
     }
 
     /**

@@ -16,6 +16,7 @@ final class AudioWatch implements AudioListener {
     private volatile long lastBlockNanos;
     private long clockStart = -1;
     private long blocksSinceStart;
+    private long firstBlockNanos;
 
     AudioWatch(SoakReport report, int bufferSize, float sampleRate) {
         this.report = report;
@@ -38,13 +39,26 @@ final class AudioWatch implements AudioListener {
             audioThread = Thread.currentThread();
         }
         lastBlockNanos = now;
-        report.audioBlocks.incrementAndGet();
+        long n = report.audioBlocks.incrementAndGet();
+        if (firstBlockNanos != 0 && now - firstBlockNanos <= SoakReport.WARM_UP_NANOS) {
+            report.blocksInWarmUp = n;
+        }
         report.audioSamples.addAndGet(a.length);
         if (clockStart < 0) {
             clockStart = now;
+            firstBlockNanos = now;
             blocksSinceStart = 0;
         } else if (now > clockStart + blocksSinceStart * periodNanos) {
             report.lateBlocks.incrementAndGet();
+            if (now - firstBlockNanos > SoakReport.WARM_UP_NANOS) {
+                report.lateBlocksAfterWarmUp.incrementAndGet();
+            } else {
+                report.blocksInWarmUp = report.audioBlocks.get();
+            }
+            long late = now - (clockStart + blocksSinceStart * periodNanos);
+            if (late > report.worstLateNanos) {
+                report.worstLateNanos = late;
+            }
             clockStart = now;
             blocksSinceStart = 0;
         }

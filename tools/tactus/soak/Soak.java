@@ -6,6 +6,7 @@ import java.util.Locale;
 import ddf.minim.AudioOutput;
 import ddf.minim.Minim;
 import tactus.PhysicalModel;
+import tactus.audio.AudioScheduling;
 import tactus.audio.AvatarExchange;
 import tactus.audio.ExchangeAvatarLink;
 import tactus.audio.LineOut;
@@ -15,20 +16,27 @@ import tactus.haptics.Board;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticSession;
 import tactus.haptics.HapticTelemetry;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
+import tactus.scheduling.RealtimeThreads;
 
 /**
  * The soak tool: {@code gradle soak -Pseconds=600 [-Pseed=1]}, or {@code java tactus.soak.Soak SECONDS [SEED]
- * [--buffer=FRAMES] [--skip=CALL_REGEX]} ({@code --skip} leaves out the chaos calls whose name matches, to look
- * past a failure that spoils the rest of a run). For the given time it runs, on one {@link SoakScene} model:
+ * [--buffer=FRAMES] [--skip=CALL_REGEX] [--normal-priority] [--diagnose]} ({@code --skip} leaves out the chaos calls whose name
+ * matches, to look past a failure that spoils the rest of a run; {@code --normal-priority} asks no real-time
+ * scheduling for the haptic loop and the audio output thread, as before issue 27; {@code --diagnose} adds a
+ * {@link StallProbe} that says where the audio thread was when its output stalled). For the given time it runs, on
+ * one {@link SoakScene} model:
  *
  * <ul>
  *   <li><b>audio</b>: a {@code PhyUGen} patched into Minim's line out, which plays into Tactus's virtual output
- *       (no sound card needed, paced in real time): Minim's own output thread steps the model;</li>
+ *       (no sound card needed, paced in real time): Minim's own output thread steps the model, at real-time
+ *       priority where the system allows it ({@link AudioScheduling});</li>
  *   <li><b>haptics</b>: a {@code HapticLoop} at 1 kHz in audio mode on the board emulator (the real protocol code,
- *       an in-process link), a scripted hand moving the handle across the string;</li>
+ *       an in-process link), a scripted hand moving the handle across the string, at the real-time priority a
+ *       {@code HapticSession} asks for;</li>
  *   <li><b>draw</b>: a thread at 60 fps reading the snapshot, the energies, the divergence flag and the step
  *       count ({@link Drawer});</li>
  *   <li><b>chaos</b>: a thread making random valid and invalid calls ({@link Chaos}), seeded.</li>
@@ -69,7 +77,8 @@ public final class Soak {
             status = run(args, System.out);
         } catch (IllegalArgumentException e) {
             System.err.println("soak: " + e.getMessage());
-            System.err.println("usage: java tactus.soak.Soak SECONDS [SEED] [--buffer=FRAMES] [--skip=CALL_REGEX]");
+            System.err.println("usage: java tactus.soak.Soak SECONDS [SEED] [--buffer=FRAMES] [--skip=CALL_REGEX] "
+                    + "[--normal-priority] [--diagnose]");
             status = 2;
         }
         System.out.flush();
@@ -83,9 +92,15 @@ public final class Soak {
         long seed = 1;
         int buffer = DEFAULT_BUFFER;
         java.util.regex.Pattern skip = null;
+        boolean realtime = true;
+        boolean diagnose = false;
         int positional = 0;
         for (String a : args) {
-            if (a.startsWith("--buffer=")) {
+            if (a.equals("--normal-priority")) {
+                realtime = false;
+            } else if (a.equals("--diagnose")) {
+                diagnose = true;
+            } else if (a.startsWith("--buffer=")) {
                 buffer = Integer.parseInt(a.substring("--buffer=".length()));
             } else if (a.startsWith("--skip=")) {
                 skip = java.util.regex.Pattern.compile(a.substring("--skip=".length()));
@@ -102,7 +117,7 @@ public final class Soak {
         if (!(seconds > 0) || buffer < 16) {
             throw new IllegalArgumentException("need a duration in seconds > 0 (and --buffer >= 16 frames)");
         }
-        return new Run(seconds, seed, buffer, skip, out).go();
+        return new Run(seconds, seed, buffer, skip, realtime, diagnose, out).go();
     }
 
     /** One soak run: its parts, the monitor loop and the shutdown. */
@@ -111,13 +126,18 @@ public final class Soak {
         final long seed;
         final int buffer;
         final java.util.regex.Pattern skip;
+        final boolean realtime;
+        final boolean diagnose;
         final PrintStream out;
         final SoakReport report;
         final CallWatch watch;
         volatile boolean audioThreadThrew;
 
-        Run(double seconds, long seed, int buffer, java.util.regex.Pattern skip, PrintStream out) {
+        Run(double seconds, long seed, int buffer, java.util.regex.Pattern skip, boolean realtime, boolean diagnose,
+                PrintStream out) {
             this.seconds = seconds;
+            this.realtime = realtime;
+            this.diagnose = diagnose;
             this.seed = seed;
             this.buffer = buffer;
             this.skip = skip;
@@ -133,6 +153,10 @@ public final class Soak {
             out.printf(Locale.ROOT, "soak: %.0f s, seed %d; PhyUGen on Minim's line out (virtual output, %d-frame "
                     + "blocks, %d Hz), haptic loop 1 kHz on the board emulator, draw at 60 fps, chaos calls%n",
                     seconds, seed, buffer, SoakScene.RATE);
+            if (!realtime) {
+                out.println("soak: no real-time scheduling asked for the haptic loop and the audio output thread");
+                AudioScheduling.setRealtimePriority(0);
+            }
             // Tactus's virtual output even where a sound card exists: the soak is silent and the same everywhere.
             System.setProperty("javax.sound.sampled.SourceDataLine", "tactus.audio.VirtualMixerProvider");
             AudioWatch audioWatch = new AudioWatch(report, buffer, SoakScene.RATE);
@@ -159,6 +183,7 @@ public final class Soak {
             TorqueWatch link = new TorqueWatch(new ExchangeAvatarLink(exchange), report);
             HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), link);
             loop.setRate(1000);
+            loop.setRealtimePriority(realtime ? HapticSession.REALTIME_PRIORITY : 0);
             loop.setMode(HapticLoop.Mode.AUDIO);
             loop.setPositionGain(SoakScene.ALPHA);
             loop.setForceGain(SoakScene.BETA);
@@ -175,6 +200,12 @@ public final class Soak {
             drawThread.setDaemon(true);
             chaosThread.setDaemon(true);
 
+            StallProbe probe = diagnose ? new StallProbe(audioWatch) : null;
+            if (probe != null) {
+                Thread p = new Thread(probe, "soak-stall-probe");
+                p.setDaemon(true);
+                p.start();
+            }
             long start = System.nanoTime();
             audio.addListener(audioWatch);
             ugen.patch(audio);
@@ -191,13 +222,19 @@ public final class Soak {
             double elapsed = (System.nanoTime() - start) * 1e-9;
             HapticTelemetry tel = loop.telemetry();
             report.missedHapticTicks = tel.missedSteps;
-            report.hapticTelemetry = tel.toString();
+            report.hapticTelemetry = tel.toString() + ", " + loop.scheduling();
+            report.audioScheduling = AudioScheduling.status();
+            report.realtimeThreads = realtimeThreads();
             if (drawer.steps >= 0) {
                 report.modelSteps = drawer.steps;
             }
             String stuck = watch.stuck();
             if (!stuck.isEmpty()) {
                 out.print(stuck);
+            }
+            if (probe != null) {
+                probe.stop();
+                out.print(probe.summary());
             }
             out.println(report.summary(elapsed, seed));
             out.flush();
@@ -295,6 +332,44 @@ public final class Soak {
                     out.println(report.progress((now - start) * 1e-9));
                     out.flush();
                 }
+            }
+        }
+
+        /** @return the CPU time a thread of this process has used so far (user + system), s; -1 if unknown. */
+        static double cpuSeconds(String tid) {
+            try {
+                String s = new String(java.nio.file.Files.readAllBytes(java.nio.file.Paths.get("/proc/self/task", tid,
+                        "stat")), java.nio.charset.StandardCharsets.UTF_8);
+                String[] f = s.substring(s.lastIndexOf(')') + 2).split(" ");
+                return (Long.parseLong(f[11]) + Long.parseLong(f[12])) / 100.0;   // clock ticks of 10 ms
+            } catch (java.io.IOException | RuntimeException e) {
+                return -1;
+            }
+        }
+
+        /** @return the JVM's real-time threads now, as "name priority" (Linux only; empty elsewhere). */
+        private static String realtimeThreads() {
+            java.util.Map<String, java.util.List<Integer>> byName = new java.util.TreeMap<>();
+            for (String tid : RealtimeThreads.threadsNamed(java.util.regex.Pattern.compile(".*"))) {
+                int[] p = RealtimeThreads.policyOf(tid);
+                if (p != null && p[0] != 0) {
+                    String name = threadName(tid);
+                    byName.computeIfAbsent(name.replaceAll("\\d+$", "#"), k -> new java.util.ArrayList<>()).add(p[1]);
+                    if (!name.contains("Thread#") && !name.contains("Compiler")) {
+                        byName.computeIfAbsent(name + " CPU s", k -> new java.util.ArrayList<>())
+                                .add((int) Math.round(cpuSeconds(tid)));
+                    }
+                }
+            }
+            return byName.isEmpty() ? "none" : byName.toString();
+        }
+
+        private static String threadName(String tid) {
+            try {
+                return new String(java.nio.file.Files.readAllBytes(java.nio.file.Paths.get("/proc/self/task", tid,
+                        "comm")), java.nio.charset.StandardCharsets.UTF_8).trim();
+            } catch (java.io.IOException e) {
+                return "?";
             }
         }
 

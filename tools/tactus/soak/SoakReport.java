@@ -41,6 +41,16 @@ final class SoakReport {
     final AtomicLong rebuilds = new AtomicLong();
     volatile long missedHapticTicks;
     volatile String hapticTelemetry = "";
+    /** How the audio output thread was scheduled ({@code AudioScheduling.status()}). */
+    volatile String audioScheduling = "";
+    /** The first seconds of audio (class loading, JIT compilation, the real-time requests), counted apart, ns. */
+    static final long WARM_UP_NANOS = 5_000_000_000L;
+    /** Late blocks after {@link #WARM_UP_NANOS}, blocks within it, and the latest a block came (ns past due). */
+    final AtomicLong lateBlocksAfterWarmUp = new AtomicLong();
+    volatile long blocksInWarmUp;
+    volatile long worstLateNanos;
+    /** The real-time threads of the JVM at the end of the run (name and priority). */
+    volatile String realtimeThreads = "";
     volatile long modelSteps;
 
     private final Map<String, Long> refusalsByType = new LinkedHashMap<>();
@@ -114,6 +124,15 @@ final class SoakReport {
         sb.append("  listener throws (on purpose): ").append(listenerThrows.get())
           .append(", NaN forces handed to the haptic loop by the model: ").append(nanForcesFromModel.get()).append('\n');
         sb.append("  haptic telemetry: ").append(hapticTelemetry).append('\n');
+        sb.append("  audio output thread: ").append(audioScheduling).append('\n');
+        long blocks = audioBlocks.get();
+        long afterBlocks = blocks - blocksInWarmUp;
+        sb.append(String.format(Locale.ROOT, "  late blocks: %d of %d (%.3f %%); after the first %d s: %d of %d "
+                + "(%.3f %%); the latest came %.1f ms past due%n", lateBlocks.get(), blocks,
+                100.0 * lateBlocks.get() / Math.max(1, blocks), WARM_UP_NANOS / 1_000_000_000L,
+                lateBlocksAfterWarmUp.get(), afterBlocks, 100.0 * lateBlocksAfterWarmUp.get() / Math.max(1, afterBlocks),
+                worstLateNanos * 1e-6));
+        sb.append("  real-time threads at the end: ").append(realtimeThreads).append('\n');
         if (failureKinds.isEmpty()) {
             sb.append("  no failure\n");
         } else {
@@ -121,8 +140,8 @@ final class SoakReport {
             failureKinds.forEach((k, n) -> sb.append("    ").append(n).append(" x ").append(k).append('\n'));
         }
         sb.append(String.format(Locale.ROOT, "SOAK RESULT escapes=%d hangs=%d nan=%d lateBlocks=%d missedTicks=%d "
-                + "calls=%d audioBlocks=%d modelSteps=%d hapticTicks=%d seconds=%.1f", escapes.get(), hangs.get(),
-                nanOutputs.get(), lateBlocks.get(), missedHapticTicks, calls.get(), audioBlocks.get(), modelSteps,
+                + "lateAfterWarmUp=%d calls=%d audioBlocks=%d modelSteps=%d hapticTicks=%d seconds=%.1f", escapes.get(),
+                hangs.get(), nanOutputs.get(), lateBlocks.get(), missedHapticTicks, lateBlocksAfterWarmUp.get(), calls.get(), audioBlocks.get(), modelSteps,
                 hapticTicks.get(), seconds));
         return sb.toString();
     }

@@ -12,8 +12,12 @@ import tactus.haptics.Transport;
  * linkage whose handle is held by a {@link Hand}.
  *
  * <p>The linkage is a point mass at the handle (task space, default 0.05 kg) pushed by the motors through
- * F = J^-T tau and by the hand; joint angles follow by inverse kinematics. Time is real time by default, or
- * advances by a fixed step per write ({@link #setLockstep(double)}) for deterministic tests.
+ * F = J^-T tau and by the hand; joint angles follow by inverse kinematics. With {@link #setPlant} it is instead a
+ * {@link DevicePlant}: joint and rotor inertia, viscous damping, Coulomb friction with a static threshold and an
+ * actuation delay, integrated at the plant's substep (20 kHz by default). Time is real time by default, or
+ * advances by a fixed step per write ({@link #setLockstep(double)}) for deterministic tests: the torques of a
+ * write then act over exactly the next step, and the reply carries the encoders at the write's instant, so the
+ * host's next torque is computed from a position one step old, as on the real board.
  *
  * <p>Reach it in-process with {@link #connect()} (each write is handled at once and its reply is readable
  * when the write returns), or over any {@link Transport} with {@link #serve(Transport)}, for instance one end
@@ -52,6 +56,14 @@ public final class BoardEmulator implements AutoCloseable {
     private volatile Thread server;
     private volatile Transport served;
     private volatile Firmware.Output output;
+    private DevicePlant plant;            // null: the point mass of the constructor
+    private double substep = SUBSTEP;
+    private boolean torqueChanged;
+    private Probe probe;
+    private boolean hasPrevTarget;
+    private final double[] prevTarget = new double[2];
+    private final double[] handForce = new double[2];
+    private final double[] plantBuf = new double[2];
     private int dropReplies;
     private final double[] analog = new double[12];
 
@@ -108,6 +120,80 @@ public final class BoardEmulator implements AutoCloseable {
             throw new IllegalArgumentException("BoardEmulator.setHandleMass: mass must be a finite number > 0 kg, got " + kg);
         }
         mass = kg;
+    }
+
+    /**
+     * Replaces the point mass with a {@link DevicePlant} of these parameters on this preset's pantograph, at the
+     * handle's present pose, at rest. The plant's substep becomes the integration step.
+     */
+    public synchronized void setPlant(PlantParameters parameters) {
+        if (parameters == null) {
+            throw new IllegalArgumentException("BoardEmulator.setPlant: parameters must not be null");
+        }
+        plant = new DevicePlant(parameters, new PantographPlantKinematics(preset.l(), preset.bigL(), preset.d()),
+                theta);
+        plant.commandTorques(tau);
+        substep = parameters.substep();
+        vx = 0;
+        vy = 0;
+    }
+
+    /** The device plant set with {@link #setPlant}, or null while the handle is the constructor's point mass. */
+    public synchronized DevicePlant plant() {
+        return plant;
+    }
+
+    /**
+     * Puts the handle at rest at (x, y) in metres (for instance after the setup, which presets the encoders at
+     * the calibration pose: the encoders then count the move). Returns false (nothing changed) if out of reach.
+     */
+    public synchronized boolean place(double px, double py) {
+        tmp[0] = px;
+        tmp[1] = py;
+        if (plant != null) {
+            if (!plant.place(tmp)) {
+                return false;
+            }
+            theta[0] = plant.q(0);
+            theta[1] = plant.q(1);
+        } else {
+            if (!kin.inverse(px, py, tmp)) {
+                return false;
+            }
+            theta[0] = tmp[0];
+            theta[1] = tmp[1];
+        }
+        x = px;
+        y = py;
+        vx = 0;
+        vy = 0;
+        hasPrevTarget = false;
+        return true;
+    }
+
+    /** What a {@link Probe} sees at every integration step. */
+    public interface Probe {
+        /**
+         * One integration step: time (s), handle position (m) and velocity (m/s), and the force the hand puts on
+         * the handle (N; 0 for a rigid or no hand). Called on the thread that advances the emulator (in-process:
+         * the writer's); must not allocate or block.
+         */
+        void sample(double t, double x, double y, double vx, double vy, double handFx, double handFy);
+    }
+
+    /** Sets a probe called at every integration step (null for none). */
+    public synchronized void setProbe(Probe p) {
+        probe = p;
+    }
+
+    /** Handle velocity along x in m/s. */
+    public synchronized double vx() {
+        return vx;
+    }
+
+    /** Handle velocity along y in m/s. */
+    public synchronized double vy() {
+        return vy;
     }
 
     /** Advances simulated time by a fixed step per write (seconds, > 0) instead of real time. */
@@ -355,8 +441,59 @@ public final class BoardEmulator implements AutoCloseable {
 
     private synchronized void advance() {
         double target = lockstep > 0 ? time + lockstep : (System.nanoTime() - t0) * 1e-9;
-        while (time + SUBSTEP <= target + 1e-12) {
-            step(SUBSTEP);
+        if (plant != null && torqueChanged) {
+            plant.commandTorques(tau);   // the write's torques, from the write's instant
+            torqueChanged = false;
+        }
+        double h = substep;
+        while (time + h <= target + 1e-12) {
+            if (plant != null) {
+                stepPlant(h);
+            } else {
+                step(h);
+            }
+        }
+    }
+
+    private void stepPlant(double h) {
+        time += h;
+        Hand hd = hand;
+        hd.target(time, tmp);
+        double tx = tmp[0];
+        double ty = tmp[1];
+        handForce[0] = 0;
+        handForce[1] = 0;
+        if (hd.isRigid()) {
+            plant.moveRigidly(tmp, h);
+        } else {
+            if (!hd.isNone()) {
+                double k = hd.stiffness();
+                double b = hd.damping();
+                double tvx = 0;
+                double tvy = 0;
+                if (hd.dampsRelativeVelocity() && hasPrevTarget) {
+                    tvx = (tx - prevTarget[0]) / h;
+                    tvy = (ty - prevTarget[1]) / h;
+                }
+                handForce[0] = k * (tx - x) + b * (tvx - vx);
+                handForce[1] = k * (ty - y) + b * (tvy - vy);
+            }
+            plant.step(h, handForce, hd.mass());
+        }
+        prevTarget[0] = tx;
+        prevTarget[1] = ty;
+        hasPrevTarget = true;
+        theta[0] = plant.q(0);
+        theta[1] = plant.q(1);
+        plant.position(plantBuf);
+        x = plantBuf[0];
+        y = plantBuf[1];
+        plant.velocity(plantBuf);
+        vx = plantBuf[0];
+        vy = plantBuf[1];
+        Probe pr = probe;
+        if (pr != null) {
+            pr.sample(time, x, y, vx, vy, handForce[0], handForce[1]);
         }
     }
 
@@ -365,6 +502,8 @@ public final class BoardEmulator implements AutoCloseable {
         hand.target(time, tmp);
         double nx;
         double ny;
+        handForce[0] = 0;
+        handForce[1] = 0;
         if (hand.isRigid()) {
             nx = tmp[0];
             ny = tmp[1];
@@ -381,10 +520,24 @@ public final class BoardEmulator implements AutoCloseable {
                     fy = force[1];
                 }
             }
-            fx += hand.stiffness() * (tmp[0] - x) - (hand.damping() + friction) * vx;
-            fy += hand.stiffness() * (tmp[1] - y) - (hand.damping() + friction) * vy;
-            vx += fx / mass * h;
-            vy += fy / mass * h;
+            double tvx = 0;
+            double tvy = 0;
+            if (hand.dampsRelativeVelocity() && hasPrevTarget) {
+                tvx = (tmp[0] - prevTarget[0]) / h;
+                tvy = (tmp[1] - prevTarget[1]) / h;
+            }
+            prevTarget[0] = tmp[0];
+            prevTarget[1] = tmp[1];
+            hasPrevTarget = true;
+            double hfx = hand.stiffness() * (tmp[0] - x) + hand.damping() * (tvx - vx);
+            double hfy = hand.stiffness() * (tmp[1] - y) + hand.damping() * (tvy - vy);
+            handForce[0] = hfx;
+            handForce[1] = hfy;
+            fx += hfx - friction * vx;
+            fy += hfy - friction * vy;
+            double m = mass + hand.mass();
+            vx += fx / m * h;
+            vy += fy / m * h;
             nx = x + vx * h;
             ny = y + vy * h;
         }
@@ -396,6 +549,10 @@ public final class BoardEmulator implements AutoCloseable {
         } else {
             vx = 0;
             vy = 0;   // the linkage hits the end of its reach
+        }
+        Probe pr = probe;
+        if (pr != null) {
+            pr.sample(time, x, y, vx, vy, handForce[0], handForce[1]);
         }
     }
 
@@ -411,6 +568,7 @@ public final class BoardEmulator implements AutoCloseable {
             int j = port < jointOfMotorPort.length ? jointOfMotorPort[port] : -1;
             if (j >= 0) {
                 tau[j] = torque;
+                torqueChanged = true;
             }
         }
 

@@ -25,8 +25,26 @@ import com.fasterxml.jackson.core.JsonToken;
  * {@code set_cursor_force} for its Inverse3 sets the force on the simulated handle; the simulation advances by
  * the real time since the previous message (or a fixed step: {@link #setLockstep(double)}).
  *
- * <p>When a client's connection ends, however it ends, the emulator sets the force to zero (the real service's
- * behaviour there is not documented; see {@code docs/haptics.md}).
+ * <p>What happens to a commanded force follows the documentation where it speaks, and is configurable to the worst
+ * case where it does not (see {@code docs/haptics.md}, "What the service does when its client vanishes"):
+ * <ul>
+ * <li>the documentation ("Control Commands") says a {@code set_cursor_force} is per tick, "applied once and
+ * forgotten — if you stop sending them, the device returns to idle", without saying after how long: here a force
+ * lapses to zero {@link #setCommandHold hold} after the last force command of the session that sent it
+ * ({@value #DOCUMENTED_HOLD_MS} ms by default; forever in the worst case);</li>
+ * <li>"one connection = one session; when the connection closes, the session is destroyed": here the force of a
+ * session whose connection ends goes to zero at once, unless {@link #setKeepForceOnClose} (the worst case);</li>
+ * <li>"multiple sessions can coexist", and the events channel has a {@code device-busy} event ("device is in use
+ * by another session"): here a force from any session replaces the force (last writer wins), unless
+ * {@link #setExclusive} makes the first session that sends a force the device's owner until its connection
+ * ends, the forces of the others being ignored (the worst case for a guard in a second session).</li>
+ * </ul>
+ * A 1 kHz device thread applies the hold; {@link #forceZeroedAtNanos()} says when the force last went to zero.
+ *
+ * <p>HTTP on the same port (docs.haply.co, "HTTP"): {@code GET /version}, {@code GET /devices} (raw, as the
+ * {@code haply} crate reads them; {@code ?format=json} wraps them in the {@code {ok, data}} envelope),
+ * {@code GET /sessions} and {@code GET /sessions/{id}} (in the envelope, as the crate reads them); anything else
+ * is answered 404 with {@code {"ok":false,"error":…}}.
  *
  * <p>In-process: {@code InverseServiceEmulator.start(0)} (any free port; {@link #uri()} says which). Standalone,
  * on the service's own port: {@code java -cp Tactus.jar:jackson-core-2.17.2.jar tactus.haptics.emulator.InverseServiceEmulator}
@@ -39,6 +57,14 @@ public final class InverseServiceEmulator implements AutoCloseable {
     public static final String DEVICE_ID = "7E31";
     /** The emulated VerseGrip's id. */
     public static final String GRIP_ID = "6B02";
+    /**
+     * How long a force stays on after its session's last force command by default, in milliseconds: the
+     * documentation says only that commands are "applied once and forgotten"; 10 ms (ten of the service's ticks at
+     * 1 kHz) is this emulator's reading of it.
+     */
+    public static final int DOCUMENTED_HOLD_MS = 10;
+    /** The version the emulator reports on {@code GET /version}. */
+    public static final String VERSION = "3.5.0";
 
     private final ServerSocket server;
     private final SimulatedInverse3 device;
@@ -58,6 +84,18 @@ public final class InverseServiceEmulator implements AutoCloseable {
     private volatile boolean buttonA;
     private volatile boolean buttonB;
     private volatile boolean buttonC;
+
+    private volatile long holdNanos = DOCUMENTED_HOLD_MS * 1_000_000L;
+    private volatile boolean keepOnClose;
+    private volatile boolean exclusive;
+    private WebSocketServerConnection owner;          // the session whose force is on (guarded by this)
+    private volatile long lastForceNanos;             // its last force command (written holding this)
+    private volatile long forceZeroedAtNanos;
+    private volatile long forcesRefused;
+    private volatile long forcesLapsed;
+    private final Thread ticker;
+    private final java.util.Map<WebSocketServerConnection, Long> sessionIds = new java.util.concurrent.ConcurrentHashMap<>();
+    private final java.util.Map<WebSocketServerConnection, String> profiles = new java.util.concurrent.ConcurrentHashMap<>();
 
     private volatile long messages;
     private volatile long forceCommands;
@@ -79,6 +117,8 @@ public final class InverseServiceEmulator implements AutoCloseable {
         this.device = device;
         this.acceptor = new Thread(this::accept, "tactus-inverse-emulator-accept");
         acceptor.setDaemon(true);
+        this.ticker = new Thread(this::tick, "tactus-inverse-emulator-device");
+        ticker.setDaemon(true);
     }
 
     /** Starts an emulator with a fresh {@link SimulatedInverse3} on this port of localhost (0: any free port). */
@@ -104,6 +144,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
         }
         InverseServiceEmulator emu = new InverseServiceEmulator(s, device);
         emu.acceptor.start();
+        emu.ticker.start();
         return emu;
     }
 
@@ -131,6 +172,68 @@ public final class InverseServiceEmulator implements AutoCloseable {
             throw new IllegalArgumentException("InverseServiceEmulator.setLockstep: need a step >= 0 s, got " + dtSeconds);
         }
         lockstep = dtSeconds;
+    }
+
+    /**
+     * How long a commanded force stays on after the last force command of the session that sent it, in
+     * milliseconds (>= 0; {@link Long#MAX_VALUE}: until another command, the worst case). Default
+     * {@value #DOCUMENTED_HOLD_MS} ms.
+     */
+    public void setCommandHold(long millis) {
+        if (millis < 0) {
+            throw new IllegalArgumentException("InverseServiceEmulator.setCommandHold: need a hold >= 0 ms, got " + millis);
+        }
+        holdNanos = millis >= Long.MAX_VALUE / 1_000_000L ? Long.MAX_VALUE : millis * 1_000_000L;
+    }
+
+    /** Keeps the force of a session whose connection ends (true: the worst case) instead of zeroing it (default). */
+    public void setKeepForceOnClose(boolean keep) {
+        keepOnClose = keep;
+    }
+
+    /**
+     * Makes the first session that sends a force the device's owner until its connection ends, ignoring the forces
+     * of every other session (true: the worst case), instead of applying the last force received (default).
+     */
+    public void setExclusive(boolean on) {
+        exclusive = on;
+    }
+
+    /**
+     * The worst case the documentation leaves open, all at once: a force is held until another command, kept
+     * when its session's connection ends, and only the owner session's forces count.
+     */
+    public void setWorstCase() {
+        setCommandHold(Long.MAX_VALUE);
+        setKeepForceOnClose(true);
+        setExclusive(true);
+    }
+
+    /** The {@link System#nanoTime()} at which the device's force last went from non-zero to zero (0: never). */
+    public long forceZeroedAtNanos() {
+        return forceZeroedAtNanos;
+    }
+
+    /** Force commands ignored because another session owned the device ({@link #setExclusive}). */
+    public long forcesRefused() {
+        return forcesRefused;
+    }
+
+    /** Times a force lapsed to zero because its session sent no force command for the hold time. */
+    public long forcesLapsed() {
+        return forcesLapsed;
+    }
+
+    /** The device's force now (N, the service's axes). */
+    public double[] force() {
+        double[] f = new double[3];
+        device.force(f);
+        return f;
+    }
+
+    /** WebSocket connections open now. */
+    public int openConnections() {
+        return connections.size();
     }
 
     /**
@@ -179,7 +282,10 @@ public final class InverseServiceEmulator implements AutoCloseable {
         return connectionsOpened;
     }
 
-    /** Times a client's connection ended and the emulator zeroed the force. */
+    /**
+     * Times a client's connection ended while ending a session zeroes its force (the default; not with
+     * {@link #setKeepForceOnClose}); the force is zeroed if that session's force was on.
+     */
     public long zeroedOnDisconnect() {
         return zeroedOnDisconnect;
     }
@@ -230,6 +336,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
     @Override
     public void close() {
         closed = true;
+        ticker.interrupt();
         try {
             server.close();
         } catch (IOException e) {
@@ -265,7 +372,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
         WebSocketServerConnection c;
         try {
             c = new WebSocketServerConnection(s);
-            if (!c.handshake()) {
+            if (!c.handshake(this::answerHttp)) {
                 c.close();
                 return;
             }
@@ -273,13 +380,16 @@ public final class InverseServiceEmulator implements AutoCloseable {
             closeQuietly(s);
             return;
         }
+        synchronized (this) {
+            sessionIds.put(c, ++sessionId);
+        }
         connections.add(c);
         connectionsOpened++;
         try {
-            c.sendText(frame(true));
+            c.sendText(frame(sessionIds.getOrDefault(c, 0L), true, true));
             boolean first = true;
             for (String m = c.readText(); m != null; m = c.readText()) {
-                String reply = handle(m, first);
+                String reply = handle(c, m, first);
                 if (!mute) {
                     c.sendText(reply);
                 }
@@ -292,8 +402,69 @@ public final class InverseServiceEmulator implements AutoCloseable {
         } finally {
             connections.remove(c);
             c.close();
-            device.setForce(0, 0, 0);
+            ended(c);
+        }
+    }
+
+    /** A session's connection ended: its force goes to zero (unless kept), and it owns the device no more. */
+    private synchronized void ended(WebSocketServerConnection c) {
+        sessionIds.remove(c);
+        profiles.remove(c);
+        if (!keepOnClose) {
+            if (owner == c || owner == null) {
+                applyForce(0, 0, 0);
+            }
             zeroedOnDisconnect++;
+        }
+        if (owner == c) {
+            owner = null;
+        }
+    }
+
+    /** Sets the device's force, noting when it goes from non-zero to zero. Called holding this. */
+    private void applyForce(double fx, double fy, double fz) {
+        device.force(tmpF);
+        boolean wasOn = tmpF[0] != 0 || tmpF[1] != 0 || tmpF[2] != 0;
+        device.setForce(fx, fy, fz);
+        if (wasOn && fx == 0 && fy == 0 && fz == 0) {
+            forceZeroedAtNanos = System.nanoTime();
+        }
+    }
+
+    /**
+     * The device thread: a force whose session sent no force command for the hold lapses. It wakes when the hold
+     * of the last command runs out (at least 1 ms, at most 10 ms apart; every 50 ms with an endless hold), so a
+     * client that sends every millisecond costs about a hundred wake-ups a second, not a thousand; a force lapses
+     * at most 10 ms after its hold.
+     */
+    private void tick() {
+        double[] tick = new double[3];
+        long wait = 1_000_000L;
+        while (!closed) {
+            java.util.concurrent.locks.LockSupport.parkNanos(wait);
+            if (Thread.interrupted()) {
+                return;
+            }
+            long hold = holdNanos;
+            if (hold == Long.MAX_VALUE) {
+                wait = 50_000_000L;
+                continue;
+            }
+            long left = lastForceNanos + hold - System.nanoTime();
+            device.force(tick);   // the device's own lock only: the serving threads are not held up
+            boolean on = tick[0] != 0 || tick[1] != 0 || tick[2] != 0;
+            if (on && left < 0) {
+                synchronized (this) {   // look again under the lock: a command may have come meanwhile
+                    if (lastForceNanos + hold - System.nanoTime() < 0) {
+                        device.force(tmpF);
+                        if (tmpF[0] != 0 || tmpF[1] != 0 || tmpF[2] != 0) {
+                            applyForce(0, 0, 0);
+                            forcesLapsed++;
+                        }
+                    }
+                }
+            }
+            wait = on && left > 0 ? Math.max(1_000_000L, Math.min(10_000_000L, left + 100_000L)) : 10_000_000L;
         }
     }
 
@@ -306,7 +477,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
     }
 
     /** Handles one message and returns the frame that answers it. */
-    synchronized String handle(String message, boolean first) throws IOException {
+    synchronized String handle(WebSocketServerConnection from, String message, boolean first) throws IOException {
         messages++;
         boolean full = false;
         boolean session = false;
@@ -333,6 +504,9 @@ public final class InverseServiceEmulator implements AutoCloseable {
                                 if (prof != null) {
                                     profile = true;
                                     lastProfile = prof;
+                                    if (from != null) {
+                                        profiles.put(from, prof);
+                                    }
                                 }
                             } else {
                                 p.skipChildren();
@@ -354,7 +528,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
                 }
             }
         } catch (IOException e) {
-            return frame(false);   // not JSON: answered with the state, as one message gets one frame
+            return frame(idOf(from), false, true);   // not JSON: answered with the state, as one message gets one frame
         }
         if (first && !session) {
             firstMessagesHadSession = false;
@@ -362,18 +536,145 @@ public final class InverseServiceEmulator implements AutoCloseable {
         if (!first && profile) {
             laterMessagesHadSession = true;
         }
+        long now = System.nanoTime();
         if (force) {
             forceCommands++;
-            device.setForce(fx, fy, fz);
-            if (recording) {
-                receivedForces.add(new double[] {fx, fy, fz});
+            if (exclusive && owner != null && owner != from && connections.contains(owner)) {
+                forcesRefused++;   // device-busy: another session owns it
+            } else {
+                owner = from;
+                lastForceNanos = now;
+                applyForce(fx, fy, fz);
+                if (recording) {
+                    receivedForces.add(new double[] {fx, fy, fz});
+                }
             }
         }
-        long now = System.nanoTime();
         double dt = lockstep > 0 ? lockstep : lastNanos == 0 ? 0 : Math.min(0.05, (now - lastNanos) * 1e-9);
         lastNanos = now;
         device.advance(dt);
-        return frame(full);
+        return frame(idOf(from), full, true);
+    }
+
+    private long idOf(WebSocketServerConnection c) {
+        Long id = c == null ? null : sessionIds.get(c);
+        return id == null ? 0 : id;
+    }
+
+    // ------------------------------------------------------------------------------------------------ HTTP
+
+    /**
+     * Answers a plain HTTP request on the service's port (docs.haply.co, "HTTP"): {@code GET /version} and
+     * {@code GET /devices} raw ({@code ?format=json}: in the envelope), {@code GET /sessions} and
+     * {@code GET /sessions/{id}} in the {@code {ok, data}} envelope; else 404, or 405 for another method.
+     */
+    String[] answerHttp(String method, String target) {
+        int q = target.indexOf('?');
+        String path = q < 0 ? target : target.substring(0, q);
+        String query = q < 0 ? "" : target.substring(q + 1);
+        boolean envelope = ("&" + query + "&").contains("&format=json&");
+        if (path.length() > 1 && path.endsWith("/")) {
+            path = path.substring(0, path.length() - 1);
+        }
+        try {
+            if (!"GET".equals(method)) {
+                return new String[] {"405 Method Not Allowed", error("the Tactus emulator answers GET only, not " + method)};
+            }
+            if (path.equals("/version")) {
+                String v = version();
+                return new String[] {"200 OK", envelope ? "{\"ok\":true,\"data\":" + v + "}" : v};
+            }
+            if (path.equals("/devices")) {
+                String d = frame(0, true, false);
+                return new String[] {"200 OK", envelope ? "{\"ok\":true,\"data\":" + d + "}" : d};
+            }
+            if (path.equals("/sessions")) {
+                return new String[] {"200 OK", sessions(-1)};
+            }
+            if (path.startsWith("/sessions/")) {
+                long id;
+                try {
+                    id = Long.parseLong(path.substring("/sessions/".length()));
+                } catch (NumberFormatException e) {
+                    return new String[] {"400 Bad Request", error("not a session id: " + path.substring(10))};
+                }
+                String one = sessions(id);
+                return one == null ? new String[] {"404 Not Found", error("no session " + id)} : new String[] {"200 OK", one};
+            }
+        } catch (IOException e) {
+            return new String[] {"500 Internal Server Error", error(String.valueOf(e))};
+        }
+        return new String[] {"404 Not Found", error("no route " + path + " in the Tactus Inverse Service emulator")};
+    }
+
+    private String error(String why) {
+        StringWriter w = new StringWriter();
+        try (JsonGenerator g = json.createGenerator(w)) {
+            g.writeStartObject();
+            g.writeBooleanField("ok", false);
+            g.writeStringField("error", why);
+            g.writeEndObject();
+        } catch (IOException e) {
+            return "{\"ok\":false}";
+        }
+        return w.toString();
+    }
+
+    private String version() throws IOException {
+        StringWriter w = new StringWriter();
+        try (JsonGenerator g = json.createGenerator(w)) {
+            g.writeStartObject();
+            g.writeStringField("build_time", "1970-01-01T00:00:00Z");
+            g.writeStringField("git_branch", "tactus-emulator");
+            g.writeStringField("git_describe", VERSION + "-tactus-emulator");
+            g.writeStringField("git_hash", "00000000");
+            g.writeStringField("git_tag", VERSION);
+            g.writeStringField("project_name", "haply-inverse-service");
+            g.writeStringField("project_version", VERSION + ".0");
+            g.writeEndObject();
+        }
+        return w.toString();
+    }
+
+    /** All sessions (id < 0) in the envelope, or one session's, or null if there is no such session. */
+    private String sessions(long only) throws IOException {
+        StringWriter w = new StringWriter();
+        boolean found = false;
+        try (JsonGenerator g = json.createGenerator(w)) {
+            g.writeStartObject();
+            g.writeBooleanField("ok", true);
+            g.writeFieldName("data");
+            if (only < 0) {
+                g.writeStartObject();
+                g.writeNumberField("session_count", sessionIds.size());
+                g.writeArrayFieldStart("sessions");
+            }
+            List<java.util.Map.Entry<WebSocketServerConnection, Long>> open = new ArrayList<>(sessionIds.entrySet());
+            open.sort(java.util.Map.Entry.comparingByValue());
+            for (java.util.Map.Entry<WebSocketServerConnection, Long> e : open) {
+                if (only >= 0 && e.getValue() != only) {
+                    continue;
+                }
+                found = true;
+                g.writeStartObject();
+                g.writeNumberField("session_id", e.getValue());
+                g.writeObjectFieldStart("config");
+                String prof = profiles.get(e.getKey());
+                if (prof != null) {
+                    g.writeObjectFieldStart("profile");
+                    g.writeStringField("name", prof);
+                    g.writeEndObject();
+                }
+                g.writeEndObject();
+                g.writeEndObject();
+            }
+            if (only < 0) {
+                g.writeEndArray();
+                g.writeEndObject();
+            }
+            g.writeEndObject();
+        }
+        return only >= 0 && !found ? null : w.toString();
     }
 
     private static String profileName(JsonParser p) throws IOException {
@@ -445,17 +746,17 @@ public final class InverseServiceEmulator implements AutoCloseable {
     }
 
     /** The full snapshot (with each device's config) or a state frame, as JSON text. */
-    synchronized String frame(boolean full) throws IOException {
+    synchronized String frame(long session, boolean full, boolean record) throws IOException {
         device.position(tmpP);
         device.velocity(tmpV);
         device.force(tmpF);
-        if (recording) {
+        if (recording && record) {
             sentPositions.add(tmpP.clone());
         }
         StringWriter w = new StringWriter(1024);
         try (JsonGenerator g = json.createGenerator(w)) {
             g.writeStartObject();
-            g.writeNumberField("session_id", sessionId);
+            g.writeNumberField("session_id", session);
             g.writeArrayFieldStart("inverse3");
             g.writeStartObject();
             g.writeStringField("device_id", DEVICE_ID);
@@ -593,12 +894,14 @@ public final class InverseServiceEmulator implements AutoCloseable {
     }
 
     /**
-     * Runs the emulator until the process ends: {@code [--port N] [--hand still|tour] [--grip none|wired|wireless]}.
+     * Runs the emulator until the process ends: {@code [--port N] [--hand still|tour] [--grip none|wired|wireless]
+     * [--worst-case]} ({@link #setWorstCase()}: to see the Inverse3 guard at work).
      * Defaults: the service's port 10001, a hand that tours the workspace on a slow Lissajous path through a
      * spring (so that forces show as a lag), no VerseGrip.
      */
     public static void main(String[] args) throws InterruptedException {
         int port = SERVICE_PORT;
+        boolean worst = false;
         String hand = "tour";
         String grip = null;
         for (int i = 0; i < args.length; i++) {
@@ -610,11 +913,14 @@ public final class InverseServiceEmulator implements AutoCloseable {
             } else if ("--hand".equals(a) && next != null) {
                 hand = next;
                 i++;
+            } else if ("--worst-case".equals(a)) {
+                worst = true;
             } else if ("--grip".equals(a) && next != null) {
                 grip = "wired".equals(next) ? "verse_grip" : "wireless".equals(next) ? "wireless_verse_grip" : null;
                 i++;
             } else {
-                System.err.println("usage: InverseServiceEmulator [--port N] [--hand still|tour] [--grip none|wired|wireless]");
+                System.err.println("usage: InverseServiceEmulator [--port N] [--hand still|tour] [--grip none|wired|wireless] "
+                        + "[--worst-case]");
                 System.exit(2);
             }
         }
@@ -624,8 +930,12 @@ public final class InverseServiceEmulator implements AutoCloseable {
         }
         InverseServiceEmulator emu = start(port, dev);
         emu.setVerseGrip(grip);
+        if (worst) {
+            emu.setWorstCase();
+        }
         System.out.println("Tactus Inverse Service emulator on " + emu.uri() + ": one Inverse3 (" + DEVICE_ID + ")"
-                + (grip != null ? " and a " + grip.replace('_', ' ') : "") + ", hand: " + hand + ". Ctrl-C stops it.");
+                + (grip != null ? " and a " + grip.replace('_', ' ') : "") + ", hand: " + hand
+                + (worst ? ", worst case (forces held, kept on close, one owner session)" : "") + ". Ctrl-C stops it.");
         Runtime.getRuntime().addShutdownHook(new Thread(emu::close));
         while (true) {
             Thread.sleep(5000);

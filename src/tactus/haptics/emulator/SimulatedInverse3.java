@@ -5,7 +5,9 @@ package tactus.haptics.emulator;
  * with viscous damping (1 N s/m), pushed by the commanded cursor force and by a {@link Hand3D}, kept inside a
  * box workspace (the handle stops at a wall: its outward velocity is removed). The device compensates gravity,
  * as the service does by default. Positions in metres, in the service's axes; the workspace is an approximation
- * around the home position of Haply's documented snapshot, not Haply's published figures. Thread-safe.
+ * around the home position of Haply's documented snapshot, not Haply's published figures. {@link #setPlant} replaces
+ * the point mass with a Cartesian {@link DevicePlant} (per-axis inertia, damping, Coulomb friction with a static
+ * threshold, actuation delay). Thread-safe.
  */
 public final class SimulatedInverse3 {
     /** The home position: the cursor position of the snapshot in Haply's WebSocket protocol page (metres). */
@@ -25,6 +27,8 @@ public final class SimulatedInverse3 {
     private final double[] prevTarget = new double[3];
     private double time;
     private boolean started;
+    private DevicePlant plant;                    // null: the point mass
+    private final double[] handPush = new double[3];
 
     /** A handle of 0.25 kg with 1 N s/m of damping, at {@link #HOME}, with no hand. */
     public SimulatedInverse3() {
@@ -39,6 +43,22 @@ public final class SimulatedInverse3 {
         }
         this.mass = mass;
         this.damping = damping;
+    }
+
+    /**
+     * Replaces the point mass with a 3-axis Cartesian {@link DevicePlant} of these parameters (joint = axis: kg,
+     * N s/m, N), at the present position, at rest; the commanded force becomes its motor force. The plant's substep
+     * caps the integration step.
+     */
+    public synchronized void setPlant(PlantParameters parameters) {
+        if (parameters == null) {
+            throw new IllegalArgumentException("SimulatedInverse3.setPlant: parameters must not be null");
+        }
+        plant = new DevicePlant(parameters, new CartesianPlantKinematics(3), p);
+        plant.commandTorques(f);
+        v[0] = 0;
+        v[1] = 0;
+        v[2] = 0;
     }
 
     /** Sets the hand (never null: {@link Hand3D#none()} for none). */
@@ -59,6 +79,9 @@ public final class SimulatedInverse3 {
         f[0] = Double.isFinite(fx) ? fx : 0;
         f[1] = Double.isFinite(fy) ? fy : 0;
         f[2] = Double.isFinite(fz) ? fz : 0;
+        if (plant != null) {
+            plant.commandTorques(f);   // acts after the plant's actuation delay
+        }
     }
 
     /** The commanded force (N) into out[0..2]. */
@@ -77,6 +100,9 @@ public final class SimulatedInverse3 {
         v[1] = 0;
         v[2] = 0;
         clamp();
+        if (plant != null) {
+            plant.setState(p, v);
+        }
     }
 
     /** The handle position (metres) into out[0..2]. */
@@ -103,12 +129,15 @@ public final class SimulatedInverse3 {
         if (!(dt > 0)) {
             return;
         }
-        int n = (int) Math.ceil(dt / MAX_STEP);
+        double maxStep = plant != null ? Math.min(MAX_STEP, plant.parameters().substep()) : MAX_STEP;
+        int n = (int) Math.ceil(dt / maxStep);
         double h = dt / n;
         Hand3D hd = hand;
         for (int s = 0; s < n; s++) {
             time += h;
-            if (hd.isRigid()) {
+            if (plant != null && !hd.isRigid()) {
+                stepPlant(hd, h);
+            } else if (hd.isRigid()) {
                 hd.target(time, target);
                 if (!started) {
                     prevTarget[0] = target[0];
@@ -135,24 +164,50 @@ public final class SimulatedInverse3 {
             }
             started = true;
             clamp();
+            if (plant != null && hd.isRigid()) {
+                plant.setState(p, v);   // the hand carries the plant along
+            }
         }
     }
 
-    private void clamp() {
+    private void stepPlant(Hand3D hd, double h) {
+        double k = hd.stiffness();
+        double b = hd.damping();
+        if (k > 0) {
+            hd.target(time, target);
+        }
+        for (int i = 0; i < 3; i++) {
+            handPush[i] = k > 0 ? k * (target[i] - p[i]) - b * v[i] : 0;
+        }
+        plant.step(h, handPush, 0);
+        plant.position(p);
+        plant.velocity(v);
+        started = true;
+        if (clamp()) {
+            plant.setState(p, v);
+        }
+    }
+
+    /** Keeps the handle in the box; returns true if it had to move it. */
+    private boolean clamp() {
+        boolean moved = false;
         for (int i = 0; i < 3; i++) {
             double lo = HOME[i] - HALF_EXTENT[i];
             double hi = HOME[i] + HALF_EXTENT[i];
             if (p[i] < lo) {
                 p[i] = lo;
+                moved = true;
                 if (v[i] < 0) {
                     v[i] = 0;
                 }
             } else if (p[i] > hi) {
                 p[i] = hi;
+                moved = true;
                 if (v[i] > 0) {
                     v[i] = 0;
                 }
             }
         }
+        return moved;
     }
 }

@@ -39,14 +39,30 @@ final class WebSocketServerConnection implements AutoCloseable {
         this.out = new BufferedOutputStream(socket.getOutputStream(), 8192);
     }
 
-    /**
-     * Reads the HTTP request and answers it: 101 with the accept key for a WebSocket upgrade (returns true), or
-     * a short HTTP response for anything else (returns false; the caller closes).
-     */
+    /** What answers a plain HTTP request on the WebSocket's port. */
+    interface HttpRoutes {
+        /**
+         * Answers one request: returns {status code and reason (e.g. "200 OK"), JSON body}; method is "GET",
+         * "POST", ..., target the request target (path and query).
+         */
+        String[] answer(String method, String target);
+    }
+
+    /** Reads the HTTP request and answers it; see {@link #handshake(HttpRoutes)} (every plain request gets a 404). */
     boolean handshake() throws IOException {
+        return handshake(null);
+    }
+
+    /**
+     * Reads the HTTP request and answers it: 101 with the accept key for a WebSocket upgrade (returns true), or,
+     * for a plain HTTP request, what the routes answer (a 404 without routes) with the connection closed
+     * afterwards (returns false; the caller closes).
+     */
+    boolean handshake(HttpRoutes routes) throws IOException {
         String requestLine = line();
         String key = null;
         boolean upgrade = false;
+        int contentLength = 0;
         for (String h = line(); !h.isEmpty(); h = line()) {
             int colon = h.indexOf(':');
             if (colon < 0) {
@@ -58,6 +74,12 @@ final class WebSocketServerConnection implements AutoCloseable {
                 key = value;
             } else if (name.equals("upgrade") && value.toLowerCase(Locale.ROOT).contains("websocket")) {
                 upgrade = true;
+            } else if (name.equals("content-length")) {
+                try {
+                    contentLength = Integer.parseInt(value);
+                } catch (NumberFormatException e) {
+                    contentLength = 0;
+                }
             }
         }
         String[] parts = requestLine.split(" ");
@@ -65,9 +87,16 @@ final class WebSocketServerConnection implements AutoCloseable {
             path = parts[1];
         }
         if (!upgrade || key == null || !requestLine.startsWith("GET ")) {
-            String body = "{\"ok\":false,\"error\":\"the Tactus Inverse Service emulator speaks WebSocket only\"}";
-            writeAscii("HTTP/1.1 404 Not Found\r\nContent-Type: application/json\r\nContent-Length: " + body.length()
-                    + "\r\nConnection: close\r\n\r\n" + body);
+            for (int i = 0; i < contentLength && i < MAX_MESSAGE && in.read() >= 0; i++) {
+                // a request body is read and dropped: no route takes one
+            }
+            String[] answer = routes != null && parts.length >= 2 ? routes.answer(parts[0], parts[1])
+                    : new String[] {"404 Not Found", "{\"ok\":false,\"error\":\"the Tactus Inverse Service emulator "
+                    + "speaks WebSocket only\"}"};
+            byte[] body = answer[1].getBytes(StandardCharsets.UTF_8);
+            writeAscii("HTTP/1.1 " + answer[0] + "\r\nContent-Type: application/json\r\nContent-Length: " + body.length
+                    + "\r\nConnection: close\r\n\r\n");
+            out.write(body);
             out.flush();
             return false;
         }

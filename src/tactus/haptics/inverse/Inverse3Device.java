@@ -1,6 +1,7 @@
 package tactus.haptics.inverse;
 
 import java.net.URI;
+import java.util.concurrent.locks.LockSupport;
 
 import tactus.haptics.HaplyLinkException;
 import tactus.haptics.HapticDevice;
@@ -12,11 +13,40 @@ import tactus.haptics.WorkspaceMapping;
  * which the service answers with the next frame. Positions are the service's {@code cursor_position} in metres,
  * velocities its {@code cursor_velocity}, forces newtons along the same axes. The VerseGrip's orientation and
  * buttons, when one is listed, are read with {@link #readState(InverseState)} from any thread.
+ *
+ * <p><b>Guarded</b> ({@link #openGuarded}): an {@link InverseGuard} process beside this JVM sends zero force
+ * through its own session if this JVM is killed or paused while a force is on; when this JVM runs again after
+ * the guard acted, the force ramps back in over {@value #RAMP_MS} ms.
+ *
+ * <p><b>Reconnecting</b> ({@link #setReconnect(long)}): when the service drops the connection (stopped,
+ * restarted, crashed), the device tries again with a bounded back-off (50 ms doubling to 1 s) for the time given,
+ * on its own thread; meanwhile it sends nothing (the service has no session of ours: no force), and
+ * {@link #update()} reports the last position, with zero velocity, so that the avatar holds still; once
+ * reconnected, the force ramps back in over {@value #RAMP_MS} ms; if the time runs out, {@link #update()}
+ * throws and the loop stops with the reason. {@link #status()} says which.
  */
 public final class Inverse3Device implements HapticDevice {
-    private final InverseServiceClient client;
+    /** How long the force takes to ramp back in after a reconnection or a guard's zero, in milliseconds. */
+    public static final int RAMP_MS = 100;
+    private static final long RAMP_NANOS = RAMP_MS * 1_000_000L;
+
+    private volatile InverseServiceClient client;
+    private final URI uri;
     private final InverseState state = new InverseState();   // the loop thread's copy
     private long lastFrame = -1;
+    private InverseGuardLink guard = InverseGuardLink.NONE;
+    private long guardActsSeen;
+    private long rampStart;          // System.nanoTime() of the ramp's start; 0: no ramp
+    private double rampLast = 1;     // the factor of the last force sent
+
+    private volatile long reconnectMillis;
+    private volatile InverseServiceClient fresh;    // a new connection, published by the reconnecting thread
+    private volatile String reconnecting;           // what is going on while reconnecting, or null
+    private volatile String gaveUp;                 // why reconnecting failed, or null
+    private volatile Thread reconnector;
+    private volatile boolean closed;
+    private volatile long reconnections;
+    private volatile long forcesHeld;
 
     /** Wraps an open client. */
     public Inverse3Device(InverseServiceClient client) {
@@ -24,6 +54,7 @@ public final class Inverse3Device implements HapticDevice {
             throw new IllegalArgumentException("Inverse3Device: client must not be null");
         }
         this.client = client;
+        this.uri = client.uri();
         client.read(state);
     }
 
@@ -37,7 +68,64 @@ public final class Inverse3Device implements HapticDevice {
         return new Inverse3Device(InverseServiceClient.connect(uri, timeoutMillis));
     }
 
-    /** The connection. */
+    /**
+     * Connects as {@link #open(URI, long)} and starts an {@link InverseGuard} for this connection (unless the
+     * property {@code tactus.inverseGuard} is "false"), waiting up to 5 s more for the guard to open its own
+     * session with the service.
+     */
+    public static Inverse3Device openGuarded(URI uri, long timeoutMillis) {
+        Inverse3Device d = open(uri, timeoutMillis);
+        if (InverseGuardLink.enabled()) {
+            InverseGuardLink g = InverseGuardLink.start(uri);
+            if (g.isGuarded() && !g.awaitReady(5_000)) {
+                System.err.println("Tactus: the Inverse3 guard could not open its own session with the service at " + uri
+                        + " in 5 s; it keeps trying");
+            }
+            d.guard = g;
+            d.guardActsSeen = g.guardActs();
+            if (g.isGuarded()) {
+                try {
+                    Runtime.getRuntime().addShutdownHook(new Thread(d::close, "tactus-inverse-guard-release"));
+                } catch (IllegalStateException e) {
+                    // the JVM is shutting down: the guard sees it go
+                }
+            }
+        }
+        return d;
+    }
+
+    /** True if an {@link InverseGuard} watches this device ({@link #openGuarded}). */
+    public boolean isGuarded() {
+        return guard.isGuarded();
+    }
+
+    /** The guard process, or null (for tests). */
+    Process guardProcess() {
+        return guard.process();
+    }
+
+    /**
+     * Reconnects by itself for up to this long when the service drops the connection (0, the default: the next
+     * {@link #update()} throws instead, and the loop stops with the reason).
+     */
+    public void setReconnect(long giveUpMillis) {
+        if (giveUpMillis < 0) {
+            throw new IllegalArgumentException("Inverse3Device.setReconnect: need a time >= 0 ms, got " + giveUpMillis);
+        }
+        reconnectMillis = giveUpMillis;
+    }
+
+    /** True while the device is reconnecting to the service. */
+    public boolean isReconnecting() {
+        return reconnecting != null;
+    }
+
+    /** Times the device reconnected to the service. */
+    public long reconnections() {
+        return reconnections;
+    }
+
+    /** The connection (a new one after each reconnection). */
     public InverseServiceClient client() {
         return client;
     }
@@ -59,7 +147,8 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public boolean isReady() {
-        return client.lostReason() == null && !client.isClosed();
+        InverseServiceClient c = client;
+        return c.lostReason() == null && !c.isClosed();
     }
 
     @Override
@@ -69,11 +158,35 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public boolean update() {
-        String why = client.lostReason();
+        InverseServiceClient c = client;
+        String why = c.lostReason();
         if (why != null) {
-            throw new HaplyLinkException(why);
+            if (reconnectMillis <= 0 || closed) {
+                throw new HaplyLinkException(why);
+            }
+            String failed = gaveUp;
+            if (failed != null) {
+                throw new HaplyLinkException(failed);
+            }
+            InverseServiceClient f = fresh;
+            if (f == null) {
+                if (reconnecting == null) {
+                    startReconnecting(c, why);
+                }
+                state.vx = 0;   // the avatar holds where the hand was last seen
+                state.vy = 0;
+                state.vz = 0;
+                return !Double.isNaN(state.px);
+            }
+            fresh = null;
+            client = f;
+            c = f;
+            lastFrame = -1;
+            rampStart = System.nanoTime();
+            reconnections++;
+            reconnecting = null;
         }
-        long f = client.read(state);
+        long f = c.read(state);
         if (f == lastFrame) {
             return false;
         }
@@ -101,16 +214,94 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public void sendForce(double fx, double fy, double fz) {
-        if (!Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)) {
-            client.sendForce(0, 0, 0);
-        } else {
-            client.sendForce(fx, fy, fz);
+        InverseServiceClient c = client;
+        if (c.lostReason() != null && reconnectMillis > 0 && !closed && gaveUp == null) {
+            forcesHeld++;         // no session with the service (the next update() reconnects): nothing to send
+            guard.forceSent(0, 0, 0);
+            return;
         }
+        if (!Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)) {
+            fx = 0;
+            fy = 0;
+            fz = 0;
+        }
+        long acts = guard.guardActs();
+        if (acts != guardActsSeen) {
+            guardActsSeen = acts;   // the guard zeroed the force while this JVM was paused: ramp back in
+            rampStart = System.nanoTime();
+        }
+        if (rampStart != 0) {
+            double k = Math.min((System.nanoTime() - rampStart) / (double) RAMP_NANOS, rampLast + 0.05);
+            if (k >= 1) {
+                rampStart = 0;
+                k = 1;
+            }
+            rampLast = k;
+            fx *= k;
+            fy *= k;
+            fz *= k;
+        } else {
+            rampLast = 0;   // the next ramp starts from zero
+        }
+        guard.forceSent(fx, fy, fz);
+        c.sendForce(fx, fy, fz);
     }
 
     @Override
     public void zeroForce() {
+        guard.forceSent(0, 0, 0);
         client.zeroForce();
+    }
+
+    private void startReconnecting(InverseServiceClient old, String why) {
+        long giveUp = reconnectMillis;
+        reconnecting = "reconnecting to the Haply Inverse Service at " + uri + " (" + why + ")";
+        Thread t = new Thread(() -> reconnect(old, why, giveUp), "tactus-inverse-reconnect");
+        t.setDaemon(true);
+        reconnector = t;
+        t.start();
+    }
+
+    /**
+     * The reconnecting thread (all printing is here, not on the haptic thread): tries with a back-off of 50 ms
+     * doubling to 1 s, until it connects or gives up.
+     */
+    private void reconnect(InverseServiceClient old, String why, long giveUpMillis) {
+        System.err.println("tactus: " + why + " Reconnecting for up to " + giveUpMillis / 1000.0 + " s; no force "
+                + "meanwhile, the avatar holds");
+        old.close();
+        long start = System.nanoTime();
+        long delay = 50;
+        int attempt = 0;
+        String last = why;
+        while (!closed && (System.nanoTime() - start) / 1_000_000L < giveUpMillis) {
+            LockSupport.parkNanos(delay * 1_000_000L);
+            attempt++;
+            try {
+                InverseServiceClient n = InverseServiceClient.connect(uri, Math.max(1, Math.min(1000,
+                        giveUpMillis - (System.nanoTime() - start) / 1_000_000L)));
+                if (closed) {
+                    n.close();
+                    return;
+                }
+                fresh = n;
+                System.err.println("tactus: reconnected to the Haply Inverse Service at " + uri + " (attempt " + attempt
+                        + "); the force ramps back in over " + RAMP_MS + " ms");
+                return;
+            } catch (HaplyLinkException e) {
+                last = e.getMessage();
+            }
+            delay = Math.min(delay * 2, 1000);
+            reconnecting = "reconnecting to the Haply Inverse Service at " + uri + ": attempt " + attempt + " failed ("
+                    + last + "), next in " + delay + " ms";
+        }
+        gaveUp = "the Haply Inverse Service at " + uri + " did not come back within " + giveUpMillis / 1000.0 + " s ("
+                + attempt + " attempts; " + last + ")";
+    }
+
+    /** Force messages not sent because the device was reconnecting. */
+    public long forcesHeld() {
+        return forcesHeld;
     }
 
     @Override
@@ -130,14 +321,31 @@ public final class Inverse3Device implements HapticDevice {
 
     @Override
     public String status() {
-        String why = client.lostReason();
-        return why != null ? "lost: " + why : client.isClosed() ? "closed"
-                : "open, " + client.messagesSent() + " sent, " + client.sendsSkipped() + " skipped";
+        String r = reconnecting;
+        if (r != null) {
+            return r;
+        }
+        String g = gaveUp;
+        if (g != null) {
+            return "lost: " + g;
+        }
+        InverseServiceClient c = client;
+        String why = c.lostReason();
+        return why != null ? "lost: " + why : c.isClosed() ? "closed"
+                : "open, " + c.messagesSent() + " sent, " + c.sendsSkipped() + " skipped"
+                + (reconnections > 0 ? ", reconnected " + reconnections + " time(s)" : "");
     }
 
     @Override
     public void close() {
-        client.close();
+        closed = true;
+        InverseServiceClient f = fresh;
+        if (f != null) {
+            f.close();
+        }
+        InverseServiceClient c = client;
+        c.close();
+        guard.release(c.closedAfterZero());
     }
 
     @Override

@@ -35,7 +35,8 @@ import tactus.haptics.HaplyLinkException;
  * fails later marks the client lost ({@link #lostReason()}); the next {@link #sendForce} throws. Every ending the
  * client controls sends zero force first: {@link #close()}, and a JVM shutdown hook (System.exit, SIGTERM,
  * Ctrl-C) while it is open. Where the JVM ends with no hook (SIGKILL, a crash) the operating system closes the
- * socket, and what the force does then is up to the service (see {@code docs/haptics.md}).
+ * socket, and what the force does then is up to the service, or to an {@link InverseGuard} (see
+ * {@link Inverse3Device#openGuarded} and {@code docs/haptics.md}).
  */
 public final class InverseServiceClient implements AutoCloseable {
     /** The service's simulation channel on this machine. */
@@ -46,6 +47,7 @@ public final class InverseServiceClient implements AutoCloseable {
     public static final int WINDOW = 1 << 16;
 
     private final URI uri;
+    private final String profile;
     private final ForceMessage out = new ForceMessage();
     private final AtomicBoolean sending = new AtomicBoolean();
     private final Receiver receiver = new Receiver();
@@ -53,6 +55,7 @@ public final class InverseServiceClient implements AutoCloseable {
     private volatile CompletableFuture<WebSocket> pending;
     private volatile String lost;
     private volatile boolean closed;
+    private volatile boolean closedAfterZero;
     private volatile long sentNanos;
     private volatile long sent;
     private volatile long busy;
@@ -66,8 +69,9 @@ public final class InverseServiceClient implements AutoCloseable {
     private final long[] roundTrips = new long[WINDOW];
     private volatile long roundTripCount;
 
-    private InverseServiceClient(URI uri) {
+    private InverseServiceClient(URI uri, String profile) {
         this.uri = uri;
+        this.profile = profile;
     }
 
     /** Connects to the service at {@link #DEFAULT_URI}, waiting up to 2 s; see {@link #connect(URI, long)}. */
@@ -82,11 +86,16 @@ public final class InverseServiceClient implements AutoCloseable {
      * @throws HaplyLinkException with a message that names the address and what to check
      */
     public static InverseServiceClient connect(URI uri, long timeoutMillis) {
+        return connect(uri, timeoutMillis, PROFILE);
+    }
+
+    /** As {@link #connect(URI, long)}, with this profile name in the session handshake (the guard's own session). */
+    static InverseServiceClient connect(URI uri, long timeoutMillis, String profile) {
         if (uri == null || timeoutMillis < 1) {
             throw new IllegalArgumentException("InverseServiceClient.connect: need an address and a timeout >= 1 ms, got "
                     + uri + ", " + timeoutMillis);
         }
-        InverseServiceClient c = new InverseServiceClient(uri);
+        InverseServiceClient c = new InverseServiceClient(uri, profile);
         c.open(timeoutMillis);
         return c;
     }
@@ -110,7 +119,7 @@ public final class InverseServiceClient implements AutoCloseable {
             throw new HaplyLinkException("interrupted while connecting to the Haply Inverse Service at " + uri, e);
         }
         try {
-            socket.sendText(out.handshake(PROFILE), true).get(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L),
+            socket.sendText(out.handshake(profile), true).get(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L),
                     TimeUnit.MILLISECONDS);
         } catch (Exception e) {
             socket.abort();
@@ -214,6 +223,11 @@ public final class InverseServiceClient implements AutoCloseable {
         return lost;
     }
 
+    /** True if {@link #close()} ran and the service's socket took its zero force. */
+    public boolean closedAfterZero() {
+        return closedAfterZero;
+    }
+
     /** True once {@link #close()} ran. */
     public boolean isClosed() {
         return closed;
@@ -237,6 +251,19 @@ public final class InverseServiceClient implements AutoCloseable {
     }
 
     private boolean trySend(double fx, double fy, double fz) {
+        return trySend(fx, fy, fz, false);
+    }
+
+    /**
+     * Sends an empty message, {@code {}} (what the haply crate's {@code send_ping} sends "to keep the WebSocket
+     * connection alive"), which the service answers with a state frame; no command. Returns false, sending
+     * nothing, while the previous message is still being written or once the connection is lost or closed.
+     */
+    boolean ping() {
+        return lost == null && !closed && trySend(0, 0, 0, true);
+    }
+
+    private boolean trySend(double fx, double fy, double fz, boolean empty) {
         if (!sending.compareAndSet(false, true)) {
             busy++;
             return false;
@@ -256,7 +283,7 @@ public final class InverseServiceClient implements AutoCloseable {
             }
             WebSocket ws = socket;
             sentNanos = System.nanoTime();
-            pending = ws.sendText(out.force(fx, fy, fz), true);
+            pending = ws.sendText(empty ? "{}" : out.force(fx, fy, fz), true);
             sent++;
             return true;
         } catch (RuntimeException e) {
@@ -374,7 +401,7 @@ public final class InverseServiceClient implements AutoCloseable {
             return;
         }
         closed = true;    // from here sendForce refuses, so nothing can follow the zero force
-        zeroForce();
+        closedAfterZero = zeroForce();
         WebSocket ws = socket;
         if (ws != null) {
             try {

@@ -16,7 +16,8 @@ import tactus.haptics.emulator.InverseServiceEmulator;
 /**
  * Haply's own client (the {@code haply} crate, in the probe program of test-resources/haply-probe) against our
  * emulator: it must find the Inverse3 in the snapshot, and the forces it sends must be the forces our emulator
- * receives, and the positions it reads must be positions our emulator sent, in order.
+ * receives, and the positions it reads must be positions our emulator sent, in order; the crate's HTTP client must
+ * read the emulator's GET /version, GET /devices and GET /sessions on the same port.
  */
 @Timeout(value = 25, unit = TimeUnit.MINUTES)   // the first build of the probe compiles about 200 crates
 class HaplyCrateFidelityTest {
@@ -35,6 +36,9 @@ class HaplyCrateFidelityTest {
             List<float[]> read = new ArrayList<>();
             boolean device = false;
             boolean done = false;
+            boolean version = false;
+            boolean httpDevice = false;
+            boolean session = false;
             for (String line : out.split("\n")) {
                 String[] w = line.trim().split(" ");
                 if (w[0].equals("DEVICE")) {
@@ -43,12 +47,21 @@ class HaplyCrateFidelityTest {
                     sent.add(floats(w));
                 } else if (w[0].equals("POS")) {
                     read.add(floats(w));
+                } else if (w[0].equals("VERSION")) {
+                    version = w[1].equals("haply-inverse-service") && w[2].equals(InverseServiceEmulator.VERSION);
+                } else if (w[0].equals("HTTPDEVICE")) {
+                    httpDevice |= w[1].equals(InverseServiceEmulator.DEVICE_ID) && w[2].equals("Inverse3");
+                } else if (w[0].equals("SESSION")) {
+                    session |= w.length == 3 && w[2].equals("haply-probe");
                 } else if (w[0].equals("DONE")) {
                     done = true;
                 }
             }
             assertTrue(device, "the crate lists the emulated Inverse3 from the snapshot:\n" + out);
             assertTrue(done, out);
+            assertTrue(version, "the crate's HTTP client reads the emulator's GET /version:\n" + out);
+            assertTrue(httpDevice, "the crate's HTTP client lists the Inverse3 from GET /devices:\n" + out);
+            assertTrue(session, "the crate's HTTP client finds its own session, by profile, in GET /sessions:\n" + out);
             assertEquals(N, sent.size());
             assertEquals(N, read.size());
             // forces: what the crate sent is what the emulator received, one for one, in order
@@ -83,7 +96,8 @@ class HaplyCrateFidelityTest {
             float[] last = read.get(N - 1);
             assertTrue(last[0] > first[0] && last[1] < first[1] && last[2] > first[2], "the crate saw the handle move");
             System.out.println("haply crate " + HaplyCrate.version() + " against the emulator: " + N + " forces sent = received, "
-                    + matched + " positions read = sent (f32), device " + InverseServiceEmulator.DEVICE_ID + " listed");
+                    + matched + " positions read = sent (f32), device " + InverseServiceEmulator.DEVICE_ID + " listed (snapshot "
+                    + "and GET /devices), GET /version and GET /sessions read");
         }
     }
 

@@ -93,7 +93,7 @@ class Inverse3LoopTest {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
             emu.setRecording(true);
-            Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000);
+            Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000);
             ConstantAvatar a = new ConstantAvatar(1, 2, 3);
             HapticLoop loop = new HapticLoop(dev, a);
             loop.useRealUnits();
@@ -132,7 +132,7 @@ class Inverse3LoopTest {
         pm.init();
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 HapticLoop loop = new HapticLoop(dev, new PhysicalModelAvatar(pm, "hapticMass"));
                 loop.useRealUnits();
                 loop.setOrigin(-H[0], -H[2], H[1]);    // the handle's home is the model's origin
@@ -164,7 +164,7 @@ class Inverse3LoopTest {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             double[] where = H.clone();
             holdAt(emu, where);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 HapticLoop loop = new HapticLoop(dev, new PhysicalModelAvatar(pm, "avatar"));
                 loop.setWorkspaceMapping(m);
                 loop.setForceGain(0);
@@ -197,7 +197,7 @@ class Inverse3LoopTest {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
             emu.setRecording(true);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 ConstantAvatar a = new ConstantAvatar(0.5, 0, 0);
                 a.failAfter = 300;
                 HapticLoop loop = new HapticLoop(dev, a);
@@ -219,7 +219,7 @@ class Inverse3LoopTest {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
             emu.setRecording(true);
-            Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000);
+            Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000);
             HapticLoop loop = new HapticLoop(dev, new ConstantAvatar(0, 1, 0));
             loop.useRealUnits();
             loop.start();
@@ -237,7 +237,7 @@ class Inverse3LoopTest {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
             emu.setRecording(true);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 ConstantAvatar a = new ConstantAvatar(0.5, 0, 0) {
                     int steps;
 
@@ -274,7 +274,7 @@ class Inverse3LoopTest {
     void aServiceThatDropsTheSocketStopsTheLoopWithAMessage() {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 HapticLoop loop = new HapticLoop(dev, new ConstantAvatar(0, 0, 0));
                 loop.start();
                 await(() -> loop.ticks() > 100, 10_000, "100 ticks");
@@ -293,7 +293,7 @@ class Inverse3LoopTest {
     void aServiceThatStopsAnsweringStopsTheLoopAfterTheLinkTimeout() {
         try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
             holdAt(emu, H);
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 HapticLoop loop = new HapticLoop(dev, new ConstantAvatar(0, 0, 0));
                 loop.setLinkTimeoutMillis(50);
                 loop.start();
@@ -318,7 +318,7 @@ class Inverse3LoopTest {
                 out[1] = H[1] + 0.02 * Math.cos(t);
                 out[2] = H[2] + 0.01 * Math.sin(2 * t);
             }));
-            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 3000)) {
+            try (Inverse3Device dev = Inverse3Device.open(emu.uri(), 10_000)) {
                 ConstantAvatar a = new ConstantAvatar(0.1, 0.2, 0.3);
                 HapticLoop loop = new HapticLoop(dev, a);
                 loop.useRealUnits();

@@ -54,6 +54,7 @@ class InverseShutdownTest {
         InverseServiceEmulator emu = InverseServiceEmulator.start(0);
         emu.device().setHand(Hand3D.scripted((t, out) -> System.arraycopy(SimulatedInverse3.HOME, 0, out, 0, 3)));
         emu.setRecording(true);
+        emu.setCommandHold(Long.MAX_VALUE);   // the 1 N stays on between the child's messages, however late
         return emu;
     }
 

@@ -1,0 +1,220 @@
+package tactus.haptics;
+
+/**
+ * What sits between the device and the avatar in a {@link HapticLoop}, in the device's units (metres, newtons, along
+ * its axes), so that it works alike for every {@link HapticDevice} and for the 2DIY's board path: the
+ * {@link PassivityObserver}, the {@link PassivityController}, an optional {@link VirtualCoupling} and an optional
+ * {@link FrictionCompensation}. Each tick the loop calls {@link #sense} with the handle's position (and gets back
+ * where the avatar must go), {@link #command} with the model's force (and gets back the force to send), then
+ * {@link #sent} with the share of it that went out. One thread (the loop's) calls these; the switches may be
+ * flipped from any thread. Nothing here allocates or locks.
+ */
+final class HapticPort {
+    private final PassivityObserver observer = new PassivityObserver();
+    private final PassivityController controller = new PassivityController();
+    private volatile boolean controlOn;
+    private volatile FrictionCompensation friction;
+    private VirtualCoupling coupling;
+
+    private double period = 1e-3;
+    private boolean havePrevious;
+    private final double[] previous = new double[3];   // the handle's last position, m
+    private final double[] position = new double[3];   // this tick's, m
+    private final double[] velocity = new double[3];   // backward difference, m/s
+    private final double[] portForce = new double[3];  // the force at the port this tick (coupling, model, damper), N
+    /** The most ticks of exchange delay the account can follow. */
+    static final int MAX_DELAY = 8;
+    private final double[][] sentPort = new double[MAX_DELAY + 1][3];   // the port's forces as sent, N (a ring)
+    private final double[][] sentDamper = new double[MAX_DELAY + 1][3]; // the controller's part of them, N
+    private int delay;
+    private int slot;                                   // where sent() writes this tick's force
+    private final double[] damper = new double[3];     // the controller's force this tick, N
+    private final double[] inFlight = new double[3];   // forces sent but not yet acted over a measured step, N
+    private final double[] proxy = new double[3];      // the coupling's proxy: position, m
+    private final double[] proxyVelocity = new double[3];
+    private final double[] filtered = new double[3];   // the velocity seen by the friction compensation, m/s
+    private double frictionGain;                        // its filter's weight per tick
+    private double frictionX;
+    private double frictionY;
+    private double frictionZ;
+
+    PassivityObserver observer() {
+        return observer;
+    }
+
+    void setControl(boolean on) {
+        controlOn = on;
+    }
+
+    boolean isControl() {
+        return controlOn;
+    }
+
+    void setDampingLimit(double nsPerM) {
+        controller.setDampingLimit(nsPerM);
+    }
+
+    double dampingLimit() {
+        return controller.dampingLimit();
+    }
+
+    /** Sets the coupling (null: none); only before {@link #start}. */
+    void setCoupling(VirtualCoupling c) {
+        coupling = c;
+    }
+
+    /**
+     * Sets how many ticks pass between reading a position and the force sent at that tick taking effect (0..
+     * {@link #MAX_DELAY}; default 0): the account then charges each displacement to the force that was acting over it.
+     * Only before {@link #start}.
+     */
+    void setDelay(int ticks) {
+        delay = ticks;
+    }
+
+    int delay() {
+        return delay;
+    }
+
+    VirtualCoupling coupling() {
+        return coupling;
+    }
+
+    void setFriction(FrictionCompensation f) {
+        friction = f;
+    }
+
+    FrictionCompensation friction() {
+        return friction;
+    }
+
+    /** Clears the state and the observer's figures, for a loop of this period (s). */
+    void start(double periodSeconds) {
+        period = periodSeconds;
+        havePrevious = false;
+        for (int i = 0; i < 3; i++) {
+            previous[i] = 0;
+            velocity[i] = 0;
+            filtered[i] = 0;
+            proxyVelocity[i] = 0;
+            for (int j = 0; j <= MAX_DELAY; j++) {
+                sentPort[j][i] = 0;
+                sentDamper[j][i] = 0;
+            }
+        }
+        slot = 0;
+        controller.reset();
+        observer.reset();
+    }
+
+    /**
+     * The handle is at (x, y, z) m this tick: accounts for the energy the last force exchanged over the displacement,
+     * and writes where the avatar must go (m, device axes) into target[0..2]: the handle, or the coupling's proxy.
+     */
+    void sense(double x, double y, double z, double[] target) {
+        position[0] = x;
+        position[1] = y;
+        position[2] = z;
+        if (havePrevious) {
+            double into = 0;
+            double damped = 0;
+            // the force acting since the last reading was sent delay + 1 ticks ago (the slot before this tick's)
+            int acting = (slot + MAX_DELAY - delay) % (MAX_DELAY + 1);
+            double[] f = sentPort[acting];
+            double[] d = sentDamper[acting];
+            for (int i = 0; i < 3; i++) {
+                double dx = position[i] - previous[i];
+                into -= f[i] * dx;
+                damped -= d[i] * dx;
+                velocity[i] = dx / period;
+            }
+            boolean on = controlOn;
+            controller.observe(into, on);
+            observer.record(into, damped);
+        } else if (coupling != null) {
+            System.arraycopy(position, 0, proxy, 0, 3);
+        }
+        System.arraycopy(position, 0, previous, 0, 3);
+        havePrevious = true;
+        FrictionCompensation f = friction;
+        if (f != null) {
+            double w = 1 - Math.exp(-2 * Math.PI * f.cutoffHz() * period);
+            for (int i = 0; i < 3; i++) {
+                filtered[i] += w * (velocity[i] - filtered[i]);
+            }
+        }
+        System.arraycopy(coupling != null ? proxy : position, 0, target, 0, 3);
+    }
+
+    /**
+     * The model pushes the avatar with f (N, device axes); replaces f with the force to send: through the coupling
+     * when there is one, plus the controller's damper when it is on, plus the friction compensation when set.
+     */
+    void command(double[] f) {
+        VirtualCoupling c = coupling;
+        if (c != null) {
+            double k = c.stiffness();
+            double b = c.damping();
+            double m = c.mass();
+            for (int i = 0; i < 3; i++) {
+                double onProxy = k * (position[i] - proxy[i]) + b * (velocity[i] - proxyVelocity[i]);
+                proxyVelocity[i] += period * (f[i] + onProxy) / m;   // semi-implicit Euler
+                proxy[i] += period * proxyVelocity[i];
+                f[i] = -onProxy;
+            }
+        }
+        double alpha = 0;
+        if (controlOn) {
+            System.arraycopy(f, 0, damper, 0, 3);
+            for (int i = 0; i < 3; i++) {
+                inFlight[i] = 0;
+            }
+            for (int j = 1; j <= delay; j++) {
+                double[] g = sentPort[(slot + MAX_DELAY + 1 - j) % (MAX_DELAY + 1)];
+                for (int i = 0; i < 3; i++) {
+                    inFlight[i] += g[i];
+                }
+            }
+            alpha = controller.command(f, velocity, inFlight, period);
+            for (int i = 0; i < 3; i++) {
+                damper[i] = f[i] - damper[i];
+            }
+        } else {
+            damper[0] = 0;
+            damper[1] = 0;
+            damper[2] = 0;
+        }
+        observer.damping(alpha);
+        System.arraycopy(f, 0, portForce, 0, 3);
+        FrictionCompensation fc = friction;
+        frictionX = 0;
+        frictionY = 0;
+        frictionZ = 0;
+        if (fc != null) {
+            double s = Math.sqrt(filtered[0] * filtered[0] + filtered[1] * filtered[1] + filtered[2] * filtered[2]);
+            double add = fc.forceAt(s);
+            if (add > 0) {
+                frictionX = add * filtered[0] / s;
+                frictionY = add * filtered[1] / s;
+                frictionZ = add * filtered[2] / s;
+                f[0] += frictionX;
+                f[1] += frictionY;
+                f[2] += frictionZ;
+            }
+        }
+    }
+
+    /**
+     * The force returned by {@link #command} went out scaled by this factor (1 as commanded, a torque gain, a limit's
+     * scale, or 0 when the loop sent zero instead): records the port's part of it for the next tick's account.
+     */
+    void sent(double scale) {
+        double[] f = sentPort[slot];
+        double[] d = sentDamper[slot];
+        for (int i = 0; i < 3; i++) {
+            f[i] = scale * portForce[i];
+            d[i] = scale * damper[i];
+        }
+        slot = (slot + 1) % (MAX_DELAY + 1);
+    }
+}

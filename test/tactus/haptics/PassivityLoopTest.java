@@ -1,0 +1,260 @@
+package tactus.haptics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.management.ManagementFactory;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.emulator.Hand;
+
+/**
+ * The passivity observer and controller, the virtual coupling and the friction compensation inside a running
+ * {@link HapticLoop} on the board emulator: the switches, the published figures, no allocation on the haptic thread.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class PassivityLoopTest {
+
+    private static void waitTicks(HapticLoop loop, long n) {
+        long end = loop.ticks() + n;
+        while (loop.ticks() < end && loop.isRunning()) {
+            LockSupport.parkNanos(1_000_000);
+        }
+    }
+
+    /** A stiff spring to x = 0 (model units, 1 N per model unit of force at beta 1). */
+    private static final class Spring implements AvatarLink {
+        double x;
+
+        @Override
+        public void setTarget(double px, double py, double pz) {
+            x = px;
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = -2000 * x;
+            out[1] = 0;
+            out[2] = 0;
+        }
+
+        @Override
+        public void step(int n) {
+        }
+    }
+
+    @Test
+    void theLoopObservesControlsAndAllocatesNothing() {
+        java.lang.management.ThreadMXBean base = ManagementFactory.getThreadMXBean();
+        Assumptions.assumeTrue(base instanceof com.sun.management.ThreadMXBean, "no per-thread allocation counter");
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) base;
+        Assumptions.assumeTrue(mx.isThreadAllocatedMemorySupported());
+        mx.setThreadAllocatedMemoryEnabled(true);
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        emulator.setHand(Hand.scripted((t, out) -> {
+            out[0] = 0.01 * Math.sin(6 * t);   // the hand sweeps through the spring's rest point
+            out[1] = 0.08;
+        }));
+        try (Board board = new Board(emulator.connect())) {
+            Device device = new Device((byte) 3, board);
+            HaplyPreset.HAPLY_2018.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new Spring());
+            loop.useRealUnits();
+            loop.setVirtualCoupling(VirtualCoupling.forDevice(0.5, 1e-3, 1));
+            loop.setFrictionCompensation(new FrictionCompensation(0.05));
+            loop.setPassivityControl(true);
+            loop.start();
+            assertThrows(IllegalStateException.class, () -> loop.setVirtualCoupling(null), "coupling only before start");
+            Thread t = null;
+            // warm up (JIT, buffers) longer than HapticLoopAllocationTest: more code runs per tick with every option on,
+            // and on a loaded machine its compilation was seen to allocate in the first windows
+            while (loop.ticks() < 5000 && loop.isRunning()) {
+                LockSupport.parkNanos(1_000_000);
+                if (t == null) {
+                    t = HapticLoopAllocationTest.loopThread();
+                }
+            }
+            assertTrue(t != null && loop.isRunning(), String.valueOf(loop.failure()));
+            long[] windows = new long[8];
+            for (int w = 0; w < windows.length; w++) {
+                long bytes0 = mx.getThreadAllocatedBytes(t.getId());
+                waitTicks(loop, 1000);
+                windows[w] = mx.getThreadAllocatedBytes(t.getId()) - bytes0;
+            }
+            long best = Long.MAX_VALUE;
+            for (long b : windows) {
+                best = Math.min(best, b);
+            }
+            assertEquals(0, best, "bytes per 1000 ticks with every option on: " + java.util.Arrays.toString(windows));
+            PassivityObserver o = loop.passivity();
+            assertTrue(o.ticks() > 5000, "observed ticks: " + o.ticks());
+            assertTrue(o.energyIn() > 0 && Double.isFinite(o.energyIn()), "the hand pushed energy in: " + o);
+            assertTrue(Double.isFinite(o.netEnergy()), o.toString());
+            // switched off at run time: the controller stops adding damping
+            loop.setPassivityControl(false);
+            assertFalse(loop.isPassivityControl());
+            waitTicks(loop, 5);
+            long active = o.activeTicks();
+            waitTicks(loop, 500);
+            assertEquals(active, o.activeTicks(), "no damping while off");
+            assertEquals(0, o.damping(), 0);
+            loop.setFrictionCompensation(null);
+            assertNull(loop.frictionCompensation());
+            loop.stop();
+        }
+    }
+
+    /**
+     * A 3-DoF device that moves along a scripted path, one step per update, and records the work of the forces it was
+     * sent: the force sent after reading position k acts until position k + 1.
+     */
+    private static final class ScriptedDevice implements HapticDevice {
+        final double[] p = new double[3];
+        long k;
+        double fx;
+        double fy;
+        double fz;
+        volatile double work;   // J, the work of the held forces on the handle, as the observer should count it
+        volatile long updates;
+
+        @Override
+        public int dimensions() {
+            return 3;
+        }
+
+        @Override
+        public boolean isReady() {
+            return true;
+        }
+
+        @Override
+        public void begin() {
+        }
+
+        @Override
+        public boolean update() {
+            double t = ++k * 1e-3;
+            double x = 0.01 * Math.sin(7 * t);
+            double y = 0.005 * Math.sin(3 * t);
+            double z = 0.004 * Math.cos(5 * t);
+            work += fx * (x - p[0]) + fy * (y - p[1]) + fz * (z - p[2]);
+            p[0] = x;
+            p[1] = y;
+            p[2] = z;
+            updates = k;
+            return true;
+        }
+
+        @Override
+        public void position(double[] out) {
+            System.arraycopy(p, 0, out, 0, 3);
+        }
+
+        @Override
+        public void velocity(double[] out) {
+            java.util.Arrays.fill(out, 0);
+        }
+
+        @Override
+        public void sendForce(double x, double y, double z) {
+            fx = x;
+            fy = y;
+            fz = z;
+        }
+
+        @Override
+        public void zeroForce() {
+        }
+
+        @Override
+        public WorkspaceMapping defaultMapping() {
+            return WorkspaceMapping.identity();
+        }
+
+        @Override
+        public String describe() {
+            return "scripted 3-DoF device";
+        }
+
+        @Override
+        public String status() {
+            return "ok";
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+
+    /** A spring to the origin in all three axes (force per model unit, beta 1). */
+    private static final class Spring3 implements AvatarLink {
+        final double[] x = new double[3];
+
+        @Override
+        public void setTarget(double px, double py, double pz) {
+            x[0] = px;
+            x[1] = py;
+            x[2] = pz;
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = -50 * x[0];
+            out[1] = -80 * x[1];
+            out[2] = -30 * x[2];
+        }
+
+        @Override
+        public void step(int n) {
+        }
+    }
+
+    @Test
+    void onAThreeDofDeviceTheObserverCountsTheWorkTheDeviceSaw() {
+        ScriptedDevice dev = new ScriptedDevice();
+        HapticLoop loop = new HapticLoop(dev, new Spring3());
+        loop.useRealUnits();
+        loop.start();
+        waitTicks(loop, 600);
+        loop.stop();   // the loop thread has ended: both sides are final
+        PassivityObserver o = loop.passivity();
+        assertTrue(dev.updates > 500, "ticks: " + dev.updates);
+        assertTrue(Math.abs(dev.work) > 1e-7, "the exchange is not trivial: " + dev.work + " J");
+        // the observer counts -F(k) . (x(k+1) - x(k)) for every reading after the first, as the device did (the
+        // device's first step started from the origin, before any force: zero work)
+        assertEquals(-dev.work, o.netEnergy(), 1e-9 * Math.abs(dev.work) + 1e-15, o.toString());
+        assertEquals(dev.updates - 1, o.ticks(), "one record per reading after the first");
+    }
+
+    @Test
+    void settingsAreValidatedAndKept() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        try (Board board = new Board(emulator.connect())) {
+            Device device = new Device((byte) 3, board);
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), new Spring());
+            assertFalse(loop.isPassivityControl(), "off by default");
+            assertNull(loop.virtualCoupling());
+            assertEquals(PassivityController.DEFAULT_DAMPING_LIMIT, loop.passivityDampingLimit(), 0);
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setPassivityDampingLimit(-2))
+                    .getMessage().contains("-2"));
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setExchangeDelay(9))
+                    .getMessage().contains("9"));
+            VirtualCoupling c = new VirtualCoupling(300, 0.1, 0.01);
+            loop.setVirtualCoupling(c);
+            assertSame(c, loop.virtualCoupling());
+            loop.setExchangeDelay(1);
+            assertEquals(1, loop.exchangeDelay());
+            loop.setPassivityDampingLimit(20);
+            assertEquals(20, loop.passivityDampingLimit(), 0);
+        }
+    }
+}

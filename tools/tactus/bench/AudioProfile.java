@@ -1,0 +1,154 @@
+package tactus.bench;
+
+import ddf.minim.ugens.Summer;
+import java.util.Locale;
+import tactus.Mass;
+import tactus.PhysicalModel;
+import tactus.Vect3D;
+import tactus.audio.PhyUGen;
+import tactus.audio.SteppedModel;
+import tactus.engine.Engine;
+import tactus.engine.LinkKind;
+import tactus.engine.MassKind;
+
+/**
+ * Where a small model's audio sample goes (docs/performance.md, "Where a small model's sample goes"): the same 1-D
+ * string stepped through layers that each add one part of the audio path, measured interleaved in one JVM, so that
+ * the difference between two layers is what that part costs per sample (thread CPU time, so that other load on the
+ * machine counts as little as possible):
+ * <ol>
+ *   <li>the engine alone, {@code Engine.step(n)} over a whole buffer (the physics and the divergence guard);</li>
+ *   <li>the engine, one {@code step(1)} per sample and one position read ({@code Engine.position});</li>
+ *   <li>{@code PhysicalModel.computeStep()} and {@code Mass.getPosition(Vect3D)}, locked mode;</li>
+ *   <li>the same in realtime mode (the model's owner, as under a PhyUGen);</li>
+ *   <li>a {@code PhyUGen} ticked through a Minim {@code Summer}, as an output or the OfflineRenderer ticks it.</li>
+ * </ol>
+ *
+ * <pre>java -cp build/classes/java/tools:build/classes/java/main:&lt;minim, core jars&gt; tactus.bench.AudioProfile [masses...]</pre>
+ */
+public final class AudioProfile {
+    private static final int BUFFER = 512;
+    private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
+
+    private AudioProfile() {
+    }
+
+    /** Runs the layers for each string size given (default 30 and 100 masses) and prints ns per sample. */
+    public static void main(String[] args) {
+        int[] sizes = args.length == 0 ? new int[] {30, 100} : java.util.Arrays.stream(args).mapToInt(Integer::parseInt).toArray();
+        for (int n : sizes) {
+            profile(n);
+        }
+    }
+
+    private static void profile(int n) {
+        Engine engine = engineString(n);
+        int listen = 2 * n / 3 + 1;
+        PhysicalModel locked = string(n);
+        Mass lockedMass = locked.getMass("m" + listen);
+        PhysicalModel realtime = string(n);
+        realtime.beginRealtimeStepping();
+        Mass realtimeMass = realtime.getMass("m" + listen);
+        PhyUGen ugen = new PhyUGen(string(n));
+        ugen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
+        Summer root = new Summer();
+        ugen.patch(root);
+        ugen.setSampleRate(44100);
+        ugen.setChannelCount(1);
+        root.setSampleRate(44100);
+        root.setChannelCount(1);
+        float[] frame = new float[1];
+        double[] pos = new double[3];
+        Vect3D v = new Vect3D();
+        String[] names = {"Engine.step(512), per step", "Engine.step(1) + position", "computeStep + getPosition, locked",
+            "computeStep + getPosition, realtime", "PhyUGen through Minim's tick"};
+        Runnable[] layers = {
+            () -> engine.step(BUFFER),
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    engine.step(1);
+                    engine.position(listen, pos);
+                }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    locked.computeStep();
+                    lockedMass.getPosition(v);
+                }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    realtime.computeStep();
+                    realtimeMass.getPosition(v);
+                }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    frame[0] = 0;
+                    root.tick(frame);
+                }
+            }
+        };
+        int buffersPerRun = Math.max(20, 2_000_000 / (BUFFER * n));
+        for (long end = System.nanoTime() + 3_000_000_000L; System.nanoTime() < end; ) {
+            for (Runnable r : layers) {
+                for (int b = 0; b < buffersPerRun; b++) {
+                    r.run();
+                }
+            }
+        }
+        int rounds = 15;
+        double[][] ns = new double[layers.length][rounds];
+        for (int round = 0; round < rounds; round++) {
+            for (int k = 0; k < layers.length; k++) {
+                int l = (k + round) % layers.length;
+                long t0 = CPU.getCurrentThreadCpuTime();
+                for (int b = 0; b < buffersPerRun; b++) {
+                    layers[l].run();
+                }
+                ns[l][round] = (CPU.getCurrentThreadCpuTime() - t0) / (double) (buffersPerRun * BUFFER);
+            }
+        }
+        System.out.printf(Locale.ROOT, "1-D string, %d masses (median of %d interleaved rounds, ns of thread CPU time per sample)%n", n, rounds);
+        double prev = 0;
+        for (int l = 0; l < layers.length; l++) {
+            java.util.Arrays.sort(ns[l]);
+            double med = ns[l][rounds / 2];
+            System.out.printf(Locale.ROOT, "  %-40s %8.1f  (+%.1f)  [%.1f-%.1f]%n", names[l], med, med - prev, ns[l][0],
+                    ns[l][rounds - 1]);
+            prev = med;
+        }
+    }
+
+    /** The FaustCost string: n Mass1D (M 1) between two Ground1D, SpringDamper1D (K 0.2, Z 0.0005), struck. */
+    static PhysicalModel string(int n) {
+        PhysicalModel m = new PhysicalModel(44100);
+        m.addGround1D("g0", new Vect3D(0, 0, 0));
+        m.addGround1D("g1", new Vect3D(n + 1, 0, 0));
+        for (int i = 1; i <= n; i++) {
+            m.addMass1D("m" + i, 1, new Vect3D(i, 0, 0), new Vect3D());
+        }
+        for (int i = 0; i <= n; i++) {
+            m.addSpringDamper1D("s" + i, 0, 0.2, 0.0005, i == 0 ? "g0" : "m" + i, i == n ? "g1" : "m" + (i + 1));
+        }
+        m.init();
+        m.triggerForceImpulse("m" + (n / 5 + 1), 0, 0, 1);
+        return m;
+    }
+
+    private static Engine engineString(int n) {
+        Engine e = new Engine();
+        int g0 = e.addMass(MassKind.GROUND1D, 1, 0, 0, 0, 0, 0, 0);
+        int[] ids = new int[n + 2];
+        ids[0] = g0;
+        for (int i = 1; i <= n; i++) {
+            ids[i] = e.addMass(MassKind.MASS1D, 1, i, 0, i == n / 5 + 1 ? 1e-3 : 0, 0, 0, 0);
+        }
+        ids[n + 1] = e.addMass(MassKind.GROUND1D, 1, n + 1, 0, 0, 0, 0, 0);
+        for (int i = 0; i <= n; i++) {
+            e.addLink(LinkKind.SPRING_DAMPER1D, ids[i], ids[i + 1], 0.2, 0.0005, 0);
+        }
+        e.compile();
+        return e;
+    }
+}
