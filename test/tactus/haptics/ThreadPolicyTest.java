@@ -141,7 +141,7 @@ class ThreadPolicyTest {
     }
 
     /** An avatar that, at the loop thread's 50th tick, starts a thread that reports its own scheduling policy. */
-    private static final class ThreadStartingAvatar implements AvatarLink {
+    private static final class ThreadStartingAvatar extends NoForceAvatar {
         final CompletableFuture<int[]> childPolicy = new CompletableFuture<>();
         private int ticks;
 
@@ -162,37 +162,26 @@ class ThreadPolicyTest {
                 }
             }
         }
-
-        @Override
-        public void takeForce(double[] out) {
-            out[0] = 0;
-            out[1] = 0;
-            out[2] = 0;
-        }
-
-        @Override
-        public void step(int n) {
-        }
     }
 
     private static void runAndCheck(HapticLoop.Mode mode, boolean deadline) throws IOException {
         try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018)) {
-                PhysicalModel pm = new PhysicalModel(1000);
-                Vect3D home = s.home();
-                pm.addHapticInput3D("avatar", home, 5);
-                pm.addGround3D("anchor", new Vect3D(home.x + 20, home.y + 10, 0));
-                pm.addSpringDamper3D("pull", 0, 0.0005, 0, "avatar", "anchor");   // about 1 N at the handle
-                pm.init();
-                HapticLoop loop = s.attach(pm, "avatar");
-                loop.setMode(mode);
-                loop.setDeadlineScheduling(deadline);
-                loop.start();
-                awaitTicks(loop, 300);
-                assertTrue(mode == HapticLoop.Mode.AUDIO || Math.abs(loop.torque(1)) + Math.abs(loop.torque(2)) > 0,
-                        "the spring puts torque on the motors");
-                checkEveryThread(loop, HapticSession.REALTIME_PRIORITY);
-                assertTrue(!deadline || !loop.scheduling().startsWith("real-time")
-                        || loop.scheduling().contains("SCHED_DEADLINE"), loop.scheduling());
+            PhysicalModel pm = new PhysicalModel(1000);
+            Vect3D home = s.home();
+            pm.addHapticInput3D("avatar", home, 5);
+            pm.addGround3D("anchor", new Vect3D(home.x + 20, home.y + 10, 0));
+            pm.addSpringDamper3D("pull", 0, 0.0005, 0, "avatar", "anchor");   // about 1 N at the handle
+            pm.init();
+            HapticLoop loop = s.attach(pm, "avatar");
+            loop.setMode(mode);
+            loop.setDeadlineScheduling(deadline);
+            loop.start();
+            awaitTicks(loop, 300);
+            assertTrue(mode == HapticLoop.Mode.AUDIO || Math.abs(loop.torque(1)) + Math.abs(loop.torque(2)) > 0,
+                    "the spring puts torque on the motors");
+            checkEveryThread(loop, HapticSession.REALTIME_PRIORITY);
+            assertTrue(!deadline || !loop.scheduling().startsWith("real-time")
+                    || loop.scheduling().contains("SCHED_DEADLINE"), loop.scheduling());
         }
     }
 }
