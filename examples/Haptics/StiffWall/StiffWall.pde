@@ -11,7 +11,7 @@
  * comes back to the hand beyond what it put in is the buzz you feel.
  *
  * With no Haply plugged in, the sketch runs the board emulator and the mouse is your hand.
- * The red dot is the avatar, the ring the handle. The 2DIY's motors give at most about 1.5 N,
+ * The red dot is the avatar, the ring the handle, the blue line the handle's recent path. The 2DIY's motors give at most about 1.5 N,
  * so a deep push only feels the torque limit: the buzz is at the face of the wall.
  *
  * Controls: P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
@@ -41,6 +41,10 @@ double lastOut, lastDissipated;
 double[] force = new double[2];
 double[] handle = new double[3];
 int avatar;
+int trail = 90;                       // frames of the handle's path drawn behind it
+float[] trailX = new float[trail];
+float[] trailY = new float[trail];
+int trailHead = 0;
 
 void setup() {
   size(800, 600);
@@ -98,6 +102,21 @@ void draw() {
   loop.devicePosition(handle);
   double[] model = new double[2];
   loop.deviceToModel(handle[0], handle[1], model);
+  // the handle's path over the last frames: where the hand went, and whether it bounced off the wall
+  trailX[trailHead] = (float) model[0];
+  trailY[trailHead] = (float) model[1];
+  trailHead = (trailHead + 1) % trail;
+  noFill();
+  strokeWeight(2);
+  for (int i = 1; i < trail; i++) {
+    int a = (trailHead + i - 1) % trail;
+    int b = (trailHead + i) % trail;
+    if (trailX[a] != 0 && trailX[b] != 0) {
+      stroke(120, 160, 220, 255 * i / trail);
+      line(trailX[a], trailY[a], trailX[b], trailY[b]);
+    }
+  }
+  strokeWeight(1);
   stroke(60);
   line(ax, ay, (float) model[0], (float) model[1]);
   noFill();
