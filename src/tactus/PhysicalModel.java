@@ -190,6 +190,33 @@ public class PhysicalModel {
     }
 
     /**
+     * Begins a run of calls that the realtime stepping thread makes together, such as one audio sample of a
+     * {@link tactus.audio.PhyUGen}: a step, then the reads of its listening points. The calling thread takes the
+     * owner role as {@link #computeStep()} would, applies what other threads queued, and enters the model once for
+     * the whole run; its calls until {@link #endRealtimeCalls()} (stepping calls, reads, avatar writes) then enter
+     * nothing. Other threads' changes are applied when the run begins and by its stepping calls (before they step),
+     * never by its reads; another thread cannot end the mode or take the role during a run.
+     * Takes no lock and never waits for another thread, except, like {@link #computeStep()}, for one applying
+     * queued changes when there is no owner. Keep the run short (one sample): it holds the model as a stepping call
+     * does.
+     *
+     * @return true when the run has begun: call {@link #endRealtimeCalls()} in a {@code finally}; false when the
+     *     model is not stepped in realtime, its realtime mode is ending, or another active thread owns it: nothing
+     *     was begun, the calls behave as they do without it, and {@link #endRealtimeCalls()} must not be called
+     */
+    public boolean beginRealtimeCalls() {
+        return gate.beginOwnerSection();
+    }
+
+    /**
+     * Ends a run begun by {@link #beginRealtimeCalls()} that returned true: lets other threads' changes in again (and
+     * ends the realtime mode if a call of the run asked to end it). Does nothing on a thread that holds no run.
+     */
+    public void endRealtimeCalls() {
+        gate.endOwnerSection();
+    }
+
+    /**
      * @return the number of queued changes (over the life of the model) that found one of their targets removed
      *     when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
      *     {@link DivergenceListener} on the audio thread removed that link: the writes to the removed modules were

@@ -437,8 +437,7 @@ public class PhyUGen extends UGen {
         boolean stereo = channels.length >= 2 && !forceMono;
         double left;
         double right;
-        java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-        sampleLock.lock();
+        m.beginSample();
         try {
             if (o == null) {
                 if (!stepGuarded(m)) {
@@ -462,7 +461,7 @@ public class PhyUGen extends UGen {
                 right = stereo ? o.right.output() : 0;
             }
         } finally {
-            sampleLock.unlock();
+            m.endSample();
         }
         outputSilent = false;
         if (dcEnabled) {
@@ -685,12 +684,11 @@ public class PhyUGen extends UGen {
             noteComputingThread();
             SteppedModel m = steppedModel();
             countTowardsRecheck(m);
-            java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-            sampleLock.lock();
+            m.beginSample();
             try {
                 stepGuarded(m);
             } finally {
-                sampleLock.unlock();
+                m.endSample();
             }
         } catch (Throwable t) {
             faults.unexpected(t);
@@ -707,14 +705,13 @@ public class PhyUGen extends UGen {
                 return 0;
             }
             SteppedModel m = steppedModel();
-            java.util.concurrent.locks.Lock sampleLock = m.sampleLock();
-            sampleLock.lock();
+            m.beginSample();
             try {
                 mixPoints(m);
                 double v = mixMono;
                 return Math.abs(v) < 1e9 ? v : 0;
             } finally {
-                sampleLock.unlock();
+                m.endSample();
             }
         } catch (Throwable t) {
             faults.unexpected(t);

@@ -42,6 +42,8 @@ public final class PhysicalModelStepper implements SteppedModel {
     private String[] avatars = new String[2];
     private int avatarCount;
     private volatile int rate;
+    /** True while the audio thread's sample holds the model ({@link #beginSample()}); the audio thread's own. */
+    private boolean inSample;
 
     private static final int RULE_UNSUPPORTED = -1;
     private static final int RULE_ALWAYS = 0;
@@ -165,6 +167,24 @@ public final class PhysicalModelStepper implements SteppedModel {
     @Override
     public java.util.concurrent.locks.Lock sampleLock() {
         return NO_LOCK;
+    }
+
+    /**
+     * Enters the model once for the whole sample ({@link PhysicalModel#beginRealtimeCalls()}): the step and the reads
+     * of the sample then enter nothing. When that is refused (locked mode, the mode ending, another active owner) the
+     * sample's calls enter one by one, as before, and {@link #step()} claims the model.
+     */
+    @Override
+    public void beginSample() {
+        inSample = model.beginRealtimeCalls();
+    }
+
+    @Override
+    public void endSample() {
+        if (inSample) {
+            inSample = false;
+            model.endRealtimeCalls();
+        }
     }
 
     // ------------------------------------------------------------------ setup (the sketch's thread)

@@ -46,6 +46,20 @@ public interface SteppedModel {
      */
     java.util.concurrent.locks.Lock sampleLock();
 
+    /**
+     * Begins one sample's calls on the audio thread (its steps, reads and avatar exchange), ended by
+     * {@link #endSample()} in a {@code finally}: a model that enters itself per call may enter once per sample
+     * instead. The default locks {@link #sampleLock()}.
+     */
+    default void beginSample() {
+        sampleLock().lock();
+    }
+
+    /** Ends the sample begun by {@link #beginSample()}; the default unlocks {@link #sampleLock()}. */
+    default void endSample() {
+        sampleLock().unlock();
+    }
+
     /** @return a handle for the mass with this name; throws IllegalArgumentException naming it if absent. */
     int resolveMass(String name);
 

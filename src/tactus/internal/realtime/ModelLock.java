@@ -83,6 +83,26 @@ public final class ModelLock {
         }
     }
 
+    /**
+     * Begins a run of calls of the realtime owner that enters the model once (see
+     * {@code PhysicalModel.beginRealtimeCalls()} and {@link Ownership#beginSection()}).
+     *
+     * @return true when the run holds the owner's gate; false in locked mode, while the mode ends, or when another
+     *     active thread owns the model
+     */
+    public boolean beginOwnerSection() {
+        Ownership o = mode();
+        return o != null && o.beginSection();
+    }
+
+    /** Ends a run begun by {@link #beginOwnerSection()} that returned true. */
+    public void endOwnerSection() {
+        Ownership o = mode();
+        if (o != null) {
+            o.endSection();
+        }
+    }
+
     /** Leaves a facade call; the outermost call of an editor of a realtime-stepped model posts what it prepared. */
     public void exit() {
         Ownership o = mode();

@@ -219,6 +219,38 @@ public final class Ownership implements RealtimeMode {
     }
 
     /**
+     * Begins a run of the owner's calls that holds the gate once (a PhyUGen's sample: its step, its listening points'
+     * reads, its avatar exchange): takes the role as a stepping call would ({@link #beginStep}), holds the gate,
+     * applies what is queued; every stepping or facade call of this thread until {@link #endSection()} is then nested
+     * in it and takes nothing. Counts as the start of a stepping call for the owner's idle clock.
+     *
+     * @return true when the gate is held (the caller calls {@link #endSection()} in a {@code finally}); false when
+     *     the mode is ending or another active thread owns the model (nothing is held; calls behave as without it)
+     */
+    public boolean beginSection() {
+        if (beginStep(1) != STEP) {
+            return false;
+        }
+        try {
+            drain();
+        } catch (RuntimeException | Error e) {
+            endStep(); // never leave the gate held
+            throw e;
+        }
+        return true;
+    }
+
+    /**
+     * Ends a run begun by {@link #beginSection()} (publishes avatar forces and releases the gate when it is the
+     * outermost); does nothing when the current thread does not hold the gate.
+     */
+    public void endSection() {
+        if (gateHolder == Thread.currentThread()) {
+            endStep();
+        }
+    }
+
+    /**
      * Makes the current thread the owner, even if another thread holds the role and is active (a PhyUGen's audio
      * thread takes the model from a sketch that stepped it first). Waits only for a stepping or facade call that
      * holds the gate, at most {@link #waitLimitNanos}. Costs one volatile read when the current thread already owns
