@@ -21,6 +21,8 @@ import tactus.engine.MassKind;
  *   <li>the engine, one {@code step(1)} per sample and one position read ({@code Engine.position});</li>
  *   <li>{@code PhysicalModel.computeStep()} and {@code Mass.getPosition(Vect3D)}, locked mode;</li>
  *   <li>the same in realtime mode (the model's owner, as under a PhyUGen);</li>
+ *   <li>the same inside one run of the owner's calls per sample ({@code beginRealtimeCalls}), as a PhyUGen's
+ *       sample is;</li>
  *   <li>a {@code PhyUGen} ticked through a Minim {@code Summer}, as an output or the OfflineRenderer ticks it.</li>
  * </ol>
  *
@@ -61,7 +63,8 @@ public final class AudioProfile {
         double[] pos = new double[3];
         Vect3D v = new Vect3D();
         String[] names = {"Engine.step(512), per step", "Engine.step(1) + position", "computeStep + getPosition, locked",
-            "computeStep + getPosition, realtime", "PhyUGen through Minim's tick"};
+            "computeStep + getPosition, realtime", "the same in one run (beginRealtimeCalls)",
+            "PhyUGen through Minim's tick"};
         Runnable[] layers = {
             () -> engine.step(BUFFER),
             () -> {
@@ -80,6 +83,19 @@ public final class AudioProfile {
                 for (int i = 0; i < BUFFER; i++) {
                     realtime.computeStep();
                     realtimeMass.getPosition(v);
+                }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    boolean run = realtime.beginRealtimeCalls();
+                    try {
+                        realtime.computeStep();
+                        realtimeMass.getPosition(v);
+                    } finally {
+                        if (run) {
+                            realtime.endRealtimeCalls();
+                        }
+                    }
                 }
             },
             () -> {

@@ -1,5 +1,7 @@
 package tactus.internal.realtime;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -72,7 +74,21 @@ public final class Ownership implements RealtimeMode {
      * alone: a thread that has just lost the role would otherwise read the new owner's depth as its own and step
      * beside it (and their unsynchronised counts could leave the gate held for good).
      */
-    private volatile Thread gateHolder;
+    private Thread gateHolder;
+    /**
+     * Opaque access to {@link #gateHolder}: only ever compared with the reading thread, and a thread always sees its
+     * own last write (a stale value written by another thread is never the reader), so the owner's entry and exit
+     * need no fence for it. The gate's compare-and-set and release order everything else.
+     */
+    private static final VarHandle GATE_HOLDER;
+
+    static {
+        try {
+            GATE_HOLDER = MethodHandles.lookup().findVarHandle(Ownership.class, "gateHolder", Thread.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     /** System.nanoTime() of the owner's latest stepping call (refreshed every 64 calls or every call of 64 steps). */
     private volatile long lastStep;
     private long callsSinceClock;
@@ -127,9 +143,14 @@ public final class Ownership implements RealtimeMode {
         return owner;
     }
 
+    /** @return true when {@code t} (the calling thread) holds the gate for a stepping or facade call of the owner. */
+    private boolean holdsGate(Thread t) {
+        return (Thread) GATE_HOLDER.getOpaque(this) == t;
+    }
+
     /** @return true when the current thread is the owner inside a stepping or facade call (it holds the gate). */
     public boolean ownerInCall() {
-        return gateHolder == Thread.currentThread();
+        return holdsGate(Thread.currentThread());
     }
 
     /** @return true when the current thread is applying queued commands. */
@@ -204,7 +225,7 @@ public final class Ownership implements RealtimeMode {
      */
     public int beginStep(int n) {
         Thread me = Thread.currentThread();
-        if (gateHolder == me) {
+        if (holdsGate(me)) {
             ownerDepth++; // a stepping call from inside one (a listener): the gate is already held
             return STEP;
         }
@@ -245,7 +266,7 @@ public final class Ownership implements RealtimeMode {
      * outermost); does nothing when the current thread does not hold the gate.
      */
     public void endSection() {
-        if (gateHolder == Thread.currentThread()) {
+        if (holdsGate(Thread.currentThread())) {
             endStep();
         }
     }
@@ -312,7 +333,7 @@ public final class Ownership implements RealtimeMode {
      * @return false when the current thread lost the role (it then acts as any other thread)
      */
     public boolean enterAsOwner() {
-        if (gateHolder == Thread.currentThread()) {
+        if (holdsGate(Thread.currentThread())) {
             ownerDepth++;
             return true;
         }
@@ -359,7 +380,7 @@ public final class Ownership implements RealtimeMode {
                     takeRole(me);
                 }
                 ownerDepth = 1;
-                gateHolder = me;
+                GATE_HOLDER.setOpaque(this, me);
                 return STEP;
             }
             // a thread is applying commands (no owner, or taking the role from an idle one): wait for it
@@ -378,8 +399,8 @@ public final class Ownership implements RealtimeMode {
                 finishRole();
             }
         } finally {
-            gateHolder = null;
-            gate.set(FREE);
+            GATE_HOLDER.setOpaque(this, (Thread) null);
+            gate.setRelease(FREE); // a release store: the next holder's compare-and-set sees this call's writes
         }
         if (endRequested) {
             lock.finishEndIfFree(this);
@@ -735,7 +756,7 @@ public final class Ownership implements RealtimeMode {
             freeRole();
         } finally {
             ownerDepth = 0;
-            gateHolder = null;
+            GATE_HOLDER.setOpaque(this, (Thread) null);
             gate.set(FREE);
         }
     }
