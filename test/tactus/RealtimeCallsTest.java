@@ -34,30 +34,6 @@ class RealtimeCallsTest {
         return pm;
     }
 
-    /** Runs {@code body} on a new thread and waits for it; rethrows what it threw. */
-    private static void onThread(String name, ThrowingRunnable body) throws Exception {
-        AtomicReference<Throwable> error = new AtomicReference<>();
-        Thread t = new Thread(() -> {
-            try {
-                body.run();
-            } catch (Throwable e) {
-                error.set(e);
-            }
-        }, name);
-        t.start();
-        t.join();
-        if (error.get() instanceof Exception) {
-            throw (Exception) error.get();
-        }
-        if (error.get() != null) {
-            throw (Error) error.get();
-        }
-    }
-
-    private interface ThrowingRunnable {
-        void run() throws Exception;
-    }
-
     @Test
     void inLockedModeARunIsNotBegunAndHoldsNothing() {
         assertTimeoutPreemptively(BOUND, () -> {
@@ -82,13 +58,13 @@ class RealtimeCallsTest {
             PhysicalModel pm = oneMass();
             pm.beginRealtimeStepping();
             Mass m = pm.getMass("m");
-            onThread("audio", () -> {
+            SnapshotOnDemandTest.onThread("audio", () -> {
                 assertTrue(pm.beginRealtimeCalls(), "the first run takes the role");
                 try {
                     assertEquals(Thread.currentThread(), pm.getRealtimeOwner());
                     pm.computeStep();
                     double before = m.getPosition().x;
-                    onThread("sketch", () -> m.setPosition(new Vect3D(5, 0, 0)));
+                    SnapshotOnDemandTest.onThread("sketch", () -> m.setPosition(new Vect3D(5, 0, 0)));
                     Ownership own = pm.gate.mode();
                     assertTrue(own.postedSeq() > own.appliedSeq(), "the change is queued");
                     assertEquals(before, m.getPosition().x, 0.0, "not applied inside the run");
@@ -99,7 +75,7 @@ class RealtimeCallsTest {
                 assertTrue(pm.beginRealtimeCalls());
                 try {
                     assertEquals(5, m.getPosition().x, 0.0, "applied when the next run begins");
-                    onThread("sketch", () -> m.setPosition(new Vect3D(7, 0, 0)));
+                    SnapshotOnDemandTest.onThread("sketch", () -> m.setPosition(new Vect3D(7, 0, 0)));
                     assertEquals(5, m.getPosition().x, 0.0, "a read inside the run applies nothing");
                     pm.computeStep();
                     assertEquals(7, m.getPosition().x, 0.0, "a step applies what is queued before it steps");
@@ -168,7 +144,7 @@ class RealtimeCallsTest {
             while (pm.getRealtimeOwner() != owner) {
                 Thread.sleep(1);
             }
-            onThread("other", () -> {
+            SnapshotOnDemandTest.onThread("other", () -> {
                 assertFalse(pm.beginRealtimeCalls(), "refused: another thread owns the model");
                 pm.endRealtimeCalls(); // holds nothing: does nothing
                 assertEquals(owner, pm.getRealtimeOwner());
@@ -194,7 +170,7 @@ class RealtimeCallsTest {
             pm.setDivergenceListener(e -> pm.endRealtimeStepping());
             pm.init();
             pm.beginRealtimeStepping();
-            onThread("audio", () -> {
+            SnapshotOnDemandTest.onThread("audio", () -> {
                 boolean ended = false;
                 for (int i = 0; i < 100_000 && !ended; i++) {
                     assertTrue(pm.beginRealtimeCalls(), "sample " + i);

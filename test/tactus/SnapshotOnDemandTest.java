@@ -45,7 +45,7 @@ class SnapshotOnDemandTest {
      * Runs {@code body} on a new thread of that name (a thread that becomes the model's owner), waits for it (at most
      * 50 s) and fails with its exception, if it threw one.
      */
-    private static void onThread(String name, Runnable body) throws InterruptedException {
+    static void onThread(String name, Body body) throws InterruptedException {
         AtomicReference<Throwable> error = new AtomicReference<>();
         Thread t = new Thread(() -> {
             try {
@@ -58,6 +58,11 @@ class SnapshotOnDemandTest {
         t.join(50_000);
         assertFalse(t.isAlive(), name + " still runs after 50 s");
         assertEquals(null, error.get());
+    }
+
+    /** What {@link #onThread} runs; it may throw (the exception fails the test). */
+    interface Body {
+        void run() throws Exception;
     }
 
     @Test

@@ -39,7 +39,8 @@ import tactus.internal.model.RealtimeMode;
  *       {@link WriteBatch} and its stability checks are collected; whoever holds the gate and drains is the
  *       applier: its writes go to the engine.</li>
  * </ul>
- * Every field without a lock is either confined to one role, guarded by the gate, or volatile/atomic.
+ * Every field without a lock is either confined to one role, guarded by the gate, or volatile/atomic (the gate's
+ * holder is opaque: see {@link #gateHolder}). The owner releases the gate with a release store.
  */
 public final class Ownership implements RealtimeMode {
     /** An owner that has not begun a stepping call for this long is idle: another thread may take its role. */
