@@ -101,11 +101,14 @@ public final class Inverse3WallRig {
         /** The handle's largest distance from the wall's line through the start, metres (should stay ~0). */
         public double offLine;
         /**
-         * Work of the held forces on the handle up to the last position the loop read, joules (the plant's record;
-         * > 0: the device gave energy).
+         * Work of the held forces on the handle up to the position the loop read at tick {@code ticks}, joules (the
+         * plant's record; > 0: the device gave energy).
          */
         public double work;
-        /** The observer at the end: energy in, out, net, dissipated by the controller (J) and its active share. */
+        /**
+         * The observer after exactly {@code ticks} ticks: energy in, out, net, dissipated by the controller (J) and its
+         * active share.
+         */
         public double energyIn;
         /** Energy out to the hand, J. */
         public double energyOut;
@@ -187,7 +190,18 @@ public final class Inverse3WallRig {
             link = new PhysicalModelAvatar(pm, "avatar");
         }
         AudioSide a = audio;
+        HapticLoop loop = new HapticLoop(device, link);
         device.setListener((tick, p, f) -> {
+            if (tick == c.ticks) {
+                // the energies after exactly c.ticks ticks (the loop runs on until the rig's thread stops it)
+                PassivityObserver o = loop.passivity();
+                tr.work = device.workSeen();
+                tr.energyIn = o.energyIn();
+                tr.energyOut = o.energyOut();
+                tr.net = o.netEnergy();
+                tr.dissipated = o.dissipated();
+                tr.activeShare = o.activeShare();
+            }
             if (a != null) {
                 a.afterTick(tick);
             }
@@ -209,7 +223,6 @@ public final class Inverse3WallRig {
             }
         });
 
-        HapticLoop loop = new HapticLoop(device, link);
         loop.setWorkspaceMapping(WorkspaceMapping.identity());
         loop.setForceGain(1);
         loop.setMode(c.mode == Mode.AUDIO ? HapticLoop.Mode.AUDIO : HapticLoop.Mode.HAPTICS_ONLY);
@@ -230,13 +243,6 @@ public final class Inverse3WallRig {
         if (tr.failure == null && device.ticks() <= c.ticks) {
             tr.failure = "the run did not finish in 120 s of wall clock (" + device.ticks() + " ticks)";
         }
-        PassivityObserver o = loop.passivity();
-        tr.work = device.workSeen();
-        tr.energyIn = o.energyIn();
-        tr.energyOut = o.energyOut();
-        tr.net = o.netEnergy();
-        tr.dissipated = o.dissipated();
-        tr.activeShare = o.activeShare();
         loop.close();
         return tr;
     }
