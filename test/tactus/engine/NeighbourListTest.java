@@ -184,11 +184,11 @@ class NeighbourListTest {
         NeighbourList list = new NeighbourList(e.plan(), slot, THRESHOLD, SKIN);
         list.rebuild();
         assertEquals(NeighbourList.ALL_PAIRS, list.lastSearch);
-        // 100 members in a line 300 reaches long: 300 cells, more than 8 per member in x alone -> hashed
+        // 100 members in a line 5,000 reaches long: more cells than max(4,096, 32 n) -> hashed
         Engine f = new Engine();
         double[][] line = new double[100][3];
         for (int i = 0; i < 100; i++) {
-            line[i] = new double[] {9 * REACH * i + 0.5 * REACH, 0.5 * REACH, 0.5 * REACH};
+            line[i] = new double[] {50 * REACH * i + 0.5 * REACH, 0.5 * REACH, 0.5 * REACH};
         }
         int[] lineSlots = members(f, line, new SplittableRandom(6));
         NeighbourList sparse = new NeighbourList(f.plan(), lineSlots, THRESHOLD, SKIN);
