@@ -134,7 +134,7 @@ class NeighbourListTest {
 
     @Test
     void everyRebuildListsExactlyThePairsWithinReachInMemberOrder() {
-        int[] sizes = {2, 3, 7, 16, 31, 47, 48, 49, 64, 200, 500, 2000};
+        int[] sizes = {2, 3, 7, 16, 31, 48, 63, 64, 65, 100, 200, 500, 2000};
         SplittableRandom rnd = new SplittableRandom(2027);
         Set<Integer> largeSearches = new HashSet<>();
         for (int n : sizes) {
