@@ -12,7 +12,7 @@ import java.util.Arrays;
  * list: each of its two masses moved at most half the skin, so the pair was closer than threshold + skin at the
  * build. Pairs are listed in lexicographic member order ({@link #pairI} before {@link #pairJ}, as mass slots).
  * Steady-state use allocates nothing; the list and the grid only grow when the members get denser or spread
- * wider than ever before.
+ * wider than ever before, and a group searched pair by pair has room for all its pairs from construction on.
  *
  * <p>Used by contact groups ({@link ContactGroupKernel}) and by the broad phase of explicit contacts
  * ({@link ContactIndex}).
@@ -97,6 +97,9 @@ final class NeighbourList {
         cx = new long[n];
         cy = new long[n];
         cz = new long[n];
+        // a group searched pair by pair gets room for all its pairs now, so that no rebuild (on the stepping thread)
+        // ever allocates
+        ensurePairs(n <= ALL_PAIRS_MAX ? n * (n - 1) / 2 : 0);
         setReach(threshold, skin);
     }
 
@@ -230,7 +233,6 @@ final class NeighbourList {
     private void rebuildAllPairs() {
         final double[] x = p.x, y = p.y, zz = p.z;
         final double r2 = reach2;
-        ensurePairs(n * (n - 1) / 2);
         int count = 0;
         for (int m = 0; m < n - 1; m++) {
             int s = slot[m];

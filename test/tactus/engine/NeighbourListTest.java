@@ -173,6 +173,27 @@ class NeighbourListTest {
     }
 
     @Test
+    void aGroupSearchedPairByPairNeverGrowsItsListWhenRebuilt() {
+        int n = NeighbourList.ALL_PAIRS_MAX;
+        double[][] pos = new double[n][3];
+        SplittableRandom rnd = new SplittableRandom(11);
+        for (double[] q : pos) {
+            for (int c = 0; c < 3; c++) {
+                q[c] = 0.5 * THRESHOLD * rnd.nextDouble(); // every pair within the threshold
+            }
+        }
+        Engine e = new Engine();
+        int[] slot = members(e, pos, rnd);
+        NeighbourList list = new NeighbourList(e.plan(), slot, THRESHOLD, SKIN);
+        int[] pi = list.pairI;
+        int[] pj = list.pairJ;
+        list.rebuild();
+        assertEquals(n * (n - 1) / 2, list.pairs, "every pair listed");
+        assertTrue(pi == list.pairI && pj == list.pairJ, "the arrays made by the constructor hold every pair");
+        assertBruteForce(list, e.plan(), slot, "a dense group of " + n);
+    }
+
+    @Test
     void aRebuildCostsInProportionToTheMembersNotToTheVolumeTheySpan() {
         // 16 members strung out over 4,000 reaches: the old dense grid spanned up to 4,096 cells for them
         Engine e = new Engine();
