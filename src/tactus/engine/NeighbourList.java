@@ -28,8 +28,9 @@ final class NeighbourList {
      * The dense grid is used when the members' bounding box holds at most {@code max(4,096, 32 n)} cells for n members
      * (at most 64 per member, since only groups of more than {@link #ALL_PAIRS_MAX} use a grid), so that clearing and
      * summing its cell counts costs a few dozen operations per member; sparser groups use the hashed grid (a table of
-     * about 2 to 4 buckets per member). Measured: the dense grid at about 28 cells per member is 1.6 times faster
-     * than the hashed grid (docs/performance.md).
+     * about 2 to 4 buckets per member). Measured: the strung-out 200- and 2,000-member groups of
+     * {@code tactus.bench.GroupScenes} step 1.6 times slower on the hashed grid than on the dense one (docs/audio.md,
+     * "The contact group's rebuild").
      */
     static final int DENSE_CELLS_PER_MEMBER = 32;
     /** The dense grid is used up to this many cells whatever the member count (see {@link #DENSE_CELLS_PER_MEMBER}). */

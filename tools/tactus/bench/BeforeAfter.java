@@ -24,8 +24,8 @@ import java.util.Locale;
  * ratio after/before is taken per round, so that load drift on a shared machine cancels out. Times are this
  * thread's CPU time (time spent descheduled does not count).
  *
- * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|audio1d|string-1000|mesh-100|marbles-200|line-N|lattice-N]
- * [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
+ * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit>
+ * [-Pscene=audio|audio1d|string-1000|mesh-100|marbles-200|line-N|lattice-N] [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
  * --before=<classes dir or jar> | --before-commit=<rev> [--after=<classes dir or jar>] [--deps=<jar:jar...>]
  * [--scene=...] [--rounds=15] [--forks=N] [N ...]}. {@code --forks=N} repeats the comparison in N fresh JVMs
  * (alternating which build is constructed first) and prints the median of their ratios: one JVM's ratio carries an
@@ -267,7 +267,8 @@ public final class BeforeAfter {
         AFTER_FIRST = afterFirst;
         if (before == null || after.isEmpty()) {
             throw new IllegalArgumentException("usage: --before=<classes> | --before-commit=<rev>, [--after=<classes>] "
-                    + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200|line-N|lattice-N] [--rounds=15] [N ...]");
+                    + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200|line-N|lattice-N] [--rounds=15] "
+                    + "[N ...]");
         }
         if (sizes.isEmpty()) {
             sizes.addAll(scene.equals("audio1d") ? Arrays.asList(30, 100, 300, 1000)
