@@ -28,13 +28,15 @@ final class NeighbourList {
      * The dense grid is used when the members' bounding box holds at most {@code max(4,096, 32 n)} cells for n members
      * (at most 64 per member, since only groups of more than {@link #ALL_PAIRS_MAX} use a grid), so that clearing and
      * summing its cell counts costs a few dozen operations per member; sparser groups use the hashed grid (a table of
-     * about 2 to 4 buckets per member). Measured: the strung-out 200- and 2,000-member groups of
-     * {@code tactus.bench.GroupScenes} step 1.6 times slower on the hashed grid than on the dense one (docs/audio.md,
-     * "The contact group's rebuild").
+     * 8 to 16 buckets per member, {@link #HASH_BUCKETS_PER_MEMBER}). Measured: the strung-out 200- and 2,000-member
+     * groups of {@code tactus.bench.GroupScenes} stepped 1.6 times slower on the hashed grid (then with 2 to 4 buckets
+     * per member) than on the dense one (docs/audio.md, "The contact group's rebuild").
      */
     static final int DENSE_CELLS_PER_MEMBER = 32;
     /** The dense grid is used up to this many cells whatever the member count (see {@link #DENSE_CELLS_PER_MEMBER}). */
     static final int DENSE_CELLS_MIN = 4096;
+    /** The hashed grid's table has between this many and twice as many buckets per member. */
+    static final int HASH_BUCKETS_PER_MEMBER = 8;
     /** {@link #lastSearch}: every pair tested. */
     static final int ALL_PAIRS = 0;
     /** {@link #lastSearch}: the dense grid. */
@@ -90,7 +92,9 @@ final class NeighbourList {
         builtX = new double[n];
         builtY = new double[n];
         builtZ = new double[n];
-        int size = Integer.highestOneBit(Math.max(4, 2 * n - 1)) << 1;
+        // 8 to 16 buckets per member: with 2 to 4, a member's 27 neighbour cells held some 14 members of other cells
+        // (hash collisions) to test, and the strung-out 2,000-member group rebuilt in 710 µs instead of 360 µs
+        int size = Integer.highestOneBit(Math.max(4, HASH_BUCKETS_PER_MEMBER * n - 1)) << 1;
         mask = size - 1;
         bucketStart = new int[size + 1];
         bucketItems = new int[n];
