@@ -4,18 +4,45 @@ import java.util.Arrays;
 
 /**
  * A Verlet neighbour list over a set of masses: every pair of members closer than a reach
- * ({@code threshold + skin}), found with a uniform grid of cell size reach (dense over the members' bounding
- * box when that box holds few enough cells, hashed otherwise) and rebuilt only when some member has moved more
+ * ({@code threshold + skin}), found by testing every pair in groups of at most {@link #ALL_PAIRS_MAX} members and
+ * with a uniform grid of cell size reach in larger ones (dense over the members' bounding box when that box holds
+ * at most {@code max(4,096, 32 n)} cells, hashed otherwise), so that a rebuild costs in proportion to the members
+ * (at most 64 grid cells per member), never to the volume they span; rebuilt only when some member has moved more
  * than {@code skin / 2} since the last build. Between two builds, every pair closer than the threshold is in the
  * list: each of its two masses moved at most half the skin, so the pair was closer than threshold + skin at the
  * build. Pairs are listed in lexicographic member order ({@link #pairI} before {@link #pairJ}, as mass slots).
  * Steady-state use allocates nothing; the list and the grid only grow when the members get denser or spread
- * wider than ever before.
+ * wider than ever before, and a group searched pair by pair has room for all its pairs from construction on.
  *
  * <p>Used by contact groups ({@link ContactGroupKernel}) and by the broad phase of explicit contacts
  * ({@link ContactIndex}).
  */
 final class NeighbourList {
+    /**
+     * Groups of at most this many members test every pair ({@code n (n - 1) / 2} distance tests, 2,016 at 64) rather
+     * than build a grid: measured on this project's 2-core Xeon, every pair costs 0.4 µs per rebuild at 24 members and
+     * 2.7 µs at 64, the dense grid 1.2 and 3.4 µs (the hashed grid more), and the grid wins from about 96 members on.
+     */
+    static final int ALL_PAIRS_MAX = 64;
+    /**
+     * The dense grid is used when the members' bounding box holds at most {@code max(4,096, 32 n)} cells for n members
+     * (at most 64 per member, since only groups of more than {@link #ALL_PAIRS_MAX} use a grid), so that clearing and
+     * summing its cell counts costs a few dozen operations per member; sparser groups use the hashed grid (a table of
+     * 8 to 16 buckets per member, {@link #HASH_BUCKETS_PER_MEMBER}). Measured: the strung-out 200- and 2,000-member
+     * groups of {@code tactus.bench.GroupScenes} stepped 1.6 times slower on the hashed grid (then with 2 to 4 buckets
+     * per member) than on the dense one (docs/audio.md, "The contact group's rebuild").
+     */
+    static final int DENSE_CELLS_PER_MEMBER = 32;
+    /** The dense grid is used up to this many cells whatever the member count (see {@link #DENSE_CELLS_PER_MEMBER}). */
+    static final int DENSE_CELLS_MIN = 4096;
+    /** The hashed grid's table has between this many and twice as many buckets per member. */
+    static final int HASH_BUCKETS_PER_MEMBER = 8;
+    /** {@link #lastSearch}: every pair tested. */
+    static final int ALL_PAIRS = 0;
+    /** {@link #lastSearch}: the dense grid. */
+    static final int DENSE = 1;
+    /** {@link #lastSearch}: the hashed grid. */
+    static final int HASHED = 2;
     private final StepPlan p;
     private final int[] slot;
     private final int n;
@@ -44,6 +71,8 @@ final class NeighbourList {
     int pairs;
     private boolean built;
     private long rebuilds;
+    /** The search the last rebuild used (for tests): {@link #ALL_PAIRS}, {@link #DENSE} or {@link #HASHED}. */
+    int lastSearch;
     /**
      * Sequence number of the list, for readers on other threads: odd while {@link #rebuild()} writes the list,
      * even otherwise, and changed by every rebuild. Written by the stepping thread only, twice per rebuild.
@@ -63,7 +92,9 @@ final class NeighbourList {
         builtX = new double[n];
         builtY = new double[n];
         builtZ = new double[n];
-        int size = Integer.highestOneBit(Math.max(4, 2 * n - 1)) << 1;
+        // 8 to 16 buckets per member: with 2 to 4, a member's 27 neighbour cells held some 14 members of other cells
+        // (hash collisions) to test, and the strung-out 2,000-member group rebuilt in 710 µs instead of 360 µs
+        int size = Integer.highestOneBit(Math.max(4, HASH_BUCKETS_PER_MEMBER * n - 1)) << 1;
         mask = size - 1;
         bucketStart = new int[size + 1];
         bucketItems = new int[n];
@@ -71,6 +102,9 @@ final class NeighbourList {
         cx = new long[n];
         cy = new long[n];
         cz = new long[n];
+        // a group searched pair by pair gets room for all its pairs now, so that no rebuild (on the stepping thread)
+        // ever allocates
+        ensurePairs(n <= ALL_PAIRS_MAX ? n * (n - 1) / 2 : 0);
         setReach(threshold, skin);
     }
 
@@ -159,13 +193,22 @@ final class NeighbourList {
         rebuilds++;
         built = true;
         final double[] x = p.x, y = p.y, zz = p.z;
-        long minX = Long.MAX_VALUE, minY = Long.MAX_VALUE, minZ = Long.MAX_VALUE;
-        long maxX = Long.MIN_VALUE, maxY = Long.MIN_VALUE, maxZ = Long.MIN_VALUE;
         for (int m = 0; m < n; m++) {
             int s = slot[m];
             builtX[m] = x[s];
             builtY[m] = y[s];
             builtZ[m] = zz[s];
+        }
+        pairs = 0;
+        if (n <= ALL_PAIRS_MAX) {
+            lastSearch = ALL_PAIRS;
+            rebuildAllPairs();
+            return;
+        }
+        long minX = Long.MAX_VALUE, minY = Long.MAX_VALUE, minZ = Long.MAX_VALUE;
+        long maxX = Long.MIN_VALUE, maxY = Long.MIN_VALUE, maxZ = Long.MIN_VALUE;
+        for (int m = 0; m < n; m++) {
+            int s = slot[m];
             long a = cellIndex(x[s]), b = cellIndex(y[s]), c = cellIndex(zz[s]);
             cx[m] = a;
             cy[m] = b;
@@ -177,17 +220,39 @@ final class NeighbourList {
             maxY = Math.max(maxY, b);
             maxZ = Math.max(maxZ, c);
         }
-        pairs = 0;
-        if (n == 0) {
-            return;
-        }
         long nx = maxX - minX + 1, ny = maxY - minY + 1, nz = maxZ - minZ + 1;
         // the cell count in double: nx * ny * nz can overflow a long (cell indices reach +-1e15)
-        if ((double) nx * (double) ny * (double) nz <= Math.max(4096L, 32L * n)) {
+        if ((double) nx * (double) ny * (double) nz <= Math.max(DENSE_CELLS_MIN, (double) DENSE_CELLS_PER_MEMBER * n)) {
+            lastSearch = DENSE;
             rebuildDense(minX, minY, minZ, (int) nx, (int) ny, (int) nz);
         } else {
+            lastSearch = HASHED;
             rebuildHashed();
         }
+    }
+
+    /**
+     * Neighbour search of a small group: every pair tested, in lexicographic member order (the order the grids
+     * produce), with the same distance test as {@link #collect}.
+     */
+    private void rebuildAllPairs() {
+        final double[] x = p.x, y = p.y, zz = p.z;
+        final double r2 = reach2;
+        int count = 0;
+        for (int m = 0; m < n - 1; m++) {
+            int s = slot[m];
+            double sx = x[s], sy = y[s], sz = zz[s];
+            for (int other = m + 1; other < n; other++) {
+                int os = slot[other];
+                double dx = sx - x[os], dy = sy - y[os], dz = sz - zz[os];
+                if (dx * dx + dy * dy + dz * dz < r2) {
+                    pairI[count] = s;
+                    pairJ[count] = os;
+                    count++;
+                }
+            }
+        }
+        pairs = count;
     }
 
     /** Neighbour search on a dense grid over the members' bounding box: each cell's members, in member order. */

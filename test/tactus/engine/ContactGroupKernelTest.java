@@ -1,9 +1,11 @@
 package tactus.engine;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
 /**
  * A contact group must behave exactly like the equivalent explicit Contact3D links (forces and potential
@@ -92,6 +94,49 @@ class ContactGroupKernelTest {
             assertEquals(EnergyMeter.potential(e[1].plan()), EnergyMeter.potential(e[0].plan()), 0.0,
                     "after stepping, round " + round);
             assertSameState(e[0], e[1], n, "round " + round);
+        }
+    }
+
+    /**
+     * Groups of 2 to 200 members, moving fast enough to rebuild their list at most steps, through every search of
+     * the neighbour list (every pair up to {@link NeighbourList#ALL_PAIRS_MAX} members, then the grids): positions
+     * equal to those under explicit contacts in member order, bit for bit, at every step.
+     */
+    @Test
+    @Timeout(120)
+    void movingGroupsOfEverySizeMatchExplicitContactsStepByStep() {
+        SplittableRandom rnd = new SplittableRandom(4242);
+        double threshold = 0.2;
+        for (int n : new int[] {2, 5, 16, 64, 65, 120, 200}) {
+            double side = threshold * Math.cbrt(n);
+            double[][] pos = new double[n][3];
+            for (double[] p : pos) {
+                for (int c = 0; c < 3; c++) {
+                    p[c] = side * rnd.nextDouble();
+                }
+            }
+            Engine[] e = twins(pos, threshold);
+            for (int id = 0; id < n; id++) {
+                // 0.02 to 0.06 per step towards the middle, against a half skin of 0.03: the list is rebuilt often
+                double[] v = new double[3];
+                for (int c = 0; c < 3; c++) {
+                    v[c] = (0.5 * side - pos[id][c]) * 0.04 / side + 0.02 * (rnd.nextDouble() - 0.5);
+                }
+                for (Engine x : e) {
+                    x.setState(id, pos[id][0], pos[id][1], pos[id][2], pos[id][0] - v[0], pos[id][1] - v[1],
+                            pos[id][2] - v[2]);
+                }
+            }
+            double engaged = 0;
+            for (int step = 0; step < 150; step++) {
+                e[0].step();
+                e[1].step();
+                assertSameState(e[0], e[1], n, n + " members, step " + step);
+                engaged = Math.max(engaged, EnergyMeter.potential(e[1].plan()));
+            }
+            long rebuilds = e[0].contactGroupRebuilds();
+            assertTrue(rebuilds > 20, n + " members: the list was rebuilt " + rebuilds + " times in 150 steps");
+            assertTrue(engaged > 0, n + " members: some pairs came into contact");
         }
     }
 

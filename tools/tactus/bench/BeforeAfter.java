@@ -24,15 +24,16 @@ import java.util.Locale;
  * ratio after/before is taken per round, so that load drift on a shared machine cancels out. Times are this
  * thread's CPU time (time spent descheduled does not count).
  *
- * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit> [-Pscene=audio|audio1d|string-1000|mesh-100|marbles-200]
- * [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
+ * <p>Usage: {@code gradle beforeAfter -Pbefore=<commit>
+ * [-Pscene=audio|audio1d|string-1000|mesh-100|marbles-200|line-N|lattice-N] [-Prounds=15] [-Psizes="1000 5000"]}, or {@code java -cp <tools classpath> tactus.bench.BeforeAfter
  * --before=<classes dir or jar> | --before-commit=<rev> [--after=<classes dir or jar>] [--deps=<jar:jar...>]
  * [--scene=...] [--rounds=15] [--forks=N] [N ...]}. {@code --forks=N} repeats the comparison in N fresh JVMs
  * (alternating which build is constructed first) and prints the median of their ratios: one JVM's ratio carries an
  * offset of its own (see {@link #forkAndSummarise}). {@code --before-commit} compiles {@code src/} of that commit
  * ({@code git archive}) into {@code build/beforeafter/}; {@code --after} and {@code --deps} default to the library's
  * classes and the jars of this JVM's class path. The other scenes ({@code --scene}) are those of
- * {@link tactus.bench.paper.PaperScenes}, loaded once per build, stepped by {@code computeStep()}.
+ * {@link tactus.bench.paper.PaperScenes} (and the moving contact groups of {@link GroupScenes}, {@code line-N} and
+ * {@code lattice-N}), loaded once per build, stepped by {@code computeStep()}.
  */
 public final class BeforeAfter {
     private static final int RATE = 44100;
@@ -130,11 +131,19 @@ public final class BeforeAfter {
     private static final class SceneBuild extends Build {
         final MethodHandle step;
 
-        SceneBuild(ClassLoader loader, String scene) throws ReflectiveOperationException {
+        SceneBuild(ClassLoader loader, String sceneName) throws ReflectiveOperationException {
             super();
+            String scene = sceneName;
             Class<?> ps = Class.forName("tactus.bench.paper.PaperScenes", true, loader);
             Object model;
+            if (GroupScenes.isGroupScene(scene)) {
+                scene = "group";
+            }
             switch (scene) {
+                case "group":
+                    model = Class.forName("tactus.bench.GroupScenes", true, loader).getMethod("create", String.class)
+                            .invoke(null, sceneName);
+                    break;
                 case "marbles-200":
                     model = ps.getMethod("marbles", int.class, java.util.function.Consumer.class).invoke(null, 200, null);
                     break;
@@ -146,7 +155,7 @@ public final class BeforeAfter {
                     break;
                 default:
                     throw new IllegalArgumentException("unknown scene " + scene
-                            + " (audio, string-1000, mesh-100, marbles-200)");
+                            + " (audio, string-1000, mesh-100, marbles-200, line-N, lattice-N)");
             }
             step = MethodHandles.publicLookup().findVirtual(model.getClass(), "computeStep",
                     MethodType.methodType(void.class)).bindTo(model).asType(MethodType.methodType(void.class));
@@ -258,7 +267,8 @@ public final class BeforeAfter {
         AFTER_FIRST = afterFirst;
         if (before == null || after.isEmpty()) {
             throw new IllegalArgumentException("usage: --before=<classes> | --before-commit=<rev>, [--after=<classes>] "
-                    + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200] [--rounds=15] [N ...]");
+                    + "[--deps=<jars>] [--scene=audio|string-1000|mesh-100|marbles-200|line-N|lattice-N] [--rounds=15] "
+                    + "[N ...]");
         }
         if (sizes.isEmpty()) {
             sizes.addAll(scene.equals("audio1d") ? Arrays.asList(30, 100, 300, 1000)
@@ -376,6 +386,13 @@ public final class BeforeAfter {
         Build a0 = AFTER_FIRST ? new SceneBuild(la, scene) : null;
         Build b = new SceneBuild(lb, scene);
         Build a = a0 != null ? a0 : new SceneBuild(la, scene);
+        // warm both builds up for a second before timing a step: a small scene's first 200 steps run interpreted,
+        // and a round sized on them would last milliseconds
+        long warm = System.nanoTime();
+        while (System.nanoTime() - warm < 1_000_000_000L) {
+            b.render(200);
+            a.render(200);
+        }
         long t = System.nanoTime();
         b.render(200);
         long steps = Math.max(200, (long) (0.3e9 / Math.max(1, (System.nanoTime() - t) / 200)));
