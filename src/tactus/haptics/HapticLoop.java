@@ -672,12 +672,37 @@ public final class HapticLoop implements AutoCloseable {
 
     /**
      * Puts a {@link VirtualCoupling} between the handle and the avatar (null: none, the default): the avatar follows
-     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. Configure before
-     * {@link #start()}.
+     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. At any time, also
+     * while the loop runs: the loop takes the new coupling at its next tick (nothing is allocated on its thread), with
+     * the proxy placed at the handle and moving with it, so the coupling starts with zero force (bumpless). Switched
+     * off (null), the avatar goes back to the handle at the next tick: whatever the proxy's stretch was shows as a
+     * step of the avatar in the model.
      */
     public void setVirtualCoupling(VirtualCoupling coupling) {
-        beforeStart("setVirtualCoupling");
         port.setCoupling(coupling);
+    }
+
+    /**
+     * Caps the energy (J at the handle; >= 0, or {@code Double.POSITIVE_INFINITY} for no cap) that the passivity
+     * controller keeps in reserve, at any time. Without a cap, energy the hand put into the model long ago (pushing
+     * through a damper, say) lets a later stiff contact give that much back before the controller acts; with it, at
+     * most this much. Keep it above the energy the model itself stores and honestly gives back (a mass set swinging,
+     * a spring wound up), or the controller brakes that return. The default (0.1 J) was measured not to change the
+     * paper's soft examples (docs/haptics-stability.md).
+     *
+     * @throws IllegalArgumentException naming the value when it is negative or NaN
+     */
+    public void setPassivityReserveLimit(double joules) {
+        if (!(joules >= 0)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityReserveLimit: limit must be >= 0 J (or infinite), got "
+                    + joules);
+        }
+        port.setReserveLimit(joules);
+    }
+
+    /** The cap (J) on the energy the passivity controller keeps in reserve; infinite when there is none. */
+    public double passivityReserveLimit() {
+        return port.reserveLimit();
     }
 
     /** The virtual coupling between the handle and the avatar, or null. */

@@ -13,7 +13,10 @@ package tactus.haptics;
  * to zero. Whatever the prediction missed shows in the exact account at the next tick and is dissipated then.
  *
  * <p>The account forgets deficits while the controller is off, so that switching it on does not brake the hand for
- * energy created before. One thread (the haptic loop's) calls everything here; nothing allocates.
+ * energy created before. It is also capped ({@link #setReserveLimit}): energy the hand put in long ago (pushing
+ * through a damper, say) is not a reserve a later stiff contact may give back before the controller acts; the cap
+ * must lie above the energy the model itself stores and returns (a mass set moving, a spring wound up), or the
+ * controller brakes that honest return. One thread (the haptic loop's) calls everything here; nothing allocates.
  */
 final class PassivityController {
     /**
@@ -23,7 +26,14 @@ final class PassivityController {
      */
     static final double DEFAULT_DAMPING_LIMIT = 10;
 
+    /**
+     * The default cap on the reserve, J: measured on the emulated 2DIY not to change what the paper's soft examples
+     * feel like (docs/haptics-stability.md, "Does it change a soft model?").
+     */
+    static final double DEFAULT_RESERVE_LIMIT = 0.1;
+
     private double dampingLimit = DEFAULT_DAMPING_LIMIT;
+    private volatile double reserveLimit = DEFAULT_RESERVE_LIMIT;
     private double account;     // J, energy into the model through the port, as the controller counts it
     private double added;       // N s/m, the damping added at the last command
 
@@ -36,6 +46,15 @@ final class PassivityController {
         return dampingLimit;
     }
 
+    /** Sets the largest energy (J, >= 0; infinite for no cap) the account may hold in reserve. */
+    void setReserveLimit(double joules) {
+        reserveLimit = joules;
+    }
+
+    double reserveLimit() {
+        return reserveLimit;
+    }
+
     void reset() {
         account = 0;
         added = 0;
@@ -46,6 +65,10 @@ final class PassivityController {
         account += intoModel;
         if (!on && account < 0) {
             account = 0;
+        }
+        double cap = reserveLimit;
+        if (account > cap) {
+            account = cap;
         }
     }
 

@@ -73,7 +73,9 @@ class PassivityLoopTest {
             loop.setFrictionCompensation(new FrictionCompensation(0.05));
             loop.setPassivityControl(true);
             loop.start();
-            assertThrows(IllegalStateException.class, () -> loop.setVirtualCoupling(null), "coupling only before start");
+            // couplings made on this thread, switched in and out while the loop runs (every window below switches)
+            VirtualCoupling grip = VirtualCoupling.forContacts(400, 0.1, 20_000, 1e-3);
+            VirtualCoupling forDevice = loop.virtualCoupling();
             Thread t = null;
             // warm up (JIT, buffers) longer than HapticLoopAllocationTest: more code runs per tick with every option on,
             // and on a loaded machine its compilation was seen to allocate in the first windows
@@ -87,14 +89,24 @@ class PassivityLoopTest {
             long[] windows = new long[8];
             for (int w = 0; w < windows.length; w++) {
                 long bytes0 = mx.getThreadAllocatedBytes(t.getId());
+                loop.setVirtualCoupling(w % 3 == 0 ? null : w % 3 == 1 ? grip : forDevice);
                 waitTicks(loop, 1000);
                 windows[w] = mx.getThreadAllocatedBytes(t.getId()) - bytes0;
             }
             long best = Long.MAX_VALUE;
-            for (long b : windows) {
-                best = Math.min(best, b);
+            long bestSwitchedIn = Long.MAX_VALUE;   // the windows that began by switching a coupling in
+            for (int w = 0; w < windows.length; w++) {
+                best = Math.min(best, windows[w]);
+                if (w % 3 != 0) {
+                    bestSwitchedIn = Math.min(bestSwitchedIn, windows[w]);
+                }
             }
-            assertEquals(0, best, "bytes per 1000 ticks with every option on: " + java.util.Arrays.toString(windows));
+            assertEquals(0, bestSwitchedIn, "bytes in a window that switched a coupling in: "
+                    + java.util.Arrays.toString(windows));
+            assertEquals(0, best, "bytes per 1000 ticks with every option on, the coupling switched in each: "
+                    + java.util.Arrays.toString(windows));
+            assertTrue(loop.isRunning(), "the loop ran on through the switches: " + loop.failure());
+            assertSame(grip, loop.virtualCoupling(), "the last coupling set");
             PassivityObserver o = loop.passivity();
             assertTrue(o.ticks() > 5000, "observed ticks: " + o.ticks());
             assertTrue(o.energyIn() > 0 && Double.isFinite(o.energyIn()), "the hand pushed energy in: " + o);
@@ -255,6 +267,14 @@ class PassivityLoopTest {
             assertEquals(1, loop.exchangeDelay());
             loop.setPassivityDampingLimit(20);
             assertEquals(20, loop.passivityDampingLimit(), 0);
+            assertEquals(PassivityController.DEFAULT_RESERVE_LIMIT, loop.passivityReserveLimit(), 0);
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setPassivityReserveLimit(-0.5))
+                    .getMessage().contains("-0.5"));
+            assertThrows(IllegalArgumentException.class, () -> loop.setPassivityReserveLimit(Double.NaN));
+            loop.setPassivityReserveLimit(Double.POSITIVE_INFINITY);
+            assertEquals(Double.POSITIVE_INFINITY, loop.passivityReserveLimit(), 0);
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> VirtualCoupling.forContacts(400, 0.1, -3, 1e-3))
+                    .getMessage().contains("-3"));
         }
     }
 }

@@ -43,7 +43,13 @@ public final class PortLink implements AvatarLink {
         return this;
     }
 
-    /** Sets a virtual coupling (before the first tick). */
+    /** Caps the controller's reserve, J (infinite: no cap). */
+    public PortLink reserveLimit(double joules) {
+        port.setReserveLimit(joules);
+        return this;
+    }
+
+    /** Sets a virtual coupling (at any time; taken at the next tick, bumpless). */
     public PortLink coupling(VirtualCoupling c) {
         port.setCoupling(c);
         return this;

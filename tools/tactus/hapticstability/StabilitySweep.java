@@ -14,7 +14,7 @@ import tactus.report.LineChart;
 
 /**
  * The full sweep behind docs/haptics-stability.md ({@code gradle stabilitySweep}): (1) the theory against the
- * emulator on a linear plant for several b, T and B; (2) walls from 0.1 to 40 times the uncontrolled bound on the
+ * emulator on a linear plant for several b, T and B; (2) walls from 0.1 to 400 times the uncontrolled bound on the
  * 2DIY plant as assumed (friction, the preset's encoders), without a hand (a step on a two-sided spring) and with a
  * pen grip pressing a one-sided wall, for every {@link #VARIANTS variant}; (3) the Z-width (largest stable K for
  * each B). Writes docs/haptics-stability-theory.csv, -sweep.csv, -zwidth.csv and -zwidth.png, and prints the
@@ -35,14 +35,14 @@ public final class StabilitySweep {
     }
 
     /** Multiples of the uncontrolled bound swept. */
-    static final double[] MULTIPLES = {0.1, 0.3, 0.5, 1, 2, 5, 10, 20, 40};
+    static final double[] MULTIPLES = {0.1, 0.3, 0.5, 1, 2, 5, 10, 20, 40, 80, 200, 400};
 
     /**
      * Multiples of K0 scanned for the pen grip's Z-width: with a hand, friction and the encoders' steps make the
      * verdict not monotonic in K near the edge, so the edge is the last stable K of an increasing scan, not a
      * bisection.
      */
-    static final double[] HAND_GRID = {5, 7, 10, 14, 20, 28, 40, 56, 80};
+    static final double[] HAND_GRID = {5, 7, 10, 14, 20, 28, 40, 56, 80, 120, 200, 280, 400};
 
     /** Hand of the press: a light pen grip (kg, N/m, N s/m), assumed within the published ranges. */
     static final double HAND_MASS = 0.03;
@@ -76,7 +76,7 @@ public final class StabilitySweep {
     }
 
     /** A press configuration on the given plant and variant: the pen grip presses a one-sided wall. */
-    static WallRig.Config pressConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
+    public static WallRig.Config pressConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
         WallRig.Config c = config(plant, variant, WallRig.Wall.PLANE, k, b, 1800);
         c.hand = Hand.grasp(press(c.preset.d() / 2, WallRig.START_Y, c.gap, 0.003), HAND_MASS, HAND_STIFFNESS,
                 HAND_DAMPING);
