@@ -125,6 +125,84 @@ class PassivityLoopTest {
         }
     }
 
+    /** A model that pushes nothing and records, on the loop's thread, the largest torque the loop sent. */
+    private static final class FreeSpace implements AvatarLink {
+        volatile HapticLoop loop;
+        double worst;   // N m, written by the loop's thread only
+
+        @Override
+        public void setTarget(double px, double py, double pz) {
+            HapticLoop l = loop;
+            if (l != null) {
+                worst = Math.max(worst, Math.max(Math.abs(l.torque(1)), Math.abs(l.torque(2))));
+            }
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = 0;
+            out[1] = 0;
+            out[2] = 0;
+        }
+
+        @Override
+        public void step(int n) {
+        }
+    }
+
+    @Test
+    void aCouplingSwitchedWhileTheLoopRunsStartsWithoutAForceStep() {
+        // lockstep (each write is 1 ms of the plant's time): a pen grip sweeps the 2DIY's handle 2 cm up and down while
+        // the test thread switches a stiff coupling in, out and in again; the model pushes nothing, so every torque
+        // comes from the coupling. Bumpless, the proxy starts at the handle each time and the torques stay at what the
+        // encoders' steps give; a proxy left where it was would pull with 800 N/m over centimetres: the torque limit.
+        // (The passivity controller stays off: with it, this coupling bursts to the limit in free motion on the
+        // encoders' steps whether switched or not; docs/haptics-stability.md, "Limits".)
+        HaplyPreset preset = HaplyPreset.TWO_DIY_V3;
+        BoardEmulator em = new BoardEmulator(preset, BoardModel.M3);
+        em.setLockstep(1e-3);
+        em.setPlant(tactus.haptics.emulator.PlantParameters.twoDiy());
+        double x0 = preset.d() / 2;
+        double y0 = 0.09;
+        assertTrue(em.place(x0, y0));
+        double t0 = em.time();
+        em.setHand(Hand.grasp((t, out) -> {
+            out[0] = x0;
+            out[1] = y0 + 0.02 * Math.sin(2 * Math.PI * 0.5 * (t - t0));
+        }, 0.03, 300, 2));
+        FreeSpace model = new FreeSpace();
+        VirtualCoupling coupling = VirtualCoupling.forContacts(800, 1, 20_000, 1e-3);
+        try (Board board = new Board(em.connect(), BoardModel.M3)) {
+            board.setTorqueWatchdogMillis(0);
+            Device device = new Device((byte) 5, board);
+            preset.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, preset.newKinematics(), model);
+            loop.useRealUnits();
+            loop.setExchangeDelay(1);
+            loop.setRate(1000);   // the loop's own port integrates the proxy at the loop's period: the plant's 1 ms
+            loop.setWatchdogMillis(60_000);
+            loop.setLinkTimeoutMillis(60_000);
+            model.loop = loop;
+            loop.start();
+            long[] at = {300, 700, 1100, 1600};
+            VirtualCoupling[] set = {coupling, null, coupling, null};
+            for (int i = 0; i < at.length; i++) {
+                while (loop.ticks() < at[i] && loop.isRunning()) {
+                    LockSupport.parkNanos(50_000);
+                }
+                loop.setVirtualCoupling(set[i]);
+                assertSame(set[i], loop.virtualCoupling());
+            }
+            waitTicks(loop, 100);
+            assertTrue(loop.isRunning(), "the loop ran through the switches: " + loop.failure());
+            loop.stop();
+        }
+        // 0.123 N m is the firmware's clip; the encoders' steps through an 800 N/m, 1 N s/m coupling give ~0.01 N m
+        assertTrue(model.worst > 0, "the coupling pulled at all: " + model.worst);
+        assertTrue(model.worst < 0.04, "largest torque " + model.worst + " N m (a stale proxy saturates at 0.123)");
+    }
+
     /**
      * A 3-DoF device that moves along a scripted path, one step per update, and records the work of the forces it was
      * sent: the force sent after reading position k acts until position k + 1.
