@@ -700,6 +700,28 @@ public final class HapticLoop implements AutoCloseable {
         port.setReserveLimit(joules);
     }
 
+    /**
+     * Lets the port give the hand up to this much energy (J at the handle; finite, >= 0; default 0) more than it took
+     * before the passivity controller damps, at any time: the port then stays passive with that much energy stored at
+     * the start (the usual definition of passivity). A small tolerance keeps the controller from chasing the energy an
+     * encoder's steps seem to create, which through a stiff {@link VirtualCoupling} it dissipates in bursts of force
+     * at its damping limit (a buzz): 1 mJ removed them on the emulated 2DIY with a pen grip (docs/haptics-stability.md).
+     *
+     * @throws IllegalArgumentException naming the value when it is negative, infinite or NaN
+     */
+    public void setPassivityTolerance(double joules) {
+        if (!(joules >= 0) || !Double.isFinite(joules)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityTolerance: tolerance must be a finite number >= 0 J, got "
+                    + joules);
+        }
+        port.setTolerance(joules);
+    }
+
+    /** The energy (J) the port may give back before the passivity controller damps. */
+    public double passivityTolerance() {
+        return port.tolerance();
+    }
+
     /** The cap (J) on the energy the passivity controller keeps in reserve; infinite when there is none. */
     public double passivityReserveLimit() {
         return port.reserveLimit();

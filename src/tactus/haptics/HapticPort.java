@@ -76,6 +76,15 @@ final class HapticPort {
         return controller.reserveLimit();
     }
 
+    /** Lets the port run a deficit of this much (J, >= 0) before the controller damps; see {@link PassivityController}. */
+    void setTolerance(double joules) {
+        controller.setTolerance(joules);
+    }
+
+    double tolerance() {
+        return controller.tolerance();
+    }
+
     /**
      * Sets how many ticks pass between reading a position and the force sent at that tick taking effect (0..
      * {@link #MAX_DELAY}; default 0): the account then charges each displacement to the force that was acting over it.

@@ -156,8 +156,9 @@ class PassivityLoopTest {
         // the test thread switches a stiff coupling in, out and in again; the model pushes nothing, so every torque
         // comes from the coupling. Bumpless, the proxy starts at the handle each time and the torques stay at what the
         // encoders' steps give; a proxy left where it was would pull with 800 N/m over centimetres: the torque limit.
-        // (The passivity controller stays off: with it, this coupling bursts to the limit in free motion on the
-        // encoders' steps whether switched or not; docs/haptics-stability.md, "Limits".)
+        // The passivity controller is on with a 1 mJ tolerance, as recommended for this coupling: with no tolerance it
+        // chases the energy the encoders' steps seem to create and bursts to the limit, switched or not
+        // (docs/haptics-stability.md, "Passivity control").
         HaplyPreset preset = HaplyPreset.TWO_DIY_V3;
         BoardEmulator em = new BoardEmulator(preset, BoardModel.M3);
         em.setLockstep(1e-3);
@@ -180,6 +181,8 @@ class PassivityLoopTest {
             HapticLoop loop = new HapticLoop(device, preset.newKinematics(), model);
             loop.useRealUnits();
             loop.setExchangeDelay(1);
+            loop.setPassivityControl(true);
+            loop.setPassivityTolerance(1e-3);
             loop.setRate(1000);   // the loop's own port integrates the proxy at the loop's period: the plant's 1 ms
             loop.setWatchdogMillis(60_000);
             loop.setLinkTimeoutMillis(60_000);
@@ -351,6 +354,12 @@ class PassivityLoopTest {
             assertThrows(IllegalArgumentException.class, () -> loop.setPassivityReserveLimit(Double.NaN));
             loop.setPassivityReserveLimit(Double.POSITIVE_INFINITY);
             assertEquals(Double.POSITIVE_INFINITY, loop.passivityReserveLimit(), 0);
+            assertEquals(0, loop.passivityTolerance(), 0, "no tolerance by default");
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setPassivityTolerance(-1e-3))
+                    .getMessage().contains("-0.001"));
+            assertThrows(IllegalArgumentException.class, () -> loop.setPassivityTolerance(Double.POSITIVE_INFINITY));
+            loop.setPassivityTolerance(1e-3);
+            assertEquals(1e-3, loop.passivityTolerance(), 0);
             assertTrue(assertThrows(IllegalArgumentException.class, () -> VirtualCoupling.forContacts(400, 0.1, -3, 1e-3))
                     .getMessage().contains("-3"));
         }

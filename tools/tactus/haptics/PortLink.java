@@ -43,6 +43,12 @@ public final class PortLink implements AvatarLink {
         return this;
     }
 
+    /** Lets the port run this deficit (J) before the controller damps. */
+    public PortLink tolerance(double joules) {
+        port.setTolerance(joules);
+        return this;
+    }
+
     /** Caps the controller's reserve, J (infinite: no cap). */
     public PortLink reserveLimit(double joules) {
         port.setReserveLimit(joules);

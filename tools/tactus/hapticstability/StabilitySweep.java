@@ -154,10 +154,11 @@ public final class StabilitySweep {
 
     private static void sweep(PlantParameters plant, double k0, File csv) throws IOException {
         System.out.println("| variant | hand | K / K0 | K (N/m) | stable | peak (mm) | residual (mm) | growth "
-                + "| energy to hand (mJ) | felt K / K |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+                + "| energy to hand (mJ) | felt K / K | force step (N) |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         try (PrintWriter w = new PrintWriter(csv, StandardCharsets.UTF_8)) {
-            w.println("variant,hand,multiple,stiffness_N_per_m,stable,peak_m,residual_m,growth,energy_to_hand_J,felt_fraction");
+            w.println("variant,hand,multiple,stiffness_N_per_m,stable,peak_m,residual_m,growth,energy_to_hand_J,felt_fraction,"
+                    + "force_step_N");
             for (WallRig.Variant v : VARIANTS) {
                 for (boolean withHand : new boolean[] {false, true}) {
                     for (double mult : MULTIPLES) {
@@ -166,11 +167,12 @@ public final class StabilitySweep {
                         WallRig.Trace t = WallRig.run(c);
                         Touch r = EmulatorBoundary.judge(c, t);
                         String hand = withHand ? "pen grip" : "none";
-                        w.printf("%s,%s,%g,%g,%b,%g,%g,%g,%g,%g%n", v.name(), hand, mult, k, r.stable, r.peak,
-                                r.residual, r.growth, r.energyToHand, r.feltFraction);
-                        System.out.printf("| %s | %s | %.1f | %.0f | %s | %.3f | %.4f | %s | %s | %s |%n", v.name(), hand,
-                                mult, k, r.stable ? "yes" : "**no**", r.peak * 1e3, r.residual * 1e3, fmt(r.growth, "%.2f"),
-                                fmt(r.energyToHand * 1e3, "%.3f"), fmt(r.feltFraction, "%.2f"));
+                        w.printf("%s,%s,%g,%g,%b,%g,%g,%g,%g,%g,%g%n", v.name(), hand, mult, k, r.stable, r.peak,
+                                r.residual, r.growth, r.energyToHand, r.feltFraction, t.forceStep);
+                        System.out.printf("| %s | %s | %.1f | %.0f | %s | %.3f | %.4f | %s | %s | %s | %.2f |%n", v.name(),
+                                hand, mult, k, r.stable ? "yes" : "**no**", r.peak * 1e3, r.residual * 1e3,
+                                fmt(r.growth, "%.2f"), fmt(r.energyToHand * 1e3, "%.3f"), fmt(r.feltFraction, "%.2f"),
+                                t.forceStep);
                     }
                 }
             }

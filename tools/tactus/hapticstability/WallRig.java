@@ -140,6 +140,11 @@ public final class WallRig {
         public final double[] fy;
         /** The loop's failure message, or null. */
         public String failure;
+        /**
+         * The largest change of the force sent to the device (after every controller) from one tick to the next, N:
+         * a buzz that moves the handle by microns shows here rather than in the positions.
+         */
+        public double forceStep;
         /** The sample index of the first tick that counts (after the loop's start-up writes). */
         public int first;
 
@@ -155,6 +160,55 @@ public final class WallRig {
     }
 
     private WallRig() {
+    }
+
+    /** Passes everything through and records, on the loop's thread, the largest tick-to-tick step of the force. */
+    private static final class ForceSteps implements AvatarLink {
+        private final AvatarLink inner;
+        private final Trace trace;
+        private double lastX = Double.NaN;
+        private double lastY;
+
+        ForceSteps(AvatarLink inner, Trace trace) {
+            this.inner = inner;
+            this.trace = trace;
+        }
+
+        @Override
+        public void setTarget(double x, double y, double z) {
+            inner.setTarget(x, y, z);
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            takeForceCounted(out);
+        }
+
+        @Override
+        public long takeForceCounted(double[] out) {
+            long n = inner.takeForceCounted(out);
+            if (!Double.isNaN(lastX)) {
+                trace.forceStep = Math.max(trace.forceStep, Math.hypot(out[0] - lastX, out[1] - lastY));
+            }
+            lastX = out[0];
+            lastY = out[1];
+            return n;
+        }
+
+        @Override
+        public void step(int n) {
+            inner.step(n);
+        }
+
+        @Override
+        public void beginStepping() {
+            inner.beginStepping();
+        }
+
+        @Override
+        public void endStepping() {
+            inner.endStepping();
+        }
     }
 
     /** The model position of the wall surface (SPRING: the equilibrium), metres. */
@@ -215,7 +269,7 @@ public final class WallRig {
             }
             pm.init();
             HapticLoop loop = new HapticLoop(dev, c.preset.newKinematics(),
-                    c.variant.wrap(new PhysicalModelAvatar(pm, "avatar"), c.period));
+                    new ForceSteps(c.variant.wrap(new PhysicalModelAvatar(pm, "avatar"), c.period), tr));
             loop.useRealUnits();
             loop.setOrigin(-x0, -y0, 0);
             loop.setRate(c.wallClockRate);
