@@ -58,7 +58,7 @@ void setup() {
   startLoop();
 }
 
-/** A model with the avatar and the wall, and a loop with the chosen options (the coupling is set before start). */
+/** A model with the avatar and the wall, and a loop with the chosen options. */
 void startLoop() {
   Vect3D start = mdl == null ? haptics.home() : mdl.getMatPosition("avatar");
   start.x = Math.max(start.x, wallX + 10);
@@ -177,7 +177,8 @@ void keyPressed() {
     loop.setPassivityControl(controller);   // switches at once, while the loop runs
   } else if (key == 'v' || key == 'V') {
     coupling = !coupling;
-    startLoop();                            // a coupling is set before the loop starts
+    // switches at the loop's next tick, while it runs: the proxy starts at the handle (no jolt)
+    loop.setVirtualCoupling(coupling ? VirtualCoupling.forDevice(deviceDamping, 1.0 / loop.rate(), 1) : null);
   } else if (key >= '1' && key <= '4') {
     wallChoice = key - '1';
     startLoop();
