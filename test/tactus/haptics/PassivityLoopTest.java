@@ -126,7 +126,7 @@ class PassivityLoopTest {
     }
 
     /** A model that pushes nothing and records, on the loop's thread, the largest torque the loop sent. */
-    private static final class FreeSpace implements AvatarLink {
+    private static final class FreeSpace extends NoForceAvatar {
         volatile HapticLoop loop;
         double worst;   // N m, written by the loop's thread only
 
@@ -136,17 +136,6 @@ class PassivityLoopTest {
             if (l != null) {
                 worst = Math.max(worst, Math.max(Math.abs(l.torque(1)), Math.abs(l.torque(2))));
             }
-        }
-
-        @Override
-        public void takeForce(double[] out) {
-            out[0] = 0;
-            out[1] = 0;
-            out[2] = 0;
-        }
-
-        @Override
-        public void step(int n) {
         }
     }
 

@@ -37,20 +37,10 @@ public final class PenGripDiagnosis {
                 if (coupling != null) {
                     p.coupling(coupling);
                 }
-                return new AvatarLink() {
-                    @Override
-                    public void setTarget(double x, double y, double z) {
-                        p.setTarget(x, y, z);
-                    }
-
-                    @Override
-                    public void takeForce(double[] out) {
-                        takeForceCounted(out);
-                    }
-
+                return new ForwardingAvatarLink(p) {
                     @Override
                     public long takeForceCounted(double[] out) {
-                        long n = p.takeForceCounted(out);
+                        long n = inner.takeForceCounted(out);
                         double alpha = p.observer().damping();
                         counts[0]++;
                         counts[1] += alpha > 0 ? 1 : 0;
@@ -59,21 +49,6 @@ public final class PenGripDiagnosis {
                         step[1] = out[0];
                         step[2] = out[1];
                         return n;
-                    }
-
-                    @Override
-                    public void step(int n) {
-                        p.step(n);
-                    }
-
-                    @Override
-                    public void beginStepping() {
-                        p.beginStepping();
-                    }
-
-                    @Override
-                    public void endStepping() {
-                        p.endStepping();
                     }
                 };
             }

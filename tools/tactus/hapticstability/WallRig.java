@@ -7,6 +7,7 @@ import tactus.haptics.AvatarLink;
 import tactus.haptics.Board;
 import tactus.haptics.BoardModel;
 import tactus.haptics.Device;
+import tactus.haptics.ForwardingAvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.PhysicalModelAvatar;
@@ -163,25 +164,14 @@ public final class WallRig {
     }
 
     /** Passes everything through and records, on the loop's thread, the largest tick-to-tick step of the force. */
-    private static final class ForceSteps implements AvatarLink {
-        private final AvatarLink inner;
+    private static final class ForceSteps extends ForwardingAvatarLink {
         private final Trace trace;
         private double lastX = Double.NaN;
         private double lastY;
 
         ForceSteps(AvatarLink inner, Trace trace) {
-            this.inner = inner;
+            super(inner);
             this.trace = trace;
-        }
-
-        @Override
-        public void setTarget(double x, double y, double z) {
-            inner.setTarget(x, y, z);
-        }
-
-        @Override
-        public void takeForce(double[] out) {
-            takeForceCounted(out);
         }
 
         @Override
@@ -193,21 +183,6 @@ public final class WallRig {
             lastX = out[0];
             lastY = out[1];
             return n;
-        }
-
-        @Override
-        public void step(int n) {
-            inner.step(n);
-        }
-
-        @Override
-        public void beginStepping() {
-            inner.beginStepping();
-        }
-
-        @Override
-        public void endStepping() {
-            inner.endStepping();
         }
     }
 
