@@ -209,12 +209,17 @@ class PassivityControlTest {
      * wall phase}.
      */
     private static double[] stiffContactAfterSoftStirring(double reserveLimit) {
+        return stiffContactAfterSoftStirring(reserveLimit, 0);
+    }
+
+    private static double[] stiffContactAfterSoftStirring(double reserveLimit, double tolerance) {
         SampledPlant p = new SampledPlant(0.15, 0.5, T, 1).hand(300, 1);
         p.x = 0.002;
         DamperThenWall model = new DamperThenWall(2, 20_000);   // 20 x 2 b / (3 T): direct rendering buzzes
         PortRig rig = new PortRig(p, model);
         rig.port.setControl(true);
         rig.port.setReserveLimit(reserveLimit);
+        rig.port.setTolerance(tolerance);
         rig.start(1);
         for (int i = 0; i < 3000; i++) {   // 3 s of stirring at 2 Hz, 4 mm: about 7 mJ into the damper
             p.intend(0.002 + 0.004 * Math.sin(2 * Math.PI * 2 * i * T));
@@ -244,6 +249,20 @@ class PassivityControlTest {
         assertTrue(capped[1] <= 2e-4, "capped at 0.1 mJ: energy to the hand " + capped[1] + " J (uncapped "
                 + uncapped[1] + " J)");
         assertTrue(none[1] <= 1e-4, "no reserve at all: energy to the hand " + none[1] + " J");
+    }
+
+    @Test
+    void aToleranceLetsTheWallGiveBackAtMostThatMuch() {
+        // no reserve, so only the tolerance can let the buzzing wall give energy back: at most that much (and what
+        // the prediction misses by a tick), and more than with no tolerance
+        double[] strict = stiffContactAfterSoftStirring(0, 0);
+        for (double tolerance : new double[] {5e-4, 2e-3}) {
+            double[] tolerant = stiffContactAfterSoftStirring(0, tolerance);
+            assertTrue(tolerant[1] <= tolerance + 1e-4, "tolerance " + tolerance + " J: energy to the hand "
+                    + tolerant[1] + " J");
+            assertTrue(tolerant[1] > strict[1], "tolerance " + tolerance + " J: " + tolerant[1]
+                    + " J, more than with none: " + strict[1] + " J");
+        }
     }
 
     @Test
