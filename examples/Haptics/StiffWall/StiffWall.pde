@@ -4,7 +4,8 @@
  * sampled loop gives the hand a little more energy than it took at every touch. Press P to
  * switch on the passivity controller: it watches that energy and dissipates exactly what the
  * wall created, and the same wall settles. Press V for a virtual coupling instead: the hand
- * then feels a spring-damper that the device can render, tied to a proxy that touches the wall.
+ * then feels a spring-damper that the device can render, tied to a proxy that touches the wall
+ * (switched while the loop runs; the proxy starts at the handle, so there is no jolt).
  *
  * The plot at the bottom is the passivity observer: in red the energy the wall gave back to
  * the hand, in blue what the controller dissipated, per frame, and the totals. Energy that
