@@ -4,7 +4,8 @@
  * sampled loop gives the hand a little more energy than it took at every touch. Press P to
  * switch on the passivity controller: it watches that energy and dissipates exactly what the
  * wall created, and the same wall settles. Press V for a virtual coupling instead: the hand
- * then feels a spring-damper that the device can render, tied to a proxy that touches the wall.
+ * then feels a spring-damper that the device can render, tied to a proxy that touches the wall
+ * (switched while the loop runs; the proxy starts at the handle, so there is no jolt).
  *
  * The plot at the bottom is the passivity observer: in red the energy the wall gave back to
  * the hand, in blue what the controller dissipated, per frame, and the totals. Energy that
@@ -58,7 +59,7 @@ void setup() {
   startLoop();
 }
 
-/** A model with the avatar and the wall, and a loop with the chosen options (the coupling is set before start). */
+/** A model with the avatar and the wall, and a loop with the chosen options. */
 void startLoop() {
   Vect3D start = mdl == null ? haptics.home() : mdl.getMatPosition("avatar");
   start.x = Math.max(start.x, wallX + 10);
@@ -177,7 +178,8 @@ void keyPressed() {
     loop.setPassivityControl(controller);   // switches at once, while the loop runs
   } else if (key == 'v' || key == 'V') {
     coupling = !coupling;
-    startLoop();                            // a coupling is set before the loop starts
+    // switches at the loop's next tick, while it runs: the proxy starts at the handle (no jolt)
+    loop.setVirtualCoupling(coupling ? VirtualCoupling.forDevice(deviceDamping, 1.0 / loop.rate(), 1) : null);
   } else if (key >= '1' && key <= '4') {
     wallChoice = key - '1';
     startLoop();

@@ -672,12 +672,59 @@ public final class HapticLoop implements AutoCloseable {
 
     /**
      * Puts a {@link VirtualCoupling} between the handle and the avatar (null: none, the default): the avatar follows
-     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. Configure before
-     * {@link #start()}.
+     * a proxy that the coupling's spring-damper ties to the handle, and the hand feels the coupling. At any time, also
+     * while the loop runs: the loop takes the new coupling at its next tick (nothing is allocated on its thread), with
+     * the proxy placed at the handle and moving with it, so the coupling starts with zero force (bumpless). Switched
+     * off (null), the avatar goes back to the handle at the next tick: whatever the proxy's stretch was shows as a
+     * step of the avatar in the model.
      */
     public void setVirtualCoupling(VirtualCoupling coupling) {
-        beforeStart("setVirtualCoupling");
         port.setCoupling(coupling);
+    }
+
+    /**
+     * Caps the energy (J at the handle; >= 0, or {@code Double.POSITIVE_INFINITY} for no cap) that the passivity
+     * controller keeps in reserve, at any time. Without a cap, energy the hand put into the model long ago (pushing
+     * through a damper, say) lets a later stiff contact give that much back before the controller acts; with it, at
+     * most this much. Keep it above the energy the model itself stores and honestly gives back (a mass set swinging,
+     * a spring wound up), or the controller brakes that return. The default (0.1 J) was measured not to change the
+     * paper's soft examples (docs/haptics-stability.md).
+     *
+     * @throws IllegalArgumentException naming the value when it is negative or NaN
+     */
+    public void setPassivityReserveLimit(double joules) {
+        if (!(joules >= 0)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityReserveLimit: limit must be >= 0 J (or infinite), got "
+                    + joules);
+        }
+        port.setReserveLimit(joules);
+    }
+
+    /**
+     * Lets the port give the hand up to this much energy (J at the handle; finite, >= 0; default 0) more than it took
+     * before the passivity controller damps, at any time: the port then stays passive with that much energy stored at
+     * the start (the usual definition of passivity). A small tolerance keeps the controller from chasing the energy an
+     * encoder's steps seem to create, which through a stiff {@link VirtualCoupling} it dissipates in bursts of force
+     * at its damping limit (a buzz): 1 mJ removed them on the emulated 2DIY with a pen grip (docs/haptics-stability.md).
+     *
+     * @throws IllegalArgumentException naming the value when it is negative, infinite or NaN
+     */
+    public void setPassivityTolerance(double joules) {
+        if (!(joules >= 0) || !Double.isFinite(joules)) {
+            throw new IllegalArgumentException("HapticLoop.setPassivityTolerance: tolerance must be a finite number >= 0 J, got "
+                    + joules);
+        }
+        port.setTolerance(joules);
+    }
+
+    /** The energy (J) the port may give back before the passivity controller damps. */
+    public double passivityTolerance() {
+        return port.tolerance();
+    }
+
+    /** The cap (J) on the energy the passivity controller keeps in reserve; infinite when there is none. */
+    public double passivityReserveLimit() {
+        return port.reserveLimit();
     }
 
     /** The virtual coupling between the handle and the avatar, or null. */

@@ -14,7 +14,8 @@ final class HapticPort {
     private final PassivityController controller = new PassivityController();
     private volatile boolean controlOn;
     private volatile FrictionCompensation friction;
-    private VirtualCoupling coupling;
+    private volatile VirtualCoupling coupling;   // as set, from any thread
+    private VirtualCoupling active;              // the one in use on the loop's thread
 
     private double period = 1e-3;
     private boolean havePrevious;
@@ -58,9 +59,30 @@ final class HapticPort {
         return controller.dampingLimit();
     }
 
-    /** Sets the coupling (null: none); only before {@link #start}. */
+    /**
+     * Sets the coupling (null: none), at any time: the loop's thread takes it at its next {@link #sense}, with the
+     * proxy placed at the handle and moving with it (the coupling then pulls with zero force: bumpless).
+     */
     void setCoupling(VirtualCoupling c) {
         coupling = c;
+    }
+
+    /** Caps the energy (J, >= 0, infinite: no cap) the controller may hold in reserve; see {@link PassivityController}. */
+    void setReserveLimit(double joules) {
+        controller.setReserveLimit(joules);
+    }
+
+    double reserveLimit() {
+        return controller.reserveLimit();
+    }
+
+    /** Lets the port run a deficit of this much (J, >= 0) before the controller damps; see {@link PassivityController}. */
+    void setTolerance(double joules) {
+        controller.setTolerance(joules);
+    }
+
+    double tolerance() {
+        return controller.tolerance();
     }
 
     /**
@@ -103,6 +125,7 @@ final class HapticPort {
             }
         }
         slot = 0;
+        active = null;
         controller.reset();
         observer.reset();
     }
@@ -131,11 +154,17 @@ final class HapticPort {
             boolean on = controlOn;
             controller.observe(into, on);
             observer.record(into, damped);
-        } else if (coupling != null) {
-            System.arraycopy(position, 0, proxy, 0, 3);
         }
         System.arraycopy(position, 0, previous, 0, 3);
         havePrevious = true;
+        VirtualCoupling c = coupling;
+        if (c != active) {
+            // a coupling switched in (or changed): the proxy starts at the handle with its velocity, so the spring
+            // and the damper pull with zero force at this tick; switched out, the avatar goes back to the handle
+            System.arraycopy(position, 0, proxy, 0, 3);
+            System.arraycopy(velocity, 0, proxyVelocity, 0, 3);
+            active = c;
+        }
         FrictionCompensation f = friction;
         if (f != null) {
             double w = 1 - Math.exp(-2 * Math.PI * f.cutoffHz() * period);
@@ -143,7 +172,7 @@ final class HapticPort {
                 filtered[i] += w * (velocity[i] - filtered[i]);
             }
         }
-        System.arraycopy(coupling != null ? proxy : position, 0, target, 0, 3);
+        System.arraycopy(active != null ? proxy : position, 0, target, 0, 3);
     }
 
     /**
@@ -151,7 +180,7 @@ final class HapticPort {
      * when there is one, plus the controller's damper when it is on, plus the friction compensation when set.
      */
     void command(double[] f) {
-        VirtualCoupling c = coupling;
+        VirtualCoupling c = active;
         if (c != null) {
             double k = c.stiffness();
             double b = c.damping();

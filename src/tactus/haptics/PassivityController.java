@@ -12,8 +12,14 @@ package tactus.haptics;
  * {@code alpha = -E / (T |v|^2)} (at most {@link #setDampingLimit the limit}), which brings the predicted balance back
  * to zero. Whatever the prediction missed shows in the exact account at the next tick and is dissipated then.
  *
+ * <p>With a tolerance ({@link #setTolerance}) the controller lets the account run that far below zero before it
+ * damps, and damps it back to that level only: the port is then passive with that much energy stored at the start.
+ *
  * <p>The account forgets deficits while the controller is off, so that switching it on does not brake the hand for
- * energy created before. One thread (the haptic loop's) calls everything here; nothing allocates.
+ * energy created before. It is also capped ({@link #setReserveLimit}): energy the hand put in long ago (pushing
+ * through a damper, say) is not a reserve a later stiff contact may give back before the controller acts; the cap
+ * must lie above the energy the model itself stores and returns (a mass set moving, a spring wound up), or the
+ * controller brakes that honest return. One thread (the haptic loop's) calls everything here; nothing allocates.
  */
 final class PassivityController {
     /**
@@ -23,7 +29,15 @@ final class PassivityController {
      */
     static final double DEFAULT_DAMPING_LIMIT = 10;
 
+    /**
+     * The default cap on the reserve, J: measured on the emulated 2DIY not to change what the paper's soft examples
+     * feel like (docs/haptics-stability.md, "Does it change a soft model?").
+     */
+    static final double DEFAULT_RESERVE_LIMIT = 0.1;
+
     private double dampingLimit = DEFAULT_DAMPING_LIMIT;
+    private volatile double reserveLimit = DEFAULT_RESERVE_LIMIT;
+    private volatile double tolerance;
     private double account;     // J, energy into the model through the port, as the controller counts it
     private double added;       // N s/m, the damping added at the last command
 
@@ -34,6 +48,24 @@ final class PassivityController {
 
     double dampingLimit() {
         return dampingLimit;
+    }
+
+    /** Sets the largest energy (J, >= 0; infinite for no cap) the account may hold in reserve. */
+    void setReserveLimit(double joules) {
+        reserveLimit = joules;
+    }
+
+    double reserveLimit() {
+        return reserveLimit;
+    }
+
+    /** Sets the deficit (J, >= 0; default 0) the controller lets the port run before it damps, and damps down to. */
+    void setTolerance(double joules) {
+        tolerance = joules;
+    }
+
+    double tolerance() {
+        return tolerance;
     }
 
     void reset() {
@@ -47,6 +79,10 @@ final class PassivityController {
         if (!on && account < 0) {
             account = 0;
         }
+        double cap = reserveLimit;
+        if (account > cap) {
+            account = cap;
+        }
     }
 
     /**
@@ -58,7 +94,7 @@ final class PassivityController {
     double command(double[] f, double[] v, double[] inFlight, double period) {
         double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         double power = (f[0] + inFlight[0]) * v[0] + (f[1] + inFlight[1]) * v[1] + (f[2] + inFlight[2]) * v[2];
-        double predicted = account - power * period;
+        double predicted = account - power * period + tolerance;
         added = 0;
         if (predicted < 0 && v2 > 0) {
             double alpha = Math.min(-predicted / (period * v2), dampingLimit);

@@ -10,7 +10,7 @@ package tactus.haptics;
  * proxy's mass adds to the handle's inertia.
  *
  * <p>Immutable settings, in newtons, metres, seconds and kilograms along the device's axes; give them to
- * {@link HapticLoop#setVirtualCoupling(VirtualCoupling)} before the loop starts.
+ * {@link HapticLoop#setVirtualCoupling(VirtualCoupling)}, before the loop starts or while it runs.
  */
 public final class VirtualCoupling {
     private final double stiffness;
@@ -63,6 +63,32 @@ public final class VirtualCoupling {
         double k = (deviceDamping - c) / (2 * periodSeconds * (delayTicks + 0.5));
         double m = 25 * k * periodSeconds * periodSeconds * (delayTicks + 1) * (delayTicks + 1);
         return new VirtualCoupling(k, c, m);
+    }
+
+    /**
+     * A coupling of this stiffness (N/m, > 0) and damping (N s/m, >= 0) whose proxy is heavy enough to carry contacts
+     * up to {@code largestContact} (N/m, > 0) at period T (s, > 0): the proxy's mass is {@code largestContact T^2}
+     * kg, a quarter of what its explicit integration needs ({@code 4 m / T^2} N/m is where it diverges). For a hand
+     * on the handle: a coupling stiffer than {@link #forDevice} allows is not passive on the device by itself, so
+     * use it with the passivity controller on ({@link HapticLoop#setPassivityControl}); choose k about the stiffest
+     * wall that holds without control with that grip, and damping well above the device's (on the emulated 2DIY with
+     * a pen grip, which holds 814 N/m: k = 800 N/m, c = 1 N s/m and largestContact = 20 kN/m held walls of 4 N/m to
+     * 16 kN/m stably and passively; twice that k did not, docs/haptics-stability.md). The hand feels at most k (a contact K in series: {@code K k / (K + k)}), and the
+     * proxy's mass adds to the handle's inertia through the spring.
+     *
+     * @throws IllegalArgumentException naming the value when one is out of range or not finite
+     */
+    public static VirtualCoupling forContacts(double stiffness, double damping, double largestContact,
+                                              double periodSeconds) {
+        if (!(largestContact > 0) || !Double.isFinite(largestContact)) {
+            throw new IllegalArgumentException("VirtualCoupling.forContacts: largest contact stiffness must be a finite number > 0 N/m, got "
+                    + largestContact);
+        }
+        if (!(periodSeconds > 0) || !Double.isFinite(periodSeconds)) {
+            throw new IllegalArgumentException("VirtualCoupling.forContacts: period must be a finite number > 0 s, got "
+                    + periodSeconds);
+        }
+        return new VirtualCoupling(stiffness, damping, largestContact * periodSeconds * periodSeconds);
     }
 
     /** The coupling spring's stiffness, N/m. */

@@ -166,6 +166,142 @@ class PassivityControlTest {
         assertEquals(series, felt, 0.05 * series, "felt stiffness " + felt + " N/m");
     }
 
+    /** A model that is a damper (on the avatar's speed) until {@code wall} is set, then a stiff one-sided wall at 0. */
+    private static final class DamperThenWall implements AvatarLink {
+        private final double damping;
+        private final double stiffness;
+        boolean wall;
+        private double x;
+        private double last = Double.NaN;
+        private double f;
+
+        DamperThenWall(double damping, double stiffness) {
+            this.damping = damping;
+            this.stiffness = stiffness;
+        }
+
+        @Override
+        public void setTarget(double px, double py, double pz) {
+            x = px;
+        }
+
+        @Override
+        public void step(int n) {
+            if (wall) {
+                f = x < 0 ? -stiffness * x : 0;
+            } else {
+                f = Double.isNaN(last) ? 0 : -damping * (x - last) / T;
+            }
+            last = x;
+        }
+
+        @Override
+        public void takeForce(double[] out) {
+            out[0] = f;
+            out[1] = 0;
+            out[2] = 0;
+        }
+    }
+
+    /**
+     * Energy (J) the device gave the hand while it held the handle in a stiff wall, after a long soft phase in which
+     * it stirred a damper (which puts energy into the model's account): {reserve built, work on the handle in the
+     * wall phase}.
+     */
+    private static double[] stiffContactAfterSoftStirring(double reserveLimit) {
+        return stiffContactAfterSoftStirring(reserveLimit, 0);
+    }
+
+    private static double[] stiffContactAfterSoftStirring(double reserveLimit, double tolerance) {
+        SampledPlant p = new SampledPlant(0.15, 0.5, T, 1).hand(300, 1);
+        p.x = 0.002;
+        DamperThenWall model = new DamperThenWall(2, 20_000);   // 20 x 2 b / (3 T): direct rendering buzzes
+        PortRig rig = new PortRig(p, model);
+        rig.port.setControl(true);
+        rig.port.setReserveLimit(reserveLimit);
+        rig.port.setTolerance(tolerance);
+        rig.start(1);
+        for (int i = 0; i < 3000; i++) {   // 3 s of stirring at 2 Hz, 4 mm: about 7 mJ into the damper
+            p.intend(0.002 + 0.004 * Math.sin(2 * Math.PI * 2 * i * T));
+            rig.tick();
+        }
+        double reserve = rig.port.observer().netEnergy();
+        model.wall = true;
+        double before = p.workOnHandle;
+        p.intend(-0.002);   // then presses 2 mm into the wall and holds
+        for (int i = 0; i < 3000 && Math.abs(p.x) < 1; i++) {
+            rig.tick();
+        }
+        return new double[] {reserve, p.workOnHandle - before};
+    }
+
+    @Test
+    void aCappedReserveKeepsAStiffContactFromGivingBackEnergyStoredLongBefore() {
+        double[] uncapped = stiffContactAfterSoftStirring(Double.POSITIVE_INFINITY);
+        double[] capped = stiffContactAfterSoftStirring(1e-4);
+        double[] none = stiffContactAfterSoftStirring(0);
+        assertTrue(uncapped[0] > 2e-3, "the stirring put energy into the account: " + uncapped[0] + " J");
+        // uncapped, the controller lets the buzzing wall return the stored energy before it acts
+        assertTrue(uncapped[1] > 1e-3, "uncapped: the wall gives the hand energy back: " + uncapped[1] + " J");
+        assertTrue(uncapped[1] <= uncapped[0] + 1e-4, "uncapped: at most the reserve: " + uncapped[1] + " J of "
+                + uncapped[0]);
+        // capped, at most the cap (and what the prediction misses by a tick)
+        assertTrue(capped[1] <= 2e-4, "capped at 0.1 mJ: energy to the hand " + capped[1] + " J (uncapped "
+                + uncapped[1] + " J)");
+        assertTrue(none[1] <= 1e-4, "no reserve at all: energy to the hand " + none[1] + " J");
+    }
+
+    @Test
+    void aToleranceLetsTheWallGiveBackAtMostThatMuch() {
+        // no reserve, so only the tolerance can let the buzzing wall give energy back: at most that much (and what
+        // the prediction misses by a tick), and more than with no tolerance
+        double[] strict = stiffContactAfterSoftStirring(0, 0);
+        for (double tolerance : new double[] {5e-4, 2e-3}) {
+            double[] tolerant = stiffContactAfterSoftStirring(0, tolerance);
+            assertTrue(tolerant[1] <= tolerance + 1e-4, "tolerance " + tolerance + " J: energy to the hand "
+                    + tolerant[1] + " J");
+            assertTrue(tolerant[1] > strict[1], "tolerance " + tolerance + " J: " + tolerant[1]
+                    + " J, more than with none: " + strict[1] + " J");
+        }
+    }
+
+    @Test
+    void aCouplingSwitchedInStartsAtTheHandleWithoutAForceStep() {
+        // the hand drags the handle at 5 cm/s through free space (the model pushes nothing) while a coupling is
+        // switched in, out, and in again elsewhere: the proxy starts at the handle, moving with it, every time, so
+        // the force sent never jumps (a proxy left where it was would pull with k times the distance travelled)
+        SampledPlant p = new SampledPlant(0.05, 0.5, T, 1).hand(300, 1);
+        PortRig rig = new PortRig(p, PortRig.wall(20_000, 0, 0)).start(1);   // wall at x = 0, the hand stays above it
+        VirtualCoupling c = new VirtualCoupling(400, 0.015, 0.02);
+        p.x = 0.01;
+        double worst = 0;
+        double[] target = new double[3];
+        for (int i = 0; i < 1500; i++) {
+            if (i == 300 || i == 1100) {
+                rig.port.setCoupling(c);
+            } else if (i == 700) {
+                rig.port.setCoupling(null);
+            }
+            p.intend(0.01 + 0.05 * i * T);
+            rig.port.sense(p.x, 0, 0, target);
+            if (i == 300 || i == 1100) {
+                assertEquals(p.x, target[0], 0, "tick " + i + ": the proxy starts at the handle");
+            }
+            rig.avatar.setTarget(target[0], 0, 0);
+            rig.avatar.step(1);
+            double[] f = new double[3];
+            rig.avatar.takeForceCounted(f);
+            rig.port.command(f);
+            rig.port.sent(1);
+            p.send(f[0]);
+            p.advance();
+            worst = Math.max(worst, Math.abs(f[0]));
+        }
+        assertTrue(p.x > 0.06, "the hand dragged the handle: " + p.x + " m");
+        // the proxy's 20 g dragged at 5 cm/s by the spring: a few mN at the switch's transient at most
+        assertTrue(worst < 0.02, "largest force sent " + worst + " N (a stale proxy would pull with 400 N/m x 2 cm = 8 N)");
+    }
+
     @Test
     void aSoftDampedWallFeelsTheSameWithTheController() {
         // a soft wall (a tenth of the bound, 100 N/m) with the damping of a typical contact (0.5 N s/m: more than the

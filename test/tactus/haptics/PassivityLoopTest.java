@@ -73,7 +73,9 @@ class PassivityLoopTest {
             loop.setFrictionCompensation(new FrictionCompensation(0.05));
             loop.setPassivityControl(true);
             loop.start();
-            assertThrows(IllegalStateException.class, () -> loop.setVirtualCoupling(null), "coupling only before start");
+            // couplings made on this thread, switched in and out while the loop runs (every window below switches)
+            VirtualCoupling grip = VirtualCoupling.forContacts(400, 0.1, 20_000, 1e-3);
+            VirtualCoupling forDevice = loop.virtualCoupling();
             Thread t = null;
             // warm up (JIT, buffers) longer than HapticLoopAllocationTest: more code runs per tick with every option on,
             // and on a loaded machine its compilation was seen to allocate in the first windows
@@ -87,14 +89,24 @@ class PassivityLoopTest {
             long[] windows = new long[8];
             for (int w = 0; w < windows.length; w++) {
                 long bytes0 = mx.getThreadAllocatedBytes(t.getId());
+                loop.setVirtualCoupling(w % 3 == 0 ? null : w % 3 == 1 ? grip : forDevice);
                 waitTicks(loop, 1000);
                 windows[w] = mx.getThreadAllocatedBytes(t.getId()) - bytes0;
             }
             long best = Long.MAX_VALUE;
-            for (long b : windows) {
-                best = Math.min(best, b);
+            long bestSwitchedIn = Long.MAX_VALUE;   // the windows that began by switching a coupling in
+            for (int w = 0; w < windows.length; w++) {
+                best = Math.min(best, windows[w]);
+                if (w % 3 != 0) {
+                    bestSwitchedIn = Math.min(bestSwitchedIn, windows[w]);
+                }
             }
-            assertEquals(0, best, "bytes per 1000 ticks with every option on: " + java.util.Arrays.toString(windows));
+            assertEquals(0, bestSwitchedIn, "bytes in a window that switched a coupling in: "
+                    + java.util.Arrays.toString(windows));
+            assertEquals(0, best, "bytes per 1000 ticks with every option on, the coupling switched in each: "
+                    + java.util.Arrays.toString(windows));
+            assertTrue(loop.isRunning(), "the loop ran on through the switches: " + loop.failure());
+            assertSame(grip, loop.virtualCoupling(), "the last coupling set");
             PassivityObserver o = loop.passivity();
             assertTrue(o.ticks() > 5000, "observed ticks: " + o.ticks());
             assertTrue(o.energyIn() > 0 && Double.isFinite(o.energyIn()), "the hand pushed energy in: " + o);
@@ -111,6 +123,76 @@ class PassivityLoopTest {
             assertNull(loop.frictionCompensation());
             loop.stop();
         }
+    }
+
+    /** A model that pushes nothing and records, on the loop's thread, the largest torque the loop sent. */
+    private static final class FreeSpace extends NoForceAvatar {
+        volatile HapticLoop loop;
+        double worst;   // N m, written by the loop's thread only
+
+        @Override
+        public void setTarget(double px, double py, double pz) {
+            HapticLoop l = loop;
+            if (l != null) {
+                worst = Math.max(worst, Math.max(Math.abs(l.torque(1)), Math.abs(l.torque(2))));
+            }
+        }
+    }
+
+    @Test
+    void aCouplingSwitchedWhileTheLoopRunsStartsWithoutAForceStep() {
+        // lockstep (each write is 1 ms of the plant's time): a pen grip sweeps the 2DIY's handle 2 cm up and down while
+        // the test thread switches a stiff coupling in, out and in again; the model pushes nothing, so every torque
+        // comes from the coupling. Bumpless, the proxy starts at the handle each time and the torques stay at what the
+        // encoders' steps give; a proxy left where it was would pull with 800 N/m over centimetres: the torque limit.
+        // The passivity controller is on with a 1 mJ tolerance, as recommended for this coupling: with no tolerance it
+        // chases the energy the encoders' steps seem to create and bursts to the limit, switched or not
+        // (docs/haptics-stability.md, "Passivity control").
+        HaplyPreset preset = HaplyPreset.TWO_DIY_V3;
+        BoardEmulator em = new BoardEmulator(preset, BoardModel.M3);
+        em.setLockstep(1e-3);
+        em.setPlant(tactus.haptics.emulator.PlantParameters.twoDiy());
+        double x0 = preset.d() / 2;
+        double y0 = 0.09;
+        assertTrue(em.place(x0, y0));
+        double t0 = em.time();
+        em.setHand(Hand.grasp((t, out) -> {
+            out[0] = x0;
+            out[1] = y0 + 0.02 * Math.sin(2 * Math.PI * 0.5 * (t - t0));
+        }, 0.03, 300, 2));
+        FreeSpace model = new FreeSpace();
+        VirtualCoupling coupling = VirtualCoupling.forContacts(800, 1, 20_000, 1e-3);
+        try (Board board = new Board(em.connect(), BoardModel.M3)) {
+            board.setTorqueWatchdogMillis(0);
+            Device device = new Device((byte) 5, board);
+            preset.configure(device);
+            device.device_set_parameters();
+            HapticLoop loop = new HapticLoop(device, preset.newKinematics(), model);
+            loop.useRealUnits();
+            loop.setExchangeDelay(1);
+            loop.setPassivityControl(true);
+            loop.setPassivityTolerance(1e-3);
+            loop.setRate(1000);   // the loop's own port integrates the proxy at the loop's period: the plant's 1 ms
+            loop.setWatchdogMillis(60_000);
+            loop.setLinkTimeoutMillis(60_000);
+            model.loop = loop;
+            loop.start();
+            long[] at = {300, 700, 1100, 1600};
+            VirtualCoupling[] set = {coupling, null, coupling, null};
+            for (int i = 0; i < at.length; i++) {
+                while (loop.ticks() < at[i] && loop.isRunning()) {
+                    LockSupport.parkNanos(50_000);
+                }
+                loop.setVirtualCoupling(set[i]);
+                assertSame(set[i], loop.virtualCoupling());
+            }
+            waitTicks(loop, 100);
+            assertTrue(loop.isRunning(), "the loop ran through the switches: " + loop.failure());
+            loop.stop();
+        }
+        // 0.123 N m is the firmware's clip; the encoders' steps through an 800 N/m, 1 N s/m coupling give ~0.01 N m
+        assertTrue(model.worst > 0, "the coupling pulled at all: " + model.worst);
+        assertTrue(model.worst < 0.04, "largest torque " + model.worst + " N m (a stale proxy saturates at 0.123)");
     }
 
     /**
@@ -255,6 +337,20 @@ class PassivityLoopTest {
             assertEquals(1, loop.exchangeDelay());
             loop.setPassivityDampingLimit(20);
             assertEquals(20, loop.passivityDampingLimit(), 0);
+            assertEquals(PassivityController.DEFAULT_RESERVE_LIMIT, loop.passivityReserveLimit(), 0);
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setPassivityReserveLimit(-0.5))
+                    .getMessage().contains("-0.5"));
+            assertThrows(IllegalArgumentException.class, () -> loop.setPassivityReserveLimit(Double.NaN));
+            loop.setPassivityReserveLimit(Double.POSITIVE_INFINITY);
+            assertEquals(Double.POSITIVE_INFINITY, loop.passivityReserveLimit(), 0);
+            assertEquals(0, loop.passivityTolerance(), 0, "no tolerance by default");
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> loop.setPassivityTolerance(-1e-3))
+                    .getMessage().contains("-0.001"));
+            assertThrows(IllegalArgumentException.class, () -> loop.setPassivityTolerance(Double.POSITIVE_INFINITY));
+            loop.setPassivityTolerance(1e-3);
+            assertEquals(1e-3, loop.passivityTolerance(), 0);
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> VirtualCoupling.forContacts(400, 0.1, -3, 1e-3))
+                    .getMessage().contains("-3"));
         }
     }
 }

@@ -8,8 +8,7 @@ package tactus.haptics;
  * (position gain alpha, force gain beta, x mirrored or not; the origin cancels out). The only difference from the
  * loop's own port: it cannot see the loop's torque limit, so it assumes every force went out as commanded.
  */
-public final class PortLink implements AvatarLink {
-    private final AvatarLink inner;
+public final class PortLink extends ForwardingAvatarLink {
     private final HapticPort port = new HapticPort();
     private final double alpha;
     private final double beta;
@@ -24,7 +23,7 @@ public final class PortLink implements AvatarLink {
      * per model force unit) and mirroring; the options are set on {@link #port()} before the first tick.
      */
     public PortLink(AvatarLink inner, double periodSeconds, double alpha, double beta, boolean mirrorX) {
-        this.inner = inner;
+        super(inner);
         this.period = periodSeconds;
         this.alpha = alpha;
         this.beta = beta;
@@ -43,7 +42,19 @@ public final class PortLink implements AvatarLink {
         return this;
     }
 
-    /** Sets a virtual coupling (before the first tick). */
+    /** Lets the port run this deficit (J) before the controller damps. */
+    public PortLink tolerance(double joules) {
+        port.setTolerance(joules);
+        return this;
+    }
+
+    /** Caps the controller's reserve, J (infinite: no cap). */
+    public PortLink reserveLimit(double joules) {
+        port.setReserveLimit(joules);
+        return this;
+    }
+
+    /** Sets a virtual coupling (at any time; taken at the next tick, bumpless). */
     public PortLink coupling(VirtualCoupling c) {
         port.setCoupling(c);
         return this;
@@ -77,11 +88,6 @@ public final class PortLink implements AvatarLink {
     }
 
     @Override
-    public void takeForce(double[] out) {
-        takeForceCounted(out);
-    }
-
-    @Override
     public long takeForceCounted(double[] out) {
         long n = inner.takeForceCounted(force);
         double k = n > 0 ? 1.0 / n : 1;   // the loop renders the mean per step: the port works on that
@@ -96,20 +102,5 @@ public final class PortLink implements AvatarLink {
         out[1] = force[1] / beta;
         out[2] = force[2] / beta;
         return n > 0 ? 1 : n;
-    }
-
-    @Override
-    public void step(int n) {
-        inner.step(n);
-    }
-
-    @Override
-    public void beginStepping() {
-        inner.beginStepping();
-    }
-
-    @Override
-    public void endStepping() {
-        inner.endStepping();
     }
 }

@@ -26,6 +26,9 @@ public final class SoftModelsUnderControl {
     private static final double T = 0.001;
     private static final double SECONDS = 6;
 
+    /** The controller's reserve cap (J) for the runs; NaN: the controller's default. Set by main's first argument. */
+    private static double reserveLimit = Double.NaN;
+
     private SoftModelsUnderControl() {
     }
 
@@ -146,6 +149,9 @@ public final class SoftModelsUnderControl {
             PhysicalModel pm = ex.build.apply(home);
             PortLink link = new PortLink(new PhysicalModelAvatar(pm, "avatar"), T, alpha, ex.beta, true)
                     .delay(1).control(control);
+            if (!Double.isNaN(reserveLimit)) {
+                link.reserveLimit(reserveLimit);
+            }
             HapticLoop loop = new HapticLoop(dev, preset.newKinematics(), link);
             loop.setPositionGain(alpha);
             loop.setOrigin(ox, oy, 0);
@@ -168,9 +174,15 @@ public final class SoftModelsUnderControl {
         return r;
     }
 
-    /** Runs the three examples with and without the controller and prints a Markdown table. */
+    /**
+     * Runs the three examples with and without the controller and prints a Markdown table; args[0], if given, is the
+     * controller's reserve cap in joules ("Infinity": none).
+     */
     public static void main(String[] args) {
         Locale.setDefault(Locale.ROOT);
+        if (args.length > 0) {
+            reserveLimit = Double.parseDouble(args[0]);   // J, "Infinity" for no cap
+        }
         double[] box = new double[4];
         double alpha;
         try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.TWO_DIY_V3)) {

@@ -14,7 +14,7 @@ import tactus.report.LineChart;
 
 /**
  * The full sweep behind docs/haptics-stability.md ({@code gradle stabilitySweep}): (1) the theory against the
- * emulator on a linear plant for several b, T and B; (2) walls from 0.1 to 40 times the uncontrolled bound on the
+ * emulator on a linear plant for several b, T and B; (2) walls from 0.1 to 400 times the uncontrolled bound on the
  * 2DIY plant as assumed (friction, the preset's encoders), without a hand (a step on a two-sided spring) and with a
  * pen grip pressing a one-sided wall, for every {@link #VARIANTS variant}; (3) the Z-width (largest stable K for
  * each B). Writes docs/haptics-stability-theory.csv, -sweep.csv, -zwidth.csv and -zwidth.png, and prints the
@@ -35,14 +35,14 @@ public final class StabilitySweep {
     }
 
     /** Multiples of the uncontrolled bound swept. */
-    static final double[] MULTIPLES = {0.1, 0.3, 0.5, 1, 2, 5, 10, 20, 40};
+    static final double[] MULTIPLES = {0.1, 0.3, 0.5, 1, 2, 5, 10, 20, 40, 80, 200, 400};
 
     /**
      * Multiples of K0 scanned for the pen grip's Z-width: with a hand, friction and the encoders' steps make the
      * verdict not monotonic in K near the edge, so the edge is the last stable K of an increasing scan, not a
      * bisection.
      */
-    static final double[] HAND_GRID = {5, 7, 10, 14, 20, 28, 40, 56, 80};
+    static final double[] HAND_GRID = {5, 7, 10, 14, 20, 28, 40, 56, 80, 120, 200, 280, 400};
 
     /** Hand of the press: a light pen grip (kg, N/m, N s/m), assumed within the published ranges. */
     static final double HAND_MASS = 0.03;
@@ -76,7 +76,7 @@ public final class StabilitySweep {
     }
 
     /** A press configuration on the given plant and variant: the pen grip presses a one-sided wall. */
-    static WallRig.Config pressConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
+    public static WallRig.Config pressConfig(PlantParameters plant, WallRig.Variant variant, double k, double b) {
         WallRig.Config c = config(plant, variant, WallRig.Wall.PLANE, k, b, 1800);
         c.hand = Hand.grasp(press(c.preset.d() / 2, WallRig.START_Y, c.gap, 0.003), HAND_MASS, HAND_STIFFNESS,
                 HAND_DAMPING);
@@ -154,10 +154,11 @@ public final class StabilitySweep {
 
     private static void sweep(PlantParameters plant, double k0, File csv) throws IOException {
         System.out.println("| variant | hand | K / K0 | K (N/m) | stable | peak (mm) | residual (mm) | growth "
-                + "| energy to hand (mJ) | felt K / K |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+                + "| energy to hand (mJ) | felt K / K | force step (N) |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|");
         try (PrintWriter w = new PrintWriter(csv, StandardCharsets.UTF_8)) {
-            w.println("variant,hand,multiple,stiffness_N_per_m,stable,peak_m,residual_m,growth,energy_to_hand_J,felt_fraction");
+            w.println("variant,hand,multiple,stiffness_N_per_m,stable,peak_m,residual_m,growth,energy_to_hand_J,felt_fraction,"
+                    + "force_step_N");
             for (WallRig.Variant v : VARIANTS) {
                 for (boolean withHand : new boolean[] {false, true}) {
                     for (double mult : MULTIPLES) {
@@ -166,11 +167,12 @@ public final class StabilitySweep {
                         WallRig.Trace t = WallRig.run(c);
                         Touch r = EmulatorBoundary.judge(c, t);
                         String hand = withHand ? "pen grip" : "none";
-                        w.printf("%s,%s,%g,%g,%b,%g,%g,%g,%g,%g%n", v.name(), hand, mult, k, r.stable, r.peak,
-                                r.residual, r.growth, r.energyToHand, r.feltFraction);
-                        System.out.printf("| %s | %s | %.1f | %.0f | %s | %.3f | %.4f | %s | %s | %s |%n", v.name(), hand,
-                                mult, k, r.stable ? "yes" : "**no**", r.peak * 1e3, r.residual * 1e3, fmt(r.growth, "%.2f"),
-                                fmt(r.energyToHand * 1e3, "%.3f"), fmt(r.feltFraction, "%.2f"));
+                        w.printf("%s,%s,%g,%g,%b,%g,%g,%g,%g,%g,%g%n", v.name(), hand, mult, k, r.stable, r.peak,
+                                r.residual, r.growth, r.energyToHand, r.feltFraction, t.forceStep);
+                        System.out.printf("| %s | %s | %.1f | %.0f | %s | %.3f | %.4f | %s | %s | %s | %.2f |%n", v.name(),
+                                hand, mult, k, r.stable ? "yes" : "**no**", r.peak * 1e3, r.residual * 1e3,
+                                fmt(r.growth, "%.2f"), fmt(r.energyToHand * 1e3, "%.3f"), fmt(r.feltFraction, "%.2f"),
+                                t.forceStep);
                     }
                 }
             }

@@ -7,6 +7,7 @@ import tactus.haptics.AvatarLink;
 import tactus.haptics.Board;
 import tactus.haptics.BoardModel;
 import tactus.haptics.Device;
+import tactus.haptics.ForwardingAvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.PhysicalModelAvatar;
@@ -140,6 +141,11 @@ public final class WallRig {
         public final double[] fy;
         /** The loop's failure message, or null. */
         public String failure;
+        /**
+         * The largest change of the force sent to the device (after every controller) from one tick to the next, N:
+         * a buzz that moves the handle by microns shows here rather than in the positions.
+         */
+        public double forceStep;
         /** The sample index of the first tick that counts (after the loop's start-up writes). */
         public int first;
 
@@ -155,6 +161,29 @@ public final class WallRig {
     }
 
     private WallRig() {
+    }
+
+    /** Passes everything through and records, on the loop's thread, the largest tick-to-tick step of the force. */
+    private static final class ForceSteps extends ForwardingAvatarLink {
+        private final Trace trace;
+        private double lastX = Double.NaN;
+        private double lastY;
+
+        ForceSteps(AvatarLink inner, Trace trace) {
+            super(inner);
+            this.trace = trace;
+        }
+
+        @Override
+        public long takeForceCounted(double[] out) {
+            long n = inner.takeForceCounted(out);
+            if (!Double.isNaN(lastX)) {
+                trace.forceStep = Math.max(trace.forceStep, Math.hypot(out[0] - lastX, out[1] - lastY));
+            }
+            lastX = out[0];
+            lastY = out[1];
+            return n;
+        }
     }
 
     /** The model position of the wall surface (SPRING: the equilibrium), metres. */
@@ -215,7 +244,7 @@ public final class WallRig {
             }
             pm.init();
             HapticLoop loop = new HapticLoop(dev, c.preset.newKinematics(),
-                    c.variant.wrap(new PhysicalModelAvatar(pm, "avatar"), c.period));
+                    new ForceSteps(c.variant.wrap(new PhysicalModelAvatar(pm, "avatar"), c.period), tr));
             loop.useRealUnits();
             loop.setOrigin(-x0, -y0, 0);
             loop.setRate(c.wallClockRate);
