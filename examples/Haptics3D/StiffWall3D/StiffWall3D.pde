@@ -3,7 +3,9 @@
  * away from you. A wall stiffer than the device can render (about 2 b / T: its own damping b over
  * the loop's period T) buzzes or bounces, because the sampled loop gives the hand a little more
  * energy than it took at every touch. Press P to switch on the passivity controller: it watches that
- * energy and dissipates exactly what the walls created, and the same walls settle.
+ * energy and dissipates exactly what the walls created, and the same walls settle. Press V for a
+ * virtual coupling instead (switched while the loop runs): the hand then feels a soft spring to the
+ * avatar (the ring and the ball part), safe whatever the wall, but much softer than the wall.
  *
  * The plot at the bottom is the passivity observer: in red the energy the walls gave back to the
  * hand, in blue what the controller dissipated, per frame, and the totals (energy in and out, net,
@@ -17,7 +19,8 @@
  * the one measured in docs/haptics-stability.md, "In 3-D and at audio rate".
  * The red ball is the avatar, the ring the handle; the walls turn red where they are touched.
  *
- * Controls: P passivity controller on/off, 1-4 wall stiffness, T print the loop's telemetry.
+ * Controls: P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
+ *           T print the loop's telemetry.
  * Units: ALGO_UNITS, 1 model unit = 1 pixel; the walls' stiffness is given in N/m at the handle.
  */
 
@@ -33,6 +36,7 @@ float forceGain = 1;                          // newtons per model force unit
 float[] wallNm = {300, 1000, 3000, 10000};    // wall stiffness at the handle, N/m
 int wallChoice = 2;
 boolean controller = true;
+boolean coupling = false;
 double[] lo = new double[3];                  // the comfortable workspace, pixels
 double[] hi = new double[3];
 float sideX;                                  // the side wall fills x < sideX
@@ -80,6 +84,9 @@ void startLoop() {
   // an Inverse3-class handle is ten times heavier than a 2DIY's: let the controller damp in proportion
   loop.setPassivityDampingLimit(100);
   loop.setPassivityControl(controller);
+  if (coupling) {
+    loop.setVirtualCoupling(deviceCoupling());
+  }
   loop.start();
   lastOut = 0;
   lastDissipated = 0;
@@ -139,7 +146,7 @@ void draw() {
   drawPlot(20, height - 140, width - 40, 110);
   fill(30);
   textSize(14);
-  text("Push into the corner.   P: controller " + (controller ? "ON" : "off") + "   1-4: walls "
+  text("Push into the corner.   P: controller " + (controller ? "ON" : "off") + "   V: coupling " + (coupling ? "ON" : "off") + "   1-4: walls "
     + (int) wallNm[wallChoice] + " N/m   T: telemetry", 12, 22);
   text(String.format("energy in %.2f mJ, back to the hand %.2f mJ, net %.2f mJ", 1000 * energy.energyIn(),
     1000 * out, 1000 * energy.netEnergy()), 12, 42);
@@ -206,10 +213,21 @@ void drawPlot(float x, float y, float w, float h) {
     x + 4, y + 14);
 }
 
+/**
+ * The coupling that is passive on the device by construction: the generic 3-DoF plant's damping (0.5 N s/m per
+ * axis), the loop's period, and one tick of delay (the service's answers are sometimes a tick late).
+ */
+VirtualCoupling deviceCoupling() {
+  return VirtualCoupling.forDevice(0.5, 1.0 / loop.rate(), 1);
+}
+
 void keyPressed() {
   if (key == 'p' || key == 'P') {
     controller = !controller;
     loop.setPassivityControl(controller);   // switches at once, while the loop runs
+  } else if (key == 'v' || key == 'V') {
+    coupling = !coupling;
+    loop.setVirtualCoupling(coupling ? deviceCoupling() : null);   // bumpless: the proxy starts at the handle
   } else if (key >= '1' && key <= '4') {
     wallChoice = key - '1';
     startLoop();
