@@ -27,6 +27,16 @@ public interface HapticDevice extends AutoCloseable {
      */
     boolean update();
 
+    /**
+     * How many ticks late, at most, a state may answer the force it follows (0: every new state answers the force
+     * sent at the previous tick, or a fixed delay later), for the {@link HapticLoop}'s passivity account: above 0 the
+     * loop charges each displacement to the worst of the forces that may have acted over it
+     * ({@link HapticLoop#setLateAnswerBound}). The default is 0.
+     */
+    default int lateAnswerBound() {
+        return 0;
+    }
+
     /** The handle's position in metres along the device's axes, written into out[0..2]; NaN before the first state. */
     void position(double[] out);
 

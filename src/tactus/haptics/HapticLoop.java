@@ -169,6 +169,8 @@ public final class HapticLoop implements AutoCloseable {
         this.kin = null;
         this.spatial = device;
         this.avatar = avatar;
+        int bound = device.lateAnswerBound();
+        port.setLateBound(Math.max(0, Math.min(bound, HapticPort.MAX_LATE)));
     }
 
     /**
@@ -660,6 +662,31 @@ public final class HapticLoop implements AutoCloseable {
         port.setDelay(ticks);
     }
 
+    /**
+     * Tells the passivity observer and controller that a state may answer the force it follows up to this many ticks
+     * late (0..16; 0: off, every new state answers the previous tick's force, or {@link #setExchangeDelay} ticks
+     * before): a tick whose device reports no new state then adds no work and keeps its force in flight, and the
+     * displacement between two new states is charged with the force, among those sent from this many ticks before the
+     * earlier state up to the later one, that puts the least energy into the model (conservative: the observer then
+     * never reports more energy into the model than a straight-line motion under any of those forces would have put
+     * in). The default is the device's {@link HapticDevice#lateAnswerBound()} (4 for an Inverse3 through the Inverse
+     * Service; 0 for the 2DIY's board, whose account stays the exact fixed-delay one). Configure before
+     * {@link #start()}.
+     */
+    public void setLateAnswerBound(int ticks) {
+        beforeStart("setLateAnswerBound");
+        if (ticks < 0 || ticks > HapticPort.MAX_LATE) {
+            throw new IllegalArgumentException("HapticLoop.setLateAnswerBound: bound must be 0.." + HapticPort.MAX_LATE
+                    + " ticks, got " + ticks);
+        }
+        port.setLateBound(ticks);
+    }
+
+    /** The bound on late answers (ticks) the passivity observer assumes; 0 when off. */
+    public int lateAnswerBound() {
+        return port.lateBound();
+    }
+
     /** The exchange delay (ticks) the passivity observer assumes. */
     public int exchangeDelay() {
         return port.delay();
@@ -885,7 +912,7 @@ public final class HapticLoop implements AutoCloseable {
         long steps;
         try {
             if (poseOk) {
-                port.sense(x, y, 0, portTarget);
+                port.sense(x, y, 0, fresh, portTarget);
                 active.setTarget(sx * alpha * portTarget[0] + ox, alpha * portTarget[1] + oy, oz);
             }
             if (mode == Mode.HAPTICS_ONLY) {
@@ -1030,7 +1057,7 @@ public final class HapticLoop implements AutoCloseable {
                 pos3[0] = devX;
                 pos3[1] = devY;
                 pos3[2] = devZ;
-                port.sense(devX, devY, devZ, portTarget);
+                port.sense(devX, devY, devZ, fresh, portTarget);
                 m.toModel(portTarget, model3);
                 active.setTarget(model3[0], model3[1], model3[2]);
             }

@@ -39,6 +39,17 @@ final class HapticPort {
     private double frictionY;
     private double frictionZ;
 
+    /** The largest bound on late answers (ticks) the account can follow. */
+    static final int MAX_LATE = 16;
+    /** Ticks of sent forces kept for the late-answer account: a state gap longer than this is charged to these only. */
+    private static final int HISTORY = 64;
+    private int late;                                            // the bound W on late answers, ticks; 0: off
+    private final double[][] history = new double[HISTORY][3];  // the port's forces as sent, by tick (a ring), N
+    private final double[][] historyDamper = new double[HISTORY][3];
+    private long sentCount;                                     // forces sent since start: the tick index of the next
+    private long lastFresh;                                     // sentCount when the last new state was read
+    private double lateSpan = 1;                                // ticks the next charged displacement will span
+
     PassivityObserver observer() {
         return observer;
     }
@@ -98,6 +109,21 @@ final class HapticPort {
         return delay;
     }
 
+    /**
+     * Sets the bound W (ticks, 0..{@link #MAX_LATE}; 0, the default: off) on how late a state may answer: a tick whose
+     * state is not new adds no work and keeps its force in flight, and the displacement between two new states is
+     * charged with the worst case, for passivity, of the forces that may have acted over it (those sent from W + d
+     * ticks before the earlier state to d ticks before the later one). Off, the account is the fixed-delay one. Only
+     * before {@link #start}.
+     */
+    void setLateBound(int ticks) {
+        late = ticks;
+    }
+
+    int lateBound() {
+        return late;
+    }
+
     VirtualCoupling coupling() {
         return coupling;
     }
@@ -124,6 +150,15 @@ final class HapticPort {
                 sentDamper[j][i] = 0;
             }
         }
+        for (int j = 0; j < HISTORY; j++) {
+            for (int i = 0; i < 3; i++) {
+                history[j][i] = 0;
+                historyDamper[j][i] = 0;
+            }
+        }
+        sentCount = 0;
+        lastFresh = 0;
+        lateSpan = 1;
         slot = 0;
         active = null;
         controller.reset();
@@ -135,10 +170,21 @@ final class HapticPort {
      * and writes where the avatar must go (m, device axes) into target[0..2]: the handle, or the coupling's proxy.
      */
     void sense(double x, double y, double z, double[] target) {
+        sense(x, y, z, true, target);
+    }
+
+    /**
+     * As {@link #sense(double, double, double, double[])}, saying whether this tick's state is new ({@code fresh}):
+     * with a bound on late answers ({@link #setLateBound}) a tick whose state is not new adds no work; without one it
+     * makes no difference.
+     */
+    void sense(double x, double y, double z, boolean fresh, double[] target) {
         position[0] = x;
         position[1] = y;
         position[2] = z;
-        if (havePrevious) {
+        if (late > 0) {
+            senseLate(fresh);
+        } else if (havePrevious) {
             double into = 0;
             double damped = 0;
             // the force acting since the last reading was sent delay + 1 ticks ago (the slot before this tick's)
@@ -155,8 +201,10 @@ final class HapticPort {
             controller.observe(into, on);
             observer.record(into, damped);
         }
-        System.arraycopy(position, 0, previous, 0, 3);
-        havePrevious = true;
+        if (late == 0) {
+            System.arraycopy(position, 0, previous, 0, 3);
+            havePrevious = true;
+        }
         VirtualCoupling c = coupling;
         if (c != active) {
             // a coupling switched in (or changed): the proxy starts at the handle with its velocity, so the spring
@@ -173,6 +221,72 @@ final class HapticPort {
             }
         }
         System.arraycopy(active != null ? proxy : position, 0, target, 0, 3);
+    }
+
+    /**
+     * The late-answer account (W = {@link #setLateBound} > 0): a new state charges the displacement since the last new
+     * state with the force, among those that may have acted over it, that puts the least energy into the model.
+     */
+    private void senseLate(boolean fresh) {
+        long n = sentCount;
+        if (!havePrevious) {
+            System.arraycopy(position, 0, previous, 0, 3);
+            havePrevious = true;
+            lastFresh = n;
+            return;
+        }
+        if (!fresh) {
+            controller.observe(0, controlOn);
+            observer.record(0, 0);
+            lateSpan = n + 1 - lastFresh;
+            return;
+        }
+        double dx = position[0] - previous[0];
+        double dy = position[1] - previous[1];
+        double dz = position[2] - previous[2];
+        long last = n - 1 - delay;
+        long first = Math.max(Math.max(lastFresh - late - delay, 0), n - HISTORY);
+        double into = 0;
+        double damped = 0;
+        if (last >= first) {
+            into = Double.POSITIVE_INFINITY;
+            for (long j = first; j <= last; j++) {
+                double[] f = history[(int) (j % HISTORY)];
+                double e = -(f[0] * dx + f[1] * dy + f[2] * dz);
+                if (e < into) {
+                    into = e;
+                    double[] d = historyDamper[(int) (j % HISTORY)];
+                    damped = -(d[0] * dx + d[1] * dy + d[2] * dz);
+                }
+            }
+        }
+        double span = Math.max(1, n - lastFresh) * period;
+        velocity[0] = dx / span;
+        velocity[1] = dy / span;
+        velocity[2] = dz / span;
+        controller.observe(into, controlOn);
+        observer.record(into, damped);
+        System.arraycopy(position, 0, previous, 0, 3);
+        lastFresh = n;
+        lateSpan = 1;
+    }
+
+    /**
+     * The lowest power (W, into the model, at the velocity v) of the forces in flight: those sent since W + d ticks
+     * before the last new state; +infinity when there are none.
+     */
+    private double worstInFlight() {
+        long n = sentCount;
+        long first = Math.max(Math.max(lastFresh - late - delay, 0), n - HISTORY);
+        double worst = Double.POSITIVE_INFINITY;
+        for (long j = first; j < n; j++) {
+            double[] g = history[(int) (j % HISTORY)];
+            double p = -(g[0] * velocity[0] + g[1] * velocity[1] + g[2] * velocity[2]);
+            if (p < worst) {
+                worst = p;
+            }
+        }
+        return worst;
     }
 
     /**
@@ -204,7 +318,11 @@ final class HapticPort {
                     inFlight[i] += g[i];
                 }
             }
-            alpha = controller.command(f, velocity, inFlight, period);
+            if (late > 0) {
+                alpha = controller.commandLate(f, velocity, worstInFlight(), lateSpan, period);
+            } else {
+                alpha = controller.command(f, velocity, inFlight, period);
+            }
             for (int i = 0; i < 3; i++) {
                 damper[i] = f[i] - damper[i];
             }
@@ -245,5 +363,12 @@ final class HapticPort {
             d[i] = scale * damper[i];
         }
         slot = (slot + 1) % (MAX_DELAY + 1);
+        double[] h = history[(int) (sentCount % HISTORY)];
+        double[] hd = historyDamper[(int) (sentCount % HISTORY)];
+        for (int i = 0; i < 3; i++) {
+            h[i] = f[i];
+            hd[i] = d[i];
+        }
+        sentCount++;
     }
 }

@@ -106,6 +106,30 @@ final class PassivityController {
         return added;
     }
 
+    /**
+     * As {@link #command}, for late answers ({@link HapticPort#setLateBound}): the next new state will charge its
+     * displacement, predicted as {@code v T span}, to whichever force that may have acted over it puts the least energy
+     * into the model, this one (f) or one in flight, whose lowest power at v is {@code worstInFlight} (W; +infinity
+     * when none). If that predicted balance is below zero, adds the damping that brings it back to zero (at most the
+     * limit); the damping changes f only, so when a force in flight is the worst the balance may stay below zero, and
+     * the next ticks damp again.
+     */
+    double commandLate(double[] f, double[] v, double worstInFlight, double span, double period) {
+        double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        double own = -(f[0] * v[0] + f[1] * v[1] + f[2] * v[2]);
+        double worst = Math.min(own, worstInFlight);
+        double predicted = account + worst * span * period + tolerance;
+        added = 0;
+        if (predicted < 0 && v2 > 0) {
+            double alpha = Math.min(-predicted / (span * period * v2), dampingLimit);
+            f[0] -= alpha * v[0];
+            f[1] -= alpha * v[1];
+            f[2] -= alpha * v[2];
+            added = alpha;
+        }
+        return added;
+    }
+
     /** The damping (N s/m) added at the last command. */
     double added() {
         return added;
