@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
@@ -142,6 +144,28 @@ class LateAnswerPassivityTest {
         // measured: 3 of the 5 seeds give energy back with the fixed-delay account
         assertTrue(oldLeaks >= 2, "the fixed-delay account (bound 0) lets the wall give energy back in " + oldLeaks
                 + " of " + SEEDS.length + " seeds");
+    }
+
+    @Test
+    void theLoopTakesTheDevicesBoundAndValidatesItsOwn() {
+        HapticDevice plain = new tactus.hapticstability.LockstepInverse3(
+                new tactus.haptics.emulator.SimulatedInverse3(), T);
+        HapticLoop loop = new HapticLoop(plain, new NoForceAvatar());
+        assertEquals(0, loop.lateAnswerBound(), "a device that declares no late answers keeps the fixed-delay account");
+        // the same device, declaring a bound of 3 ticks
+        HapticDevice late = (HapticDevice) java.lang.reflect.Proxy.newProxyInstance(HapticDevice.class.getClassLoader(),
+                new Class<?>[] {HapticDevice.class},
+                (proxy, method, args) -> "lateAnswerBound".equals(method.getName()) ? 3 : method.invoke(plain, args));
+        assertEquals(3, new HapticLoop(late, new NoForceAvatar()).lateAnswerBound(), "the device's bound");
+        loop.setLateAnswerBound(HapticPort.MAX_LATE);
+        assertEquals(HapticPort.MAX_LATE, loop.lateAnswerBound());
+        for (int bad : new int[] {-1, HapticPort.MAX_LATE + 1}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> loop.setLateAnswerBound(bad));
+            assertTrue(e.getMessage().contains("setLateAnswerBound") && e.getMessage().contains(Integer.toString(bad)),
+                    e.getMessage());
+            assertEquals(HapticPort.MAX_LATE, loop.lateAnswerBound(), "unchanged after " + bad);
+        }
+        assertEquals(4, tactus.haptics.inverse.Inverse3Device.LATE_ANSWER_BOUND, "the Inverse3's declared bound");
     }
 
     @Test
