@@ -7,7 +7,11 @@ package tactus.haptics;
  * displacement since then, {@code -F(n-1)·(x(n) - x(n-1))}: the force is held between ticks (a zero-order hold) and
  * the displacement is measured, so the sum is the energy the held force really exchanged with the handle, to the
  * resolution of the position readings. Positions are metres and forces newtons along the device's axes whatever the
- * model's units, so the figures are joules for a model in REAL_UNITS and for one in ALGO_UNITS alike.
+ * model's units, so the figures are joules for a model in REAL_UNITS and for one in ALGO_UNITS alike. On a device
+ * whose states may answer late ({@link HapticLoop#setLateAnswerBound}, the Inverse3 by default) a tick with no new
+ * state adds nothing, and a new state's displacement is charged to the force, among those that may have acted over
+ * it, that puts the least energy into the model: the figures are then conservative (net energy at or below the true
+ * one), not exact, and {@link #dissipated()} is the damper's share of the force charged, which may be negative.
  *
  * <p>Signs: energy <em>in</em> is energy the hand (through the device) gave to the model; energy <em>out</em> is
  * energy the model gave back to the hand. A passive model never gives back more than it was given: its

@@ -21,12 +21,12 @@ import tactus.paramSystem;
  * StiffWall3D's case on the wall-clock path: the haptic loop, {@link Inverse3Device}, the WebSocket and the
  * {@link InverseServiceEmulator} advancing by the real time between messages (as the example runs it), the generic
  * 3-DoF plant, a hand (a spring of 300 N/m and 3 N s/m, as {@code HapticSession3D}'s) pressing slowly in and out of a
- * one-sided 3000 N/m wall, the passivity controller on (limit 100 N s/m). Runs alternate the fixed-delay account
+ * one-sided 3000 N/m wall, the passivity controller on (limit 100 N s/m unless told). Runs alternate the fixed-delay account
  * (late-answer bound 0, as before) and the late-answer bound of {@code Inverse3Device} (4), and print per run the
  * observer's net energy and the true net energy into the model from the emulator's record of each force and the
  * handle's displacement over the period it was applied. Wall-clock: the figures depend on the machine's load.
  *
- * <p>Usage: {@code LateAnswerWallClock [seconds per run, default 5] [runs per setting, default 3] [press period, s, default 1.5]}.
+ * <p>Usage: {@code LateAnswerWallClock [seconds per run, default 5] [runs per setting, default 3] [press period, s, default 1.5] [damping limit, N s/m, default 100] [bounds, default 0,4]}.
  */
 public final class LateAnswerWallClock {
     private static final double K = 3000;
@@ -36,7 +36,7 @@ public final class LateAnswerWallClock {
     }
 
     /** One run; returns {observer net, true net, dissipated, active share, forces} (J, J, J, 0..1, count). */
-    static double[] run(int lateBound, double seconds, double pressPeriod) throws Exception {
+    static double[] run(int lateBound, double seconds, double pressPeriod, double dampingLimit) throws Exception {
         SimulatedInverse3 sim = new SimulatedInverse3();
         sim.setPlant(PlantParameters.cartesian3Dof());
         double[] home = SimulatedInverse3.HOME;
@@ -58,7 +58,7 @@ public final class LateAnswerWallClock {
             loop.setWorkspaceMapping(WorkspaceMapping.identity());
             loop.setForceGain(1);
             loop.setHeapWarmup(false);
-            loop.setPassivityDampingLimit(100);
+            loop.setPassivityDampingLimit(dampingLimit);
             loop.setPassivityControl(true);
             loop.setLateAnswerBound(lateBound);
             loop.start();
@@ -95,12 +95,18 @@ public final class LateAnswerWallClock {
         double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 5;
         int runs = args.length > 1 ? Integer.parseInt(args[1]) : 3;
         double press = args.length > 2 ? Double.parseDouble(args[2]) : 1.5;
-        System.out.println("StiffWall3D case, wall clock, 3000 N/m, controller on (limit 100 N s/m), " + seconds + " s a run, a press every " + press + " s");
+        double limit = args.length > 3 ? Double.parseDouble(args[3]) : 100;
+        String[] which = (args.length > 4 ? args[4] : "0," + Inverse3Device.LATE_ANSWER_BOUND).split(",");
+        int[] bounds = new int[which.length];
+        for (int i = 0; i < which.length; i++) {
+            bounds[i] = Integer.parseInt(which[i].trim());
+        }
+        System.out.println("StiffWall3D case, wall clock, 3000 N/m, controller on (limit " + limit + " N s/m), " + seconds + " s a run, a press every " + press + " s");
         System.out.println("| late bound | observer net (mJ) | true net (mJ) | dissipated (mJ) | active | forces |");
         System.out.println("|---|---|---|---|---|---|");
         for (int r = 0; r < runs; r++) {
-            for (int bound : new int[] {0, Inverse3Device.LATE_ANSWER_BOUND}) {
-                double[] x = run(bound, seconds, press);
+            for (int bound : bounds) {
+                double[] x = run(bound, seconds, press, limit);
                 System.out.println(String.format(Locale.ROOT, "| %d | %.1f | %.1f | %.1f | %.0f %% | %d |", bound,
                         1e3 * x[0], 1e3 * x[1], 1e3 * x[2], 100 * x[3], (long) x[4]));
             }
