@@ -81,8 +81,10 @@ void startLoop() {
   avatar = mdl.getMatIndex("avatar");
   loop = haptics.attach(mdl, "avatar");
   loop.setForceGain(forceGain);
-  // an Inverse3-class handle is ten times heavier than a 2DIY's: let the controller damp in proportion
-  loop.setPassivityDampingLimit(100);
+  // an Inverse3-class handle (0.2 kg) is ten times heavier than a 2DIY's: let the controller damp in proportion,
+  // but below m / (T (W + 1/2)) = 44 N s/m, where its own damper, delayed by answers up to W = 4 ticks late, would
+  // shake the handle (docs/haptics-stability.md, "In 3-D and at audio rate")
+  loop.setPassivityDampingLimit(40);
   loop.setPassivityControl(controller);
   if (coupling) {
     loop.setVirtualCoupling(deviceCoupling());
