@@ -164,4 +164,58 @@ class StepperNeverWaitsTest {
                 first);
         assertTrue(e.toString().endsWith(first), e.toString());
     }
+
+    @Test
+    void theStepDoesNotWaitForAStepOfAnotherOwnerAndTakesTheRoleOnceItReturns() throws Exception {
+        PhysicalModel m = chain();
+        PhysicalModelStepper s = new PhysicalModelStepper(m);
+        CountDownLatch inListener = new CountDownLatch(1);
+        CountDownLatch release = new CountDownLatch(1);
+        m.setDivergenceListener(e -> {
+            inListener.countDown();
+            try {
+                release.await(20, TimeUnit.SECONDS); // holds the sketch's stepping call, and so the model
+            } catch (InterruptedException ignored) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        Thread sketch = new Thread(() -> {
+            m.setLinkStiffness("s3", 5.0);
+            for (int i = 0; i < 100_000 && inListener.getCount() > 0; i++) {
+                m.computeStep(); // the sketch owns the model (it stepped first) until the audio thread claims it
+            }
+        }, "sketch");
+        sketch.setDaemon(true);
+        sketch.start();
+        try {
+            assertTrue(inListener.await(10, TimeUnit.SECONDS), "the sketch's step is inside its listener");
+            assertSame(sketch, m.getRealtimeOwner());
+            assertTimeoutPreemptively(Duration.ofSeconds(2), () -> {
+                s.beginSample();
+                try {
+                    s.step();
+                } finally {
+                    s.endSample();
+                }
+            }, "the audio thread's step waited for the sketch's stepping call");
+            assertEquals(1, s.busySkips(), "the step was skipped, not waited for");
+            assertSame(sketch, m.getRealtimeOwner());
+        } finally {
+            release.countDown();
+            sketch.join(5000);
+        }
+        Thread audio = new Thread(() -> {
+            s.beginSample();
+            try {
+                s.step();
+            } finally {
+                s.endSample();
+            }
+        }, "audio");
+        audio.start();
+        audio.join(5000);
+        assertFalse(audio.isAlive(), "the audio thread's step returned");
+        assertSame(audio, m.getRealtimeOwner(), "the audio thread took the role once the sketch's call returned");
+        assertEquals(1, s.busySkips());
+    }
 }
