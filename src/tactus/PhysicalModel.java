@@ -191,11 +191,9 @@ public class PhysicalModel {
 
     /**
      * {@link #takeRealtimeStepping()} without waiting: one attempt, which fails while another thread is inside a
-     * stepping or facade call of this model (or applying its queued changes). The request stays: the owner's call
-     * in progress hands the role to the calling thread as it ends, so that the caller's next attempt (or stepping
-     * call) finds it the owner. For a thread that must never wait, a PhyUGen's audio thread: it skips that
-     * sample's step and tries again at the next. Takes no lock; costs one volatile read when the caller already
-     * owns the model.
+     * stepping or facade call of this model (or applying its queued changes). For a thread that must never wait,
+     * a PhyUGen's audio thread: it tries again at its next sample. Takes no lock; costs one volatile read when the
+     * caller already owns the model.
      *
      * @return true when the calling thread now steps the model; false when the model is not stepped in realtime,
      *     its realtime mode is ending, or another thread's call holds it at this instant

@@ -48,6 +48,10 @@ public final class PhysicalModelStepper implements SteppedModel {
     private volatile long busySkips;
     /** True once a step took the role without waiting; until then a claim waits (the audio thread's own). */
     private boolean claimedOnce;
+    /** Consecutive skipped steps (the audio thread's own). */
+    private int busyInARow;
+    /** After this many skipped steps in a row, the audio thread's claim waits for the other thread's call. */
+    static final int BUSY_SKIPS_BEFORE_WAITING = 64;
 
     private static final int RULE_UNSUPPORTED = -1;
     private static final int RULE_ALWAYS = 0;
@@ -140,6 +144,7 @@ public final class PhysicalModelStepper implements SteppedModel {
     @Override
     public void step() {
         if (model.tryTakeRealtimeStepping()) {
+            busyInARow = 0;
             claimedOnce = true;
         } else if (!claimLater()) {
             busySkips++;
@@ -150,20 +155,23 @@ public final class PhysicalModelStepper implements SteppedModel {
 
     /**
      * After a claim that would have waited: decides whether this sample steps anyway. While another live thread
-     * owns the model and one of its calls holds it, the step is skipped (the audio thread never waits for it); that
-     * call hands the role to this thread as it ends ({@link PhysicalModel#tryTakeRealtimeStepping()}), so a later
-     * sample steps again. The first claim, which takes the model from a sketch that stepped it before the sound
-     * began, waits for that call as before, so that the first sample takes the role and no step is lost at the
-     * start. Otherwise (no owner, the mode ending or ended) it claims as before and, when that fails, asks the
-     * helper to begin the realtime mode again; the step then runs in locked mode.
+     * owns the model and one of its calls holds it, the step is skipped (the audio thread never waits for it), up
+     * to {@link #BUSY_SKIPS_BEFORE_WAITING} samples in a row. The first claim, which takes the model from a sketch
+     * that stepped it before the sound began, waits for that call as before, so that the first sample takes the
+     * role and no sample's step is lost at the start. After the skips, as before, the claim waits for that call
+     * ({@link PhysicalModel#takeRealtimeStepping()}), so that a thread stepping the model without pause cannot keep
+     * the audio frozen. Otherwise (no owner, the mode ending or ended) it claims as before and, when that fails,
+     * asks the helper to begin the realtime mode again; the step then runs in locked mode.
      *
      * @return true when this sample steps (in realtime or locked mode), false when its step is skipped
      */
     private boolean claimLater() {
         Thread owner = model.getRealtimeOwner();
-        if (claimedOnce && owner != null && owner != Thread.currentThread() && owner.isAlive()) {
+        if (claimedOnce && owner != null && owner != Thread.currentThread() && owner.isAlive()
+                && ++busyInARow < BUSY_SKIPS_BEFORE_WAITING) {
             return false;
         }
+        busyInARow = 0;
         if (!model.takeRealtimeStepping() && !resuming) {
             resuming = true;
             AudioHelper.post(this::resumeRealtime);

@@ -166,7 +166,7 @@ class StepperNeverWaitsTest {
     }
 
     @Test
-    void theStepDoesNotWaitForAStepOfAThreadThatTookTheModelAndGetsTheRoleAsThatStepEnds() throws Exception {
+    void theStepDoesNotWaitForAStepOfAThreadThatTookTheModelAndTakesItBackOnceItReturns() throws Exception {
         PhysicalModel m = chain();
         PhysicalModelStepper s = new PhysicalModelStepper(m);
         CountDownLatch inListener = new CountDownLatch(1);
@@ -190,40 +190,29 @@ class StepperNeverWaitsTest {
             }
         }, "sketch");
         sketch.setDaemon(true);
-        CountDownLatch sampled = new CountDownLatch(1);
-        CountDownLatch audioMayEnd = new CountDownLatch(1);
-        Thread audio = new Thread(() -> {
-            s.beginSample();
-            try {
-                s.step();
-            } finally {
-                s.endSample();
-            }
-            sampled.countDown();
-            try {
-                audioMayEnd.await(20, TimeUnit.SECONDS); // stays alive: the role can be handed to it
-            } catch (InterruptedException ignored) {
-                Thread.currentThread().interrupt();
-            }
-        }, "audio");
-        audio.setDaemon(true);
+        sketch.start();
         try {
-            sketch.start();
             assertTrue(inListener.await(10, TimeUnit.SECONDS), "the sketch's step is inside its listener");
             assertSame(sketch, m.getRealtimeOwner());
-            audio.start();
-            assertTrue(sampled.await(2, TimeUnit.SECONDS), "the audio thread's step waited for the sketch's stepping call");
+            assertTimeoutPreemptively(Duration.ofSeconds(2), () -> {
+                s.beginSample();
+                try {
+                    s.step();
+                } finally {
+                    s.endSample();
+                }
+            }, "the audio thread's step waited for the sketch's stepping call");
             assertEquals(1, s.busySkips(), "the step was skipped, not waited for");
-            assertSame(sketch, m.getRealtimeOwner(), "the sketch's call still holds the model");
-            release.countDown();
-            sketch.join(5000);
-            assertFalse(sketch.isAlive(), "the sketch's stepping call returned");
-            assertSame(audio, m.getRealtimeOwner(), "the sketch's call handed the role to the audio thread as it ended");
+            assertSame(sketch, m.getRealtimeOwner());
         } finally {
             release.countDown();
-            audioMayEnd.countDown();
-            audio.join(5000);
+            sketch.join(5000);
         }
+        Thread audio = audioSample(s);
+        audio.join(5000);
+        assertFalse(audio.isAlive(), "the audio thread's step returned");
+        assertSame(audio, m.getRealtimeOwner(), "the audio thread took the role once the sketch's call returned");
+        assertEquals(1, s.busySkips());
     }
 
     /** Starts a thread that plays one sample of {@code s} (a step inside a sample) and ends. */

@@ -65,8 +65,6 @@ public final class Ownership implements RealtimeMode {
     public volatile long droppedRampMembers;
     /** The thread that holds the stepping role, or null; changed only under the gate. */
     private volatile Thread owner;
-    /** The last thread whose {@link #tryClaim()} found the gate busy: the owner hands it the role as its call ends. */
-    private volatile Thread claimRequest;
     /** How many times the role changed hands (taken by a new thread or set to nobody). */
     private volatile long handOvers;
     /** The owner's nesting of gate-holding calls (stepping calls and facade calls); touched under the gate. */
@@ -288,19 +286,12 @@ public final class Ownership implements RealtimeMode {
 
     /**
      * {@link #claim()} without waiting: one attempt at the gate (a PhyUGen's audio thread, which must not wait for the
-     * stepping call of another thread). When the gate is busy, the request is left for the owner: the call that holds
-     * the gate hands the role to the caller as it ends, so that a later attempt finds the caller the owner.
+     * stepping call of another thread).
      *
      * @return true when the current thread owns the role; false when the mode is ending or the gate is busy
      */
     public boolean tryClaim() {
-        if (claim(-1)) {
-            return true;
-        }
-        if (!ending) {
-            claimRequest = Thread.currentThread(); // the owner's call in progress hands the role over as it ends
-        }
-        return false;
+        return claim(-1);
     }
 
     /** @param limitNanos how long to wait for a busy gate; negative: do not wait */
@@ -422,8 +413,6 @@ public final class Ownership implements RealtimeMode {
         try {
             if (endRequested) {
                 finishRole();
-            } else {
-                handOverIfRequested();
             }
         } finally {
             GATE_HOLDER.setOpaque(this, (Thread) null);
@@ -441,19 +430,8 @@ public final class Ownership implements RealtimeMode {
         freeRole();
     }
 
-    /** Under the gate, as the owner's call ends: gives the role to a thread whose {@link #tryClaim()} found it busy. */
-    private void handOverIfRequested() {
-        Thread r = claimRequest;
-        if (r != null && r != owner && r.isAlive()) {
-            takeRole(r);
-        }
-    }
-
     /** Under the gate: the role passes to {@code t}, which counts as having just stepped. */
     private void takeRole(Thread t) {
-        if (claimRequest == t) {
-            claimRequest = null;
-        }
         owner = t;
         handOvers++;
         lastStep = System.nanoTime();
