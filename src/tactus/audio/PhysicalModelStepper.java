@@ -46,8 +46,6 @@ public final class PhysicalModelStepper implements SteppedModel {
     private boolean inSample;
     /** Samples whose step was skipped because another thread's call held the model; written by the audio thread. */
     private volatile long busySkips;
-    /** True once a step took the role without waiting; until then a claim waits (the audio thread's own). */
-    private boolean claimedOnce;
     /** Consecutive skipped steps (the audio thread's own). */
     private int busyInARow;
     /** After this many skipped steps in a row, the audio thread's claim waits for the other thread's call. */
@@ -137,15 +135,13 @@ public final class PhysicalModelStepper implements SteppedModel {
      * another thread), the step runs in locked mode and the {@link AudioHelper} thread is asked to begin the mode
      * again and hold the rate again: in locked mode the audio thread would wait for the model's lock behind the
      * sketch's threads and analyse stability itself, the gaps of docs/audio.md, "Audio under load". The role is
-     * taken without waiting ({@link PhysicalModel#tryTakeRealtimeStepping()}): once the audio thread has stepped,
-     * while a call of another thread that took the model since holds it, this sample's step is skipped (see
-     * {@link #busySkips()}) rather than waited for.
+     * taken without waiting ({@link PhysicalModel#tryTakeRealtimeStepping()}): while a call of another thread that
+     * owns the model holds it, this sample's step is skipped (see {@link #busySkips()}) rather than waited for.
      */
     @Override
     public void step() {
         if (model.tryTakeRealtimeStepping()) {
             busyInARow = 0;
-            claimedOnce = true;
         } else if (!claimLater()) {
             busySkips++;
             return; // another thread's call holds the model at this instant: this sample's step is skipped
@@ -156,9 +152,7 @@ public final class PhysicalModelStepper implements SteppedModel {
     /**
      * After a claim that would have waited: decides whether this sample steps anyway. While another live thread
      * owns the model and one of its calls holds it, the step is skipped (the audio thread never waits for it), up
-     * to {@link #BUSY_SKIPS_BEFORE_WAITING} samples in a row. The first claim, which takes the model from a sketch
-     * that stepped it before the sound began, waits for that call as before, so that the first sample takes the
-     * role and no sample's step is lost at the start. After the skips, as before, the claim waits for that call
+     * to {@link #BUSY_SKIPS_BEFORE_WAITING} samples in a row; then, as before, the claim waits for that call
      * ({@link PhysicalModel#takeRealtimeStepping()}), so that a thread stepping the model without pause cannot keep
      * the audio frozen. Otherwise (no owner, the mode ending or ended) it claims as before and, when that fails,
      * asks the helper to begin the realtime mode again; the step then runs in locked mode.
@@ -167,7 +161,7 @@ public final class PhysicalModelStepper implements SteppedModel {
      */
     private boolean claimLater() {
         Thread owner = model.getRealtimeOwner();
-        if (claimedOnce && owner != null && owner != Thread.currentThread() && owner.isAlive()
+        if (owner != null && owner != Thread.currentThread() && owner.isAlive()
                 && ++busyInARow < BUSY_SKIPS_BEFORE_WAITING) {
             return false;
         }
