@@ -190,19 +190,6 @@ public class PhysicalModel {
     }
 
     /**
-     * {@link #takeRealtimeStepping()} without waiting: one attempt, which fails while another thread is inside a
-     * stepping or facade call of this model (or applying its queued changes). For a thread that must never wait,
-     * a PhyUGen's audio thread: it tries again at its next sample. Takes no lock; costs one volatile read when the
-     * caller already owns the model.
-     *
-     * @return true when the calling thread now steps the model; false when the model is not stepped in realtime,
-     *     its realtime mode is ending, or another thread's call holds it at this instant
-     */
-    public boolean tryTakeRealtimeStepping() {
-        return gate.tryClaim();
-    }
-
-    /**
      * Begins a run of calls that the realtime stepping thread makes together, such as one audio sample of a
      * {@link tactus.audio.PhyUGen}: a step, then the reads of its listening points. The calling thread takes the
      * owner role as {@link #computeStep()} would, applies what other threads queued, and enters the model once for

@@ -44,12 +44,6 @@ public final class PhysicalModelStepper implements SteppedModel {
     private volatile int rate;
     /** True while the audio thread's sample holds the model ({@link #beginSample()}); the audio thread's own. */
     private boolean inSample;
-    /** Samples whose step was skipped because another thread's call held the model; written by the audio thread. */
-    private volatile long busySkips;
-    /** Consecutive skipped steps (the audio thread's own). */
-    private int busyInARow;
-    /** After this many skipped steps in a row, the audio thread's claim waits for the other thread's call. */
-    static final int BUSY_SKIPS_BEFORE_WAITING = 64;
 
     private static final int RULE_UNSUPPORTED = -1;
     private static final int RULE_ALWAYS = 0;
@@ -134,48 +128,15 @@ public final class PhysicalModelStepper implements SteppedModel {
      * realtime mode has ended while the model is played ({@code endRealtimeStepping()} from a DivergenceListener or
      * another thread), the step runs in locked mode and the {@link AudioHelper} thread is asked to begin the mode
      * again and hold the rate again: in locked mode the audio thread would wait for the model's lock behind the
-     * sketch's threads and analyse stability itself, the gaps of docs/audio.md, "Audio under load". The role is
-     * taken without waiting ({@link PhysicalModel#tryTakeRealtimeStepping()}): while a call of another thread that
-     * owns the model holds it, this sample's step is skipped (see {@link #busySkips()}) rather than waited for.
+     * sketch's threads and analyse stability itself, the gaps of docs/audio.md, "Audio under load".
      */
     @Override
     public void step() {
-        if (model.tryTakeRealtimeStepping()) {
-            busyInARow = 0;
-        } else if (!claimLater()) {
-            busySkips++;
-            return; // another thread's call holds the model at this instant: this sample's step is skipped
-        }
-        model.computeStep();
-    }
-
-    /**
-     * After a claim that would have waited: decides whether this sample steps anyway. While another live thread
-     * owns the model and one of its calls holds it, the step is skipped (the audio thread never waits for it), up
-     * to {@link #BUSY_SKIPS_BEFORE_WAITING} samples in a row; then, as before, the claim waits for that call
-     * ({@link PhysicalModel#takeRealtimeStepping()}), so that a thread stepping the model without pause cannot keep
-     * the audio frozen. Otherwise (no owner, the mode ending or ended) it claims as before and, when that fails,
-     * asks the helper to begin the realtime mode again; the step then runs in locked mode.
-     *
-     * @return true when this sample steps (in realtime or locked mode), false when its step is skipped
-     */
-    private boolean claimLater() {
-        Thread owner = model.getRealtimeOwner();
-        if (owner != null && owner != Thread.currentThread() && owner.isAlive()
-                && ++busyInARow < BUSY_SKIPS_BEFORE_WAITING) {
-            return false;
-        }
-        busyInARow = 0;
         if (!model.takeRealtimeStepping() && !resuming) {
             resuming = true;
             AudioHelper.post(this::resumeRealtime);
         }
-        return true;
-    }
-
-    /** @return how many samples' steps were skipped because another thread's call held the model (audio thread's count). */
-    public long busySkips() {
-        return busySkips;
+        model.computeStep();
     }
 
     /** On the helper thread: puts the model back in realtime stepping and holds its rate for the driver again. */

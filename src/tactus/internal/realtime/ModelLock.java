@@ -222,12 +222,6 @@ public final class ModelLock {
         return o != null && o.claim();
     }
 
-    /** {@link #claim()} without waiting (see {@code PhysicalModel.tryTakeRealtimeStepping()}). */
-    public boolean tryClaim() {
-        Ownership o = mode();
-        return o != null && o.tryClaim();
-    }
-
     /** @return the commands dropped over the life of the model (see {@code PhysicalModel.getDroppedCommands()}). */
     public long droppedCommands() {
         Ownership o = mode();

@@ -281,26 +281,11 @@ public final class Ownership implements RealtimeMode {
      * @return true when the current thread owns the role; false when the mode is ending or the gate stayed busy
      */
     public boolean claim() {
-        return claim(waitLimitNanos);
-    }
-
-    /**
-     * {@link #claim()} without waiting: one attempt at the gate (a PhyUGen's audio thread, which must not wait for the
-     * stepping call of another thread).
-     *
-     * @return true when the current thread owns the role; false when the mode is ending or the gate is busy
-     */
-    public boolean tryClaim() {
-        return claim(-1);
-    }
-
-    /** @param limitNanos how long to wait for a busy gate; negative: do not wait */
-    private boolean claim(long limitNanos) {
         Thread me = Thread.currentThread();
         if (owner == me) {
             return true;
         }
-        long start = limitNanos < 0 ? 0 : System.nanoTime();
+        long start = System.nanoTime();
         for (;;) {
             if (ending) {
                 return false;
@@ -319,7 +304,7 @@ public final class Ownership implements RealtimeMode {
                     gate.set(FREE);
                 }
             }
-            if (limitNanos < 0 || System.nanoTime() - start > limitNanos) {
+            if (System.nanoTime() - start > waitLimitNanos) {
                 return false;
             }
             LockSupport.parkNanos(50_000L);
