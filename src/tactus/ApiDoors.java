@@ -36,7 +36,7 @@ final class ApiDoors extends ApiAccess {
     }
 
     @Override
-    public DivergenceException divergence(String message, String massName, long step) {
-        return new DivergenceException(message, massName, step);
+    public DivergenceException divergence(String massLabel, String massName, long step, double x, double y, double z) {
+        return new DivergenceException(massLabel, massName, step, x, y, z);
     }
 }

@@ -9,11 +9,41 @@ public class DivergenceException extends IllegalStateException {
     private static final long serialVersionUID = 1L;
     private final String massName;
     private final long step;
+    /** The raw facts of the message, formatted by {@link #getMessage()} on the thread that reads it. */
+    private final String massLabel;
+    private final double x;
+    private final double y;
+    private final double z;
+    /** The formatted message, made on first read (a race makes the same text twice, harmlessly). */
+    private String message;
 
-    DivergenceException(String message, String massName, long step) {
-        super(message);
+    /**
+     * A divergence whose message is formatted only when it is read: the stepping thread (a PhyUGen's audio thread)
+     * records the facts and formats no string.
+     */
+    DivergenceException(String massLabel, String massName, long step, double x, double y, double z) {
+        super((String) null);
         this.massName = massName;
         this.step = step;
+        this.massLabel = massLabel;
+        this.x = x;
+        this.y = y;
+        this.z = z;
+    }
+
+    /**
+     * @return "Mass3D \"name\" diverged at step N: position (x, y, z); the model is frozen until
+     *     clearDivergence()", formatted on the first call
+     */
+    @Override
+    public String getMessage() {
+        String m = message;
+        if (m == null) {
+            m = massLabel + " \"" + massName + "\" diverged at step " + step + ": position (" + x + ", " + y + ", " + z
+                    + "); the model is frozen until clearDivergence()";
+            message = m;
+        }
+        return m;
     }
 
     /** @return the name of the first offending mass. */

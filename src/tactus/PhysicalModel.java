@@ -1435,6 +1435,18 @@ public class PhysicalModel {
         return settings.isDiverged();
     }
 
+    /**
+     * The divergence flag read without entering the model: it never takes the model's lock nor waits for another
+     * thread, for the thread that steps the model (a PhyUGen's audio thread checks it between samples). On the
+     * thread that steps the model it is exactly {@link #isDiverged()}; on another thread it is as of the last
+     * stepping call, {@code clearDivergence()} or removal of the diverged mass that returned.
+     *
+     * @return true when the model has diverged and is frozen
+     */
+    public boolean isDivergedNow() {
+        return settings.isDivergedNow();
+    }
+
     /** Lets a diverged model step again; repair its state first (positions, parameters). */
     public void clearDivergence() {
         settings.clearDivergence();

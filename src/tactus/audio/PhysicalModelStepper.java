@@ -158,10 +158,13 @@ public final class PhysicalModelStepper implements SteppedModel {
         return resumes;
     }
 
-    /** @return true while the model has diverged and is frozen (until {@code clearDivergence()}). */
+    /**
+     * @return true while the model has diverged and is frozen (until {@code clearDivergence()}); a lock-free read
+     *     ({@link PhysicalModel#isDivergedNow()}) that never waits for a thread holding the model
+     */
     @Override
     public boolean isHalted() {
-        return model.isDiverged();
+        return model.isDivergedNow();
     }
 
     @Override

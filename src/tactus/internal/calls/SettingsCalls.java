@@ -271,6 +271,11 @@ public final class SettingsCalls extends Calls {
         }
     }
 
+    /** @return the published divergence flag (see {@code PhysicalModel.isDivergedNow()}); enters nothing. */
+    public boolean isDivergedNow() {
+        return core.watch.divergedFlag();
+    }
+
     public void clearDivergence() {
         structuralDo(() -> {
             core.watch.clear();

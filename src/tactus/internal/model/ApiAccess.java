@@ -49,6 +49,11 @@ public abstract class ApiAccess {
     public abstract StabilityReport stabilityReport(tactus.engine.StabilityReport r, String culprit,
                                                     String negativeDamping);
 
-    /** @return the exception of a divergence found while stepping. */
-    public abstract DivergenceException divergence(String message, String massName, long step);
+    /**
+     * @return the exception of a divergence found while stepping, from its raw facts (its message is formatted when
+     *     it is read, not on the stepping thread)
+     * @param massLabel the kind of the mass, "Mass3D"; x, y, z its position when the divergence was found
+     */
+    public abstract DivergenceException divergence(String massLabel, String massName, long step,
+                                                   double x, double y, double z);
 }

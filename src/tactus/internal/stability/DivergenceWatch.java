@@ -16,6 +16,11 @@ public final class DivergenceWatch {
     private final double[] pos = new double[3];
     private DivergenceListener listener;
     private boolean notified;
+    /**
+     * Whether the engine holds a divergence, published for lock-free readers ({@link #divergedFlag()}): written by
+     * the thread that steps (after each stepping call) or clears the model.
+     */
+    private volatile boolean diverged;
 
     public DivergenceWatch(Engine engine, Directory dir) {
         this.engine = engine;
@@ -30,9 +35,18 @@ public final class DivergenceWatch {
         return engine.divergedMass() >= 0;
     }
 
+    /**
+     * @return the published divergence flag, read without the model's lock: on the stepping thread it is
+     *     {@link #isDiverged()}; on another thread, as of the last stepping call or {@link #clear()} that returned
+     */
+    public boolean divergedFlag() {
+        return diverged;
+    }
+
     /** Lets the engine step again and re-arms the listener. */
     public void clear() {
         engine.clearDivergence();
+        diverged = false;
         notified = false;
     }
 
@@ -41,17 +55,22 @@ public final class DivergenceWatch {
         notified = false;
     }
 
-    /** Reports a divergence found by the last steps, if any: throws, or notifies the listener once. */
+    /**
+     * Reports a divergence found by the last steps, if any: throws, or notifies the listener once. Publishes the
+     * flag of {@link #divergedFlag()} first. Formats no string: the exception carries the raw facts and formats its
+     * message when it is read.
+     */
     public void check() {
         int id = engine.divergedMass();
+        if ((id >= 0) != diverged) {
+            diverged = id >= 0;
+        }
         if (id < 0 || (listener != null && notified)) {
             return;
         }
         engine.position(id, pos);
-        String name = dir.massName(id);
-        DivergenceException ex = ApiAccess.get().divergence(dir.describeMass(id) + " diverged at step "
-                + engine.divergedAt() + ": position (" + pos[0] + ", " + pos[1] + ", " + pos[2]
-                + "); the model is frozen until clearDivergence()", name, engine.divergedAt());
+        DivergenceException ex = ApiAccess.get().divergence(engine.massKind(id).label(), dir.massName(id),
+                engine.divergedAt(), pos[0], pos[1], pos[2]);
         if (listener != null) {
             notified = true;
             listener.diverged(ex);
