@@ -1,6 +1,7 @@
 package tactus.soak;
 
 import tactus.haptics.AvatarLink;
+import tactus.haptics.ForwardingAvatarLink;
 import tactus.haptics.HapticLoop;
 
 /**
@@ -8,29 +9,18 @@ import tactus.haptics.HapticLoop;
  * hands the loop (the loop must turn them into zero torque) and checks the torques the loop sent at the previous
  * tick, so that every tick's torque is checked. It never waits, like the link it wraps.
  */
-final class TorqueWatch implements AvatarLink {
-    private final AvatarLink inner;
+final class TorqueWatch extends ForwardingAvatarLink {
     private final SoakReport report;
     private volatile HapticLoop loop;
 
     TorqueWatch(AvatarLink inner, SoakReport report) {
-        this.inner = inner;
+        super(inner);
         this.report = report;
     }
 
     /** The loop whose torques to check; set before it starts. */
     void watch(HapticLoop loop) {
         this.loop = loop;
-    }
-
-    @Override
-    public void setTarget(double x, double y, double z) {
-        inner.setTarget(x, y, z);
-    }
-
-    @Override
-    public void takeForce(double[] out) {
-        takeForceCounted(out);
     }
 
     @Override
@@ -54,15 +44,5 @@ final class TorqueWatch implements AvatarLink {
         if (!Double.isFinite(t1) || !Double.isFinite(t2)) {
             report.nan("haptic torque", "the loop sent torques " + t1 + ", " + t2 + " N m");
         }
-    }
-
-    @Override
-    public boolean neverWaits() {
-        return inner.neverWaits();
-    }
-
-    @Override
-    public void step(int n) {
-        inner.step(n);
     }
 }

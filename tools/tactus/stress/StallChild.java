@@ -4,6 +4,7 @@ import java.util.Locale;
 import java.util.concurrent.locks.LockSupport;
 import tactus.PhysicalModel;
 import tactus.haptics.AvatarLink;
+import tactus.haptics.ForwardingAvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.HapticSession;
@@ -44,14 +45,13 @@ public final class StallChild {
     }
 
     /** Records the start of each tick: the loop calls {@code setTarget} once per tick, first thing after the read. */
-    private static final class TimedAvatar implements AvatarLink {
-        private final AvatarLink inner;
+    private static final class TimedAvatar extends ForwardingAvatarLink {
         final long[] starts;
         final long[] modelDone;
         volatile int n;
 
         TimedAvatar(AvatarLink inner, int capacity) {
-            this.inner = inner;
+            super(inner);
             this.starts = new long[capacity];
             this.modelDone = new long[capacity];
         }
@@ -67,11 +67,6 @@ public final class StallChild {
         }
 
         @Override
-        public void takeForce(double[] out) {
-            inner.takeForce(out);
-        }
-
-        @Override
         public long takeForceCounted(double[] out) {
             long steps = inner.takeForceCounted(out);
             int i = n - 1;
@@ -79,26 +74,6 @@ public final class StallChild {
                 modelDone[i] = System.nanoTime();
             }
             return steps;
-        }
-
-        @Override
-        public void step(int steps) {
-            inner.step(steps);
-        }
-
-        @Override
-        public boolean neverWaits() {
-            return inner.neverWaits();
-        }
-
-        @Override
-        public void beginStepping() {
-            inner.beginStepping();
-        }
-
-        @Override
-        public void endStepping() {
-            inner.endStepping();
         }
     }
 
