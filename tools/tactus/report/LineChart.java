@@ -166,6 +166,36 @@ public final class LineChart {
         return names.size();
     }
 
+    /** The line of a series in the given pass over the palette: solid, then dashed, then dotted. */
+    private static BasicStroke stroke(int pass) {
+        switch (Math.floorMod(pass, 3)) {
+            case 0:
+                return new BasicStroke(1.6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND);
+            case 1:
+                return new BasicStroke(1.6f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {7f, 4f}, 0f);
+            default:
+                return new BasicStroke(1.6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 10f, new float[] {1f, 4f}, 0f);
+        }
+    }
+
+    /** The marker of a series in the given pass over the palette: a dot, then a square, then a diamond. */
+    private static java.awt.Shape marker(int pass) {
+        switch (Math.floorMod(pass, 3)) {
+            case 0:
+                return new Ellipse2D.Double(-3, -3, 6, 6);
+            case 1:
+                return new java.awt.geom.Rectangle2D.Double(-3, -3, 6, 6);
+            default:
+                java.awt.geom.Path2D.Double d = new java.awt.geom.Path2D.Double();
+                d.moveTo(0, -4);
+                d.lineTo(4, 0);
+                d.lineTo(0, 4);
+                d.lineTo(-4, 0);
+                d.closePath();
+                return d;
+        }
+    }
+
     /**
      * Returns the colour of a series: the palette, in order, repeated.
      *
@@ -240,11 +270,11 @@ public final class LineChart {
         }
 
         XYLineAndShapeRenderer renderer = new XYLineAndShapeRenderer(true, markers);
-        Ellipse2D dot = new Ellipse2D.Double(-3, -3, 6, 6);
         for (int i = 0; i < names.size(); i++) {
+            int pass = i / PALETTE.length;   // past the palette's length, the colours repeat: the dash and marker tell
             renderer.setSeriesPaint(i, color(i));
-            renderer.setSeriesStroke(i, new BasicStroke(1.6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-            renderer.setSeriesShape(i, dot);
+            renderer.setSeriesStroke(i, stroke(pass));
+            renderer.setSeriesShape(i, marker(pass));
         }
 
         XYPlot plot = new XYPlot(data, axis(xLabel, logX, false), axis(yLabel, logY, true), renderer);
