@@ -404,6 +404,15 @@ public class PhysicalModel {
         settings.setGravityDirection(direction);
     }
 
+    /**
+     * Sets the gravity direction ("up") from its three components; it is normalised. The same as
+     * {@link #setGravityDirection(Vect3D)}, for a program without Processing core on the class path: there javac
+     * cannot choose between the one-argument forms, since one of them takes a {@code PVector}.
+     */
+    public void setGravityDirection(double x, double y, double z) {
+        setGravityDirection(new Vect3D(x, y, z));
+    }
+
     /** Sets the gravity direction ("up") from a Processing vector; see {@link #setGravityDirection(Vect3D)}. */
     public void setGravityDirection(PVector direction) {
         if (direction == null) {
