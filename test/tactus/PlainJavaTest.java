@@ -115,6 +115,27 @@ class PlainJavaTest {
         }
     }
 
+    /** A PhyUGen made without Minim on the class path: the message names Minim and how to add it. */
+    @Test
+    void aPhyUGenWithoutMinimNamesMinim() throws Exception {
+        assertEquals(List.of(), compileDiagnostics("MinimCall", "public class MinimCall { public static void call() {"
+                + " tactus.audio.AudioLibrary.newPhyUGen(new tactus.PhysicalModel(44100, 50)); } }",
+                System.getProperty("java.class.path")), "the call compiles with Minim");
+        try (URLClassLoader loader = plainLoader()) {
+            Class<?> call = loader.loadClass("MinimCall");
+            java.lang.reflect.InvocationTargetException e = assertThrows(
+                    java.lang.reflect.InvocationTargetException.class, () -> call.getMethod("call").invoke(null));
+            assertTrue(e.getCause() instanceof IllegalStateException, String.valueOf(e.getCause()));
+            String msg = e.getCause().getMessage();
+            assertTrue(msg.contains("new PhyUGen(model) needs Minim") && msg.contains("ddf.minim.UGen was not found")
+                    && msg.contains("net.compartmental.code:minim:2.2.2"), msg);
+        }
+        // With Minim (the test's own class path) the same call makes the UGen.
+        assertTrue(tactus.audio.AudioLibrary.isMinimPresent());
+        assertEquals("tactus.audio.PhyUGen", tactus.audio.AudioLibrary.newPhyUGen(new PhysicalModel(44100, 50))
+                .getClass().getName());
+    }
+
     /**
      * Every public method of PhysicalModel without a Processing type in its signature is called once in a generated
      * program (never run); javac without core refuses exactly the calls listed in docs/plain-java.md.
