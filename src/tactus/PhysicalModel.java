@@ -53,6 +53,8 @@ public class PhysicalModel {
     final ModelLock gate;
     /** The stepping calls, in both modes. */
     private final Stepping stepping;
+    /** The one warning of a model stepped before init(). */
+    private final tactus.internal.model.InitNotice initNotice = new tactus.internal.model.InitNotice();
     /** The rest of each call, by concern: once in the model, each hands the work to its room. */
     private final SettingsCalls settings;
     private final BuildCalls build;
@@ -298,11 +300,13 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
+        initNotice.check(core.initialized, "draw_physics()");
         return stepping.frame();
     }
 
     /** Runs one simulation step. */
     public void computeStep() {
+        initNotice.check(core.initialized, "computeStep()");
         stepping.step();
     }
 
@@ -311,6 +315,7 @@ public class PhysicalModel {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
+        initNotice.check(core.initialized, "computeNSteps()");
         stepping.steps(n);
     }
 
