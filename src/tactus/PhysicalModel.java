@@ -41,8 +41,8 @@ import tactus.internal.calls.ControllerBook;
  * machinery in {@code tactus.internal} (not API; docs/architecture.md, "Inside tactus").
  */
 public class PhysicalModel {
-    /** The library version. */
-    public static final String VERSION = "0.2.0";
+    /** The library version, such as "0.3.0" (the release's, read from the library's resources when it loads). */
+    public static final String VERSION = tactus.internal.LibraryVersion.read();
 
     static {
         ApiAccess.install(new ApiDoors());
