@@ -135,7 +135,7 @@ class VersionTest {
     }
 
     /** Maven coordinates of the library, with the group and version they name: "io.github.tactus:tactus:0.3.0". */
-    private static final Pattern GRADLE_COORDINATES = Pattern.compile("([\\w.-]+):tactus:([^'\"\\s)`]+)");
+    private static final Pattern GRADLE_COORDINATES = Pattern.compile("([\\w.-]+):tactus:([\\w.${}+-]*[\\w}])");
     private static final Pattern MAVEN_COORDINATES = Pattern.compile(
             "<groupId>([^<]*)</groupId>\\s*<artifactId>tactus</artifactId>\\s*<version>([^<]*)</version>");
     private static final Pattern GRADLE_APP_DEFAULT = Pattern.compile(
