@@ -11,7 +11,7 @@ public final class Attractor3D extends Interaction {
 
     /** @return the attraction factor A (REAL_UNITS: N·m^2); negative values repel. */
     public double getAttraction() {
-        return calls.linkParam(id, LinkParam.ATTRACTION);
+        return param(LinkParam.ATTRACTION);
     }
 
     /** Sets the attraction factor A (REAL_UNITS: N·m^2). */

@@ -27,6 +27,7 @@ public final class HapticInput3D extends Mass {
      * resets the accumulator, and returns {@code out}.
      */
     public Vect3D takeForce(Vect3D out) {
+        checkValid();
         return calls.takeAvatarForce(id, stamp, out);
     }
 }

@@ -11,6 +11,7 @@ public abstract class InertialMass extends Mass {
 
     /** @return the inertia (REAL_UNITS: kg). */
     public double getMass() {
+        checkValid();
         return calls.massParam(id, stamp, MassParam.MASS);
     }
 

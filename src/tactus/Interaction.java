@@ -14,6 +14,7 @@ public abstract class Interaction extends Module {
 
     @Override
     public String getName() {
+        checkValid();
         return calls.linkName(id);
     }
 
@@ -25,22 +26,30 @@ public abstract class Interaction extends Module {
 
     /** @return the handle of the first mass. */
     public Mass getMass1() {
+        checkValid();
         return handles.massAt(calls.linkEnd(id, false));
     }
 
     /** @return the handle of the second mass (the same as the first for a plane contact). */
     public Mass getMass2() {
+        checkValid();
         return handles.massAt(calls.linkEnd(id, true));
     }
 
     /** @return the current distance between the two masses (for a plane contact, the gap to the plane). */
     public double getDistance() {
-        return calls.linkParam(id, LinkParam.DISTANCE);
+        return param(LinkParam.DISTANCE);
     }
 
     /** @return the distance minus the length parameter (rest length, threshold, radius, offset or limit). */
     public double getElongation() {
-        return calls.linkParam(id, LinkParam.ELONGATION);
+        return param(LinkParam.ELONGATION);
+    }
+
+    /** Reads a number of this interaction (its handle's check first, for a message that names it). */
+    double param(LinkParam p) {
+        checkValid();
+        return calls.linkParam(id, p);
     }
 
     /** Sets a parameter of this interaction after checking the value is a number (the room checks the rest). */
@@ -50,7 +59,7 @@ public abstract class Interaction extends Module {
     }
 
     double stiffness() {
-        return calls.linkParam(id, LinkParam.STIFFNESS);
+        return param(LinkParam.STIFFNESS);
     }
 
     void stiffness(double K) {
@@ -58,7 +67,7 @@ public abstract class Interaction extends Module {
     }
 
     double damping() {
-        return calls.linkParam(id, LinkParam.DAMPING);
+        return param(LinkParam.DAMPING);
     }
 
     void damping(double Z) {
@@ -66,7 +75,7 @@ public abstract class Interaction extends Module {
     }
 
     double length() {
-        return calls.linkParam(id, LinkParam.LENGTH);
+        return param(LinkParam.LENGTH);
     }
 
     void length(String op, double d) {

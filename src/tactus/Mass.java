@@ -18,11 +18,13 @@ public abstract class Mass extends Module {
 
     @Override
     public String getName() {
+        checkValid();
         return calls.massName(id, stamp);
     }
 
     @Override
     public String getType() {
+        checkValid();
         return calls.massType(id, stamp);
     }
 
@@ -33,16 +35,19 @@ public abstract class Mass extends Module {
 
     /** Writes the current position into {@code out} without allocating, and returns it. */
     public Vect3D getPosition(Vect3D out) {
+        checkValid();
         return calls.motion(id, stamp, ModuleCalls.Motion.POSITION, out);
     }
 
     /** @return the velocity over the last step, in units per second. */
     public Vect3D getVelocity() {
+        checkValid();
         return calls.motion(id, stamp, ModuleCalls.Motion.VELOCITY, new Vect3D());
     }
 
     /** @return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N). */
     public Vect3D getForce() {
+        checkValid();
         return calls.motion(id, stamp, ModuleCalls.Motion.FORCE, new Vect3D());
     }
 

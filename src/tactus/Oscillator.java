@@ -14,6 +14,7 @@ public abstract class Oscillator extends InertialMass {
 
     /** @return the internal stiffness (REAL_UNITS: N/m). */
     public double getStiffness() {
+        checkValid();
         return calls.massParam(id, stamp, MassParam.STIFFNESS);
     }
 
@@ -25,6 +26,7 @@ public abstract class Oscillator extends InertialMass {
 
     /** @return the internal damping (REAL_UNITS: N·s/m). */
     public double getDamping() {
+        checkValid();
         return calls.massParam(id, stamp, MassParam.DAMPING);
     }
 

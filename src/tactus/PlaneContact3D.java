@@ -15,7 +15,7 @@ public final class PlaneContact3D extends ElasticInteraction {
 
     /** @return the plane's coordinate on its axis. */
     public double getPlanePosition() {
-        return calls.linkParam(id, LinkParam.PLANE_POSITION);
+        return param(LinkParam.PLANE_POSITION);
     }
 
     /** Moves the plane along its axis. */
@@ -26,6 +26,6 @@ public final class PlaneContact3D extends ElasticInteraction {
 
     /** @return the plane's axis: 0 (x), 1 (y) or 2 (z). */
     public int getOrientation() {
-        return (int) calls.linkParam(id, LinkParam.PLANE_AXIS);
+        return (int) param(LinkParam.PLANE_AXIS);
     }
 }
