@@ -27,13 +27,13 @@ public abstract class Interaction extends Module {
     /** @return the handle of the first mass. */
     public Mass getMass1() {
         checkValid();
-        return handles.massAt(calls.linkEnd(id, false));
+        return calls.read(() -> handles.mass(calls.linkEnd(id, false)));
     }
 
     /** @return the handle of the second mass (the same as the first for a plane contact). */
     public Mass getMass2() {
         checkValid();
-        return handles.massAt(calls.linkEnd(id, true));
+        return calls.read(() -> handles.mass(calls.linkEnd(id, true)));
     }
 
     /** @return the current distance between the two masses (for a plane contact, the gap to the plane). */

@@ -50,7 +50,7 @@ final class ModuleHandles implements ModuleListener {
 
     /**
      * Returns the handle of a mass id that a call of the model just returned, typed as the caller declares it (the
-     * id's kind decides the handle's class).
+     * id's kind decides the handle's class). Called inside the model (a read), the id and its handle agree.
      */
     @SuppressWarnings("unchecked")
     synchronized <T extends Mass> T mass(int id) {
@@ -72,16 +72,6 @@ final class ModuleHandles implements ModuleListener {
             throw new IllegalStateException("the interaction was removed by another thread meanwhile");
         }
         return (T) l;
-    }
-
-    /** Returns the handle of a mass id and stamp a handle's call returned ({@link ModuleCalls#linkEnd}). */
-    synchronized Mass massAt(long idAndStamp) {
-        int id = (int) (idAndStamp >>> 32);
-        Mass m = id < masses.length ? masses[id] : null;
-        if (m == null || m.stamp != (int) idAndStamp) {
-            throw new IllegalStateException("the mass was removed or made fixed by another thread meanwhile");
-        }
-        return m;
     }
 
     /** Returns the name of a mass handle given to {@code op}, checking that it belongs to this model and is live. */

@@ -675,17 +675,17 @@ public class PhysicalModel {
 
     /** @return the handle of a mass by name. */
     public Mass getMass(String name) {
-        return handles.mass(query.getMass(name));
+        return query.read(() -> handles.mass(query.getMass(name))); // the id and its handle, read together
     }
 
     /** @return the handle of the first interaction with this name. */
     public Interaction getInteraction(String name) {
-        return handles.link(query.getInteraction(name));
+        return query.read(() -> handles.link(query.getInteraction(name)));
     }
 
     /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
     public Interaction getInteractionAt(int i) {
-        return handles.link(query.getInteractionAt(i));
+        return query.read(() -> handles.link(query.getInteractionAt(i)));
     }
 
     /** @return the name of the mass at an index. */

@@ -168,16 +168,12 @@ public final class ModuleCalls extends Calls {
         }
     }
 
-    /**
-     * @return the id of the first ({@code second} false) or second mass of an interaction, and its stamp, packed as
-     *     {@code id << 32 | stamp} (read together, inside the model)
-     */
-    public long linkEnd(int id, boolean second) {
+    /** @return the id of the first ({@code second} false) or second mass of an interaction. */
+    public int linkEnd(int id, boolean second) {
         enter();
         try {
             link(id);
-            int m = second ? core.engine.linkMassB(id) : core.engine.linkMassA(id);
-            return ((long) m << 32) | (core.dir.massStamp(m) & 0xffffffffL);
+            return second ? core.engine.linkMassB(id) : core.engine.linkMassA(id);
         } finally {
             exit();
         }

@@ -18,6 +18,10 @@ public final class Directory {
     private final ModuleListener listener;
     /** Per mass id: its stamp (0 before it joined), see {@link #massStamp}. */
     private int[] massStamps = new int[16];
+    /** Per mass id: true once it left the model (ids are never reused). */
+    private boolean[] massGone = new boolean[16];
+    /** Per interaction id: true while it is part of the model. */
+    private boolean[] linkLive = new boolean[16];
 
     public Directory(Engine engine, ModuleListener listener) {
         this.engine = engine;
@@ -107,14 +111,14 @@ public final class Directory {
 
     /** Throws the handle's {@code IllegalStateException} unless mass {@code id} is live under {@code stamp}. */
     public void checkMass(int id, int stamp) {
-        if (mats.name(id) == null || massStamp(id) != stamp) {
+        if (massStamp(id) != stamp || massGone[id]) {
             throw gone("mass");
         }
     }
 
     /** Throws the handle's {@code IllegalStateException} unless interaction {@code id} is live. */
     public void checkLink(int id) {
-        if (links.name(id) == null) {
+        if (id >= linkLive.length || !linkLive[id]) {
             throw gone("interaction");
         }
     }
@@ -133,6 +137,7 @@ public final class Directory {
     public void retypeMass(int id, MassKind kind) {
         if (id >= massStamps.length) {
             massStamps = Arrays.copyOf(massStamps, Math.max(id + 1, massStamps.length * 2));
+            massGone = Arrays.copyOf(massGone, massStamps.length);
         }
         if (massStamps[id] != 0) {
             listener.massGone(id);
@@ -143,24 +148,32 @@ public final class Directory {
 
     public void registerLink(String name, int id, LinkKind kind) {
         links.add(name, id);
+        if (id >= linkLive.length) {
+            linkLive = Arrays.copyOf(linkLive, Math.max(id + 1, linkLive.length * 2));
+        }
+        linkLive[id] = true;
         listener.linkAdded(id, kind);
     }
 
     public void forgetMass(int id) {
         mats.remove(id);
+        massGone[id] = true;
         listener.massGone(id);
     }
 
     public void forgetLink(int id) {
         links.remove(id);
+        linkLive[id] = false;
         listener.linkGone(id);
     }
 
     public void clear() {
         for (int id : mats.ids()) {
+            massGone[id] = true;
             listener.massGone(id);
         }
         for (int id : links.ids()) {
+            linkLive[id] = false;
             listener.linkGone(id);
         }
         mats.clear();
