@@ -1,6 +1,7 @@
 package tactus;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
@@ -21,7 +22,8 @@ import org.junit.jupiter.params.provider.CsvSource;
  * steps the model in bursts, a run of setters through handles returns while the stepping thread is in the middle of
  * a burst (it never waits for the audio thread), and each change reaches the stepping thread between the same two
  * samples as the change made through {@link PhysicalModel}: the two stepped trajectories are equal bit for bit.
- * Varied: the burst size, the number of setters, and the kind of handle (masses or interactions).
+ * Getters still see the setters made before them. Varied: the burst size, the number of setters, and the kind of
+ * handle (masses or interactions).
  */
 class HandleSetterDoorTest {
     private static final Duration BOUND = Duration.ofSeconds(60);
@@ -237,6 +239,15 @@ class HandleSetterDoorTest {
                 }
                 best = Math.min(best, System.nanoTime() - t0);
                 Thread.sleep(pause / 1_000_000 + 1);
+            }
+            // reads keep their meaning: a getter after a setter waits for the change and sees it
+            for (int i = 0; i < 5; i++) {
+                double k = 0.02 + 0.001 * i;
+                h.s.setStiffness(k);
+                h.o.setStiffness(k / 10);
+                assertEquals(k, h.s.getStiffness(), "the handle's getter sees the handle's last setter");
+                assertEquals(k, pm.getLinkStiffness("s"), "the model's getter sees the handle's last setter");
+                assertEquals(k / 10, h.o.getStiffness(), "the oscillator's getter sees its last setter");
             }
             stop.set(true);
             audio.join(10_000);
