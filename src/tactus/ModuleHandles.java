@@ -13,11 +13,16 @@ import tactus.internal.model.ModuleListener;
 final class ModuleHandles implements ModuleListener {
     /** The calls every handle of this model makes (set once by the model, before its first module is added). */
     ModuleCalls calls;
-    private Mass[] masses = new Mass[16];
-    private Interaction[] links = new Interaction[16];
+    /**
+     * The handles by id. Written only inside a structural change (under the model's lock, or on the stepping thread
+     * while the caller holds the lock and waits), read after one or under the lock: no monitor, so the stepping
+     * thread never waits here. Volatile so that a grown array is published whole.
+     */
+    private volatile Mass[] masses = new Mass[16];
+    private volatile Interaction[] links = new Interaction[16];
 
     @Override
-    public synchronized void massAdded(int id, MassKind kind, int stamp) {
+    public void massAdded(int id, MassKind kind, int stamp) {
         if (id >= masses.length) {
             masses = java.util.Arrays.copyOf(masses, Math.max(id + 1, masses.length * 2));
         }
@@ -25,7 +30,7 @@ final class ModuleHandles implements ModuleListener {
     }
 
     @Override
-    public synchronized void linkAdded(int id, LinkKind kind) {
+    public void linkAdded(int id, LinkKind kind) {
         if (id >= links.length) {
             links = java.util.Arrays.copyOf(links, Math.max(id + 1, links.length * 2));
         }
@@ -33,7 +38,7 @@ final class ModuleHandles implements ModuleListener {
     }
 
     @Override
-    public synchronized void massGone(int id) {
+    public void massGone(int id) {
         if (id < masses.length && masses[id] != null) {
             masses[id].invalidate();
             masses[id] = null;
@@ -41,7 +46,7 @@ final class ModuleHandles implements ModuleListener {
     }
 
     @Override
-    public synchronized void linkGone(int id) {
+    public void linkGone(int id) {
         if (id < links.length && links[id] != null) {
             links[id].invalidate();
             links[id] = null;
@@ -53,8 +58,9 @@ final class ModuleHandles implements ModuleListener {
      * id's kind decides the handle's class). Called inside the model (a read), the id and its handle agree.
      */
     @SuppressWarnings("unchecked")
-    synchronized <T extends Mass> T mass(int id) {
-        Mass m = id < masses.length ? masses[id] : null;
+    <T extends Mass> T mass(int id) {
+        Mass[] all = masses;
+        Mass m = id < all.length ? all[id] : null;
         if (m == null) {
             throw new IllegalStateException("the mass was removed by another thread meanwhile");
         }
@@ -63,11 +69,12 @@ final class ModuleHandles implements ModuleListener {
 
     /** Returns the handle of an interaction id a call just returned, or null for -1 (nothing was added). */
     @SuppressWarnings("unchecked")
-    synchronized <T extends Interaction> T link(int id) {
+    <T extends Interaction> T link(int id) {
         if (id < 0) {
             return null;
         }
-        Interaction l = id < links.length ? links[id] : null;
+        Interaction[] all = links;
+        Interaction l = id < all.length ? all[id] : null;
         if (l == null) {
             throw new IllegalStateException("the interaction was removed by another thread meanwhile");
         }
