@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.pantograph.PantographDevice;
+
 /**
  * A haptic device as the {@link HapticLoop} sees it: the handle's position and velocity in metres (device axes)
  * in, a force in newtons out, one exchange per tick. Implemented by {@link PantographDevice} (the 2-DoF Haply

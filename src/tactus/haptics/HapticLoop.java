@@ -6,6 +6,12 @@ import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Pattern;
 import tactus.scheduling.RealtimeThreads;
+import tactus.haptics.loop.DecoupledAvatar;
+import tactus.haptics.loop.HeapWarmup;
+import tactus.haptics.loop.WindowHistogram;
+import tactus.haptics.pantograph.PantographDevice;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.passivity.HapticPort;
 
 /**
  * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,

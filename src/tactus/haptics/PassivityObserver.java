@@ -30,11 +30,11 @@ public final class PassivityObserver {
     private volatile long activeTicks;
     private volatile double damping;
 
-    PassivityObserver() {
+    public PassivityObserver() {
     }
 
     /** Clears every figure (the loop calls it when it starts). */
-    void reset() {
+    public void reset() {
         lastTick = 0;
         energyIn = 0;
         energyOut = 0;
@@ -48,7 +48,7 @@ public final class PassivityObserver {
      * Records one tick: the energy that entered the model through the port since the last tick (J; negative when the
      * model gave energy to the hand) and the part of it the controller's damper dissipated (J).
      */
-    void record(double intoModel, double damperDissipated) {
+    public void record(double intoModel, double damperDissipated) {
         lastTick = intoModel;
         if (intoModel >= 0) {
             energyIn = energyIn + intoModel;
@@ -60,7 +60,7 @@ public final class PassivityObserver {
     }
 
     /** Records the damping (N s/m) the controller added at this tick's command, 0 when it was inactive. */
-    void damping(double added) {
+    public void damping(double added) {
         damping = added;
         if (added > 0) {
             activeTicks = activeTicks + 1;

@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.passivity.HapticPort;
+
 /**
  * For measurements: a {@link HapticPort} (the passivity observer and controller, a coupling, friction compensation)
  * run around an {@link AvatarLink} instead of inside the {@link HapticLoop}, for rigs that run the loop in lockstep

@@ -1,7 +1,10 @@
-package tactus.haptics;
+package tactus.haptics.loop;
 
 import java.lang.invoke.VarHandle;
 import java.util.concurrent.locks.LockSupport;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.PhysicalModelAvatar;
 
 /**
  * An {@link AvatarLink} that never makes the haptic thread wait for the model: a helper thread does the

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.loop;
 
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
@@ -12,7 +12,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * real-time scheduling starts: short-lived garbage, until the collectors have counted {@link #COLLECTIONS} more
  * collections, or {@link #MAX_BYTES} were allocated (see docs/haptics.md, "What a sketch's garbage costs the hand").
  */
-final class HeapWarmup {
+public final class HeapWarmup {
     /** How many collections the warm-up waits for. */
     static final int COLLECTIONS = 3;
     /** The most garbage the warm-up makes, bytes (about 0.1-0.3 s of allocation). */
@@ -30,7 +30,7 @@ final class HeapWarmup {
      *
      * @return the collections counted during this call (0 when it did nothing, -1 if the count is unavailable)
      */
-    static int once() {
+    public static int once() {
         if (!DONE.compareAndSet(false, true)) {
             return 0;
         }

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.loop;
 
 /**
  * A histogram of the last {@code window} durations (nanoseconds) recorded by one writer thread, from which any
@@ -11,7 +11,7 @@ package tactus.haptics;
  * writer sees counts that may be off by the few samples recorded during its scan: these are statistics, not
  * state.
  */
-final class WindowHistogram {
+public final class WindowHistogram {
     private static final int SUB_BITS = 6;
     private static final int SUB = 1 << SUB_BITS;
     /** Enough buckets for any non-negative long. */
@@ -23,7 +23,7 @@ final class WindowHistogram {
     private volatile long recorded;
 
     /** @param window the number of most recent samples kept (a power of two, at most 2^30) */
-    WindowHistogram(int window) {
+    public WindowHistogram(int window) {
         if (window <= 0 || Integer.bitCount(window) != 1 || window > (1 << 30)) {
             throw new IllegalArgumentException("WindowHistogram: window must be a power of two, got " + window);
         }
@@ -53,7 +53,7 @@ final class WindowHistogram {
     }
 
     /** Records one duration (writer thread only). */
-    void record(long nanos) {
+    public void record(long nanos) {
         long n = recorded;
         int slot = (int) (n & mask);
         if (n > mask) {
@@ -74,7 +74,7 @@ final class WindowHistogram {
      * The q-quantile of the samples in the window, as the lower edge of its bucket, in nanoseconds (0 when the
      * window is empty). {@code q} in [0, 1]; the rank is ceil(q n), as for a sorted copy of the window.
      */
-    long percentile(double q) {
+    public long percentile(double q) {
         int n = size();
         if (n == 0) {
             return 0;

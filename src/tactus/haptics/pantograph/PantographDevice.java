@@ -1,4 +1,11 @@
-package tactus.haptics;
+package tactus.haptics.pantograph;
+
+import tactus.haptics.Board;
+import tactus.haptics.BoardModel;
+import tactus.haptics.Device;
+import tactus.haptics.HapticDevice;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.WorkspaceMapping;
 
 /**
  * The 2-DoF Haply (2DIY, and the 2018 dev kit) as a {@link HapticDevice}: a set-up {@link Device} on its

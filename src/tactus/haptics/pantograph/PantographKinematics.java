@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.pantograph;
 
 /**
  * Kinematics of the Haply 2-DoF pantograph (a symmetric five-bar linkage), in double precision.

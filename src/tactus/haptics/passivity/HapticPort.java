@@ -1,4 +1,10 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
+
+import tactus.haptics.FrictionCompensation;
+import tactus.haptics.HapticDevice;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.PassivityObserver;
+import tactus.haptics.VirtualCoupling;
 
 /**
  * What sits between the device and the avatar in a {@link HapticLoop}, in the device's units (metres, newtons, along
@@ -9,7 +15,7 @@ package tactus.haptics;
  * {@link #sent} with the share of it that went out. One thread (the loop's) calls these; the switches may be
  * flipped from any thread. Nothing here allocates or locks.
  */
-final class HapticPort {
+public final class HapticPort {
     private final PassivityObserver observer = new PassivityObserver();
     private final PassivityController controller = new PassivityController();
     private volatile boolean controlOn;
@@ -24,7 +30,7 @@ final class HapticPort {
     private final double[] velocity = new double[3];   // backward difference, m/s
     private final double[] portForce = new double[3];  // the force at the port this tick (coupling, model, damper), N
     /** The most ticks of exchange delay the account can follow. */
-    static final int MAX_DELAY = 8;
+    public static final int MAX_DELAY = 8;
     private final double[][] sentPort = new double[MAX_DELAY + 1][3];   // the port's forces as sent, N (a ring)
     private final double[][] sentDamper = new double[MAX_DELAY + 1][3]; // the controller's part of them, N
     private int delay;
@@ -40,7 +46,7 @@ final class HapticPort {
     private double frictionZ;
 
     /** The largest bound on late answers (ticks) the account can follow. */
-    static final int MAX_LATE = 16;
+    public static final int MAX_LATE = 16;
     /** Ticks of sent forces kept for the late-answer account: a state gap longer than this is charged to these only. */
     private static final int HISTORY = 64;
     private int late;                                            // the bound W on late answers, ticks; 0: off
@@ -50,23 +56,23 @@ final class HapticPort {
     private long lastFresh;                                     // sentCount when the last new state was read
     private double lateSpan = 1;                                // ticks the next charged displacement will span
 
-    PassivityObserver observer() {
+    public PassivityObserver observer() {
         return observer;
     }
 
-    void setControl(boolean on) {
+    public void setControl(boolean on) {
         controlOn = on;
     }
 
-    boolean isControl() {
+    public boolean isControl() {
         return controlOn;
     }
 
-    void setDampingLimit(double nsPerM) {
+    public void setDampingLimit(double nsPerM) {
         controller.setDampingLimit(nsPerM);
     }
 
-    double dampingLimit() {
+    public double dampingLimit() {
         return controller.dampingLimit();
     }
 
@@ -74,25 +80,25 @@ final class HapticPort {
      * Sets the coupling (null: none), at any time: the loop's thread takes it at its next {@link #sense}, with the
      * proxy placed at the handle and moving with it (the coupling then pulls with zero force: bumpless).
      */
-    void setCoupling(VirtualCoupling c) {
+    public void setCoupling(VirtualCoupling c) {
         coupling = c;
     }
 
     /** Caps the energy (J, >= 0, infinite: no cap) the controller may hold in reserve; see {@link PassivityController}. */
-    void setReserveLimit(double joules) {
+    public void setReserveLimit(double joules) {
         controller.setReserveLimit(joules);
     }
 
-    double reserveLimit() {
+    public double reserveLimit() {
         return controller.reserveLimit();
     }
 
     /** Lets the port run a deficit of this much (J, >= 0) before the controller damps; see {@link PassivityController}. */
-    void setTolerance(double joules) {
+    public void setTolerance(double joules) {
         controller.setTolerance(joules);
     }
 
-    double tolerance() {
+    public double tolerance() {
         return controller.tolerance();
     }
 
@@ -101,11 +107,11 @@ final class HapticPort {
      * {@link #MAX_DELAY}; default 0): the account then charges each displacement to the force that was acting over it.
      * Only before {@link #start}.
      */
-    void setDelay(int ticks) {
+    public void setDelay(int ticks) {
         delay = ticks;
     }
 
-    int delay() {
+    public int delay() {
         return delay;
     }
 
@@ -116,28 +122,28 @@ final class HapticPort {
      * ticks before the earlier state to d ticks before the later one). Off, the account is the fixed-delay one. Only
      * before {@link #start}.
      */
-    void setLateBound(int ticks) {
+    public void setLateBound(int ticks) {
         late = ticks;
     }
 
-    int lateBound() {
+    public int lateBound() {
         return late;
     }
 
-    VirtualCoupling coupling() {
+    public VirtualCoupling coupling() {
         return coupling;
     }
 
-    void setFriction(FrictionCompensation f) {
+    public void setFriction(FrictionCompensation f) {
         friction = f;
     }
 
-    FrictionCompensation friction() {
+    public FrictionCompensation friction() {
         return friction;
     }
 
     /** Clears the state and the observer's figures, for a loop of this period (s). */
-    void start(double periodSeconds) {
+    public void start(double periodSeconds) {
         period = periodSeconds;
         havePrevious = false;
         for (int i = 0; i < 3; i++) {
@@ -169,7 +175,7 @@ final class HapticPort {
      * The handle is at (x, y, z) m this tick: accounts for the energy the last force exchanged over the displacement,
      * and writes where the avatar must go (m, device axes) into target[0..2]: the handle, or the coupling's proxy.
      */
-    void sense(double x, double y, double z, double[] target) {
+    public void sense(double x, double y, double z, double[] target) {
         sense(x, y, z, true, target);
     }
 
@@ -178,7 +184,7 @@ final class HapticPort {
      * with a bound on late answers ({@link #setLateBound}) a tick whose state is not new adds no work; without one it
      * makes no difference.
      */
-    void sense(double x, double y, double z, boolean fresh, double[] target) {
+    public void sense(double x, double y, double z, boolean fresh, double[] target) {
         position[0] = x;
         position[1] = y;
         position[2] = z;
@@ -293,7 +299,7 @@ final class HapticPort {
      * The model pushes the avatar with f (N, device axes); replaces f with the force to send: through the coupling
      * when there is one, plus the controller's damper when it is on, plus the friction compensation when set.
      */
-    void command(double[] f) {
+    public void command(double[] f) {
         VirtualCoupling c = active;
         if (c != null) {
             double k = c.stiffness();
@@ -355,7 +361,7 @@ final class HapticPort {
      * The force returned by {@link #command} went out scaled by this factor (1 as commanded, a torque gain, a limit's
      * scale, or 0 when the loop sent zero instead): records the port's part of it for the next tick's account.
      */
-    void sent(double scale) {
+    public void sent(double scale) {
         double[] f = sentPort[slot];
         double[] d = sentDamper[slot];
         for (int i = 0; i < 3; i++) {

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 /**
  * The time-domain passivity controller (Hannaford &amp; Ryu 2002; Ryu, Kim &amp; Hannaford 2004), impedance form: an

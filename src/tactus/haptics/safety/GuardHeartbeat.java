@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import java.io.IOException;
 import java.lang.invoke.MethodHandles;
@@ -24,7 +24,7 @@ import java.nio.file.StandardOpenOption;
  *
  * <p>The values are only compared for change, never across processes as times.
  */
-final class GuardHeartbeat {
+public final class GuardHeartbeat {
     /** Size of the shared file in bytes. */
     static final int SIZE = 64;
     static final long MAGIC = 0x7461637475734842L;   // "tactusHB"
@@ -93,7 +93,7 @@ final class GuardHeartbeat {
     }
 
     /** True unless this is {@link #NONE}. */
-    boolean isShared() {
+    public boolean isShared() {
         return buf != null;
     }
 
@@ -116,21 +116,21 @@ final class GuardHeartbeat {
     // ---------------------------------------------------------------------------- the sketch's JVM writes
 
     /** A sign of life: stores the time now (ns) as the heartbeat. One memory store, no system call. */
-    void beat(long nanos) {
+    public void beat(long nanos) {
         if (buf != null) {
             LONGS.setOpaque(buf, OFF_BEAT, nanos);
         }
     }
 
     /** Says whether a non-zero torque is on the motors (only then does the guard watch the heartbeat). */
-    void arm(boolean on) {
+    public void arm(boolean on) {
         if (buf != null) {
             LONGS.setOpaque(buf, OFF_ARMED, on ? 1L : 0L);
         }
     }
 
     /** The number of zero-torque writes the guard has made (or is about to make) to the board. */
-    long guardWrites() {
+    public long guardWrites() {
         return buf == null ? 0 : (long) LONGS.getAcquire(buf, OFF_GUARD_WRITES);
     }
 

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
+import tactus.haptics.Board;
 
 /**
  * The motor guard: a small process that zeroes a Haply board's motors when the JVM driving them ends without
@@ -32,8 +33,8 @@ import java.util.Optional;
 public final class MotorGuard {
     /** First line the parent sends: names the protocol and its version. */
     static final String HELLO = "tactus-motor-guard 1";
-    /** How long the guard may spend acting before it halts, in milliseconds. */
-    static final long ACT_LIMIT_MS = 3_000;
+    /** How long the guard may spend acting before it halts, in milliseconds. Not API: read by the board's tests. */
+    public static final long ACT_LIMIT_MS = 3_000;
     private static final long PARENT_POLL_MS = 250;
 
     private final Map<Integer, int[]> devices = new LinkedHashMap<>();   // id -> {writeBytes, replyBytes}

@@ -1,9 +1,12 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
 import java.nio.file.Paths;
 import java.util.List;
+import tactus.haptics.Device;
+import tactus.haptics.transport.SerialTransport;
+import tactus.haptics.transport.Transport;
 
 /**
  * The board's side of the {@link MotorGuard}: starts the guard process when a board opens a serial port (before
@@ -13,7 +16,7 @@ import java.util.List;
  * Starting or talking to the guard never fails the board: a failure prints one warning and the board runs
  * without the guard.
  */
-final class MotorGuardLink {
+public final class MotorGuardLink {
     /** System property that turns the guard off when "false" (default on). */
     static final String PROPERTY = "tactus.motorGuard";
     /** The link of a board without a guard (in-process transports, or the guard turned off). */
@@ -47,11 +50,11 @@ final class MotorGuardLink {
     }
 
     /** A serial port opened with its guard. */
-    static final class Opened {
-        final SerialTransport transport;
-        final MotorGuardLink guard;
+    public static final class Opened {
+        public final SerialTransport transport;
+        public final MotorGuardLink guard;
 
-        Opened(SerialTransport transport, MotorGuardLink guard) {
+        public Opened(SerialTransport transport, MotorGuardLink guard) {
             this.transport = transport;
             this.guard = guard;
         }
@@ -62,7 +65,7 @@ final class MotorGuardLink {
      * holds the port open for writing, then opens the port (so that the guard's descriptor exists before an
      * exclusive open could refuse it). Throws as {@link SerialTransport#open} does, with the guard told to leave.
      */
-    static Opened openPort(String portName, int baud) {
+    public static Opened openPort(String portName, int baud) {
         MotorGuardLink link = NONE;
         boolean windows = System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).startsWith("windows");
         String path = systemPath(portName);
@@ -79,7 +82,7 @@ final class MotorGuardLink {
     }
 
     /** Turns the guard on or off for boards opened from now on (the property {@value #PROPERTY} sets the default). */
-    static void setEnabled(boolean on) {
+    public static void setEnabled(boolean on) {
         enabled = on;
     }
 
@@ -106,7 +109,7 @@ final class MotorGuardLink {
      * when turned off. The guard opens the port for writing after the transport (which works with jSerialComm,
      * whose open takes an advisory lock only).
      */
-    static MotorGuardLink watch(Transport transport) {
+    public static MotorGuardLink watch(Transport transport) {
         if (!enabled || !(transport instanceof SerialTransport)) {
             return NONE;
         }
@@ -158,12 +161,12 @@ final class MotorGuardLink {
     }
 
     /** The memory shared with the guard ({@link GuardHeartbeat#NONE} without a guard). */
-    GuardHeartbeat heartbeat() {
+    public GuardHeartbeat heartbeat() {
         return heartbeat;
     }
 
     /** Tells the guard a device's setup: its id, the length of its write message and of the board's reply. */
-    void deviceConfigured(Device device) {
+    public void deviceConfigured(Device device) {
         byte[] zeros = device.zeroMessage();
         if (zeros != null) {
             send("device " + (device.id() & 0xFF) + " " + zeros.length + " " + device.replyBytes());
@@ -174,7 +177,7 @@ final class MotorGuardLink {
      * Ends the link. With motorsZeroed the guard exits at once; otherwise it zeroes the motors itself now
      * (the board has let go of the port).
      */
-    synchronized void release(boolean motorsZeroed) {
+    public synchronized void release(boolean motorsZeroed) {
         if (guard == null || !guard.isOpen()) {
             return;
         }
@@ -186,8 +189,8 @@ final class MotorGuardLink {
         guard.closeInput();
     }
 
-    /** The guard process, or null for {@link #NONE} (for tests). */
-    Process process() {
+    /** The guard process, or null for {@link #NONE}. Not API: a test hook. */
+    public Process process() {
         return guard == null ? null : guard.process();
     }
 

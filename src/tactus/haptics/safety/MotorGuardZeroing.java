@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import com.fazecast.jSerialComm.SerialPort;
 import java.nio.file.Files;
@@ -7,6 +7,7 @@ import java.nio.file.Paths;
 import java.util.Arrays;
 import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
+import tactus.haptics.transport.WireFormat;
 
 /**
  * What the {@link MotorGuard} does once its parent is gone: opens the port, sends every device a write with

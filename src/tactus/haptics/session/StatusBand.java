@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.session;
 
 import processing.core.PApplet;
 
@@ -6,12 +6,12 @@ import processing.core.PApplet;
  * The status line a haptic session draws at the bottom-left of the window: on a band whose colour says whether the
  * device is real, emulated or in trouble, whatever the sketch's transforms, camera and styles (all restored).
  */
-final class StatusBand {
+public final class StatusBand {
     private StatusBand() {
     }
 
     /** Draws {@code text} on its band: red when {@code trouble}, slate for an emulator, green for a device. */
-    static void draw(PApplet app, String text, boolean trouble, boolean emulated) {
+    public static void draw(PApplet app, String text, boolean trouble, boolean emulated) {
         boolean threeD = app.g.is3D();
         app.pushMatrix();
         app.pushStyle();

@@ -1,9 +1,11 @@
-package tactus.haptics;
+package tactus.haptics.transport;
 
 import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
+import tactus.haptics.Board;
+import tactus.haptics.HaplyLinkException;
 
 /**
  * A {@link Transport} over a serial port through jSerialComm. Works with USB CDC boards and with
@@ -85,7 +87,7 @@ public final class SerialTransport implements Transport {
      * Registers a JVM shutdown hook that runs before jSerialComm closes the open ports from its own shutdown
      * hook (with {@code Runtime.addShutdownHook} the two would run in no set order).
      */
-    static void runBeforePortsClose(Thread hook) {
+    public static void runBeforePortsClose(Thread hook) {
         SerialPort.addShutdownHook(hook);
     }
 
@@ -177,7 +179,7 @@ public final class SerialTransport implements Transport {
     }
 
     /** The baud rate the port was opened with. */
-    int baudRate() {
+    public int baudRate() {
         return port.getBaudRate();
     }
 

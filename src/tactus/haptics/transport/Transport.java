@@ -1,7 +1,8 @@
-package tactus.haptics;
+package tactus.haptics.transport;
 
 import java.io.IOException;
 import java.util.concurrent.locks.LockSupport;
+import tactus.haptics.Board;
 
 /**
  * A byte link to a Haply board: a serial port ({@link SerialTransport}), an in-process board emulator, or

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.transport;
 
 /**
  * The Haply V2 wire protocol: message codes and little-endian IEEE-754 float32 encoding.

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.loop;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.Test;
+import tactus.haptics.AvatarLink;
 
 /** The decoupled avatar: the haptic side never waits, and no force is lost or counted twice. */
 class DecoupledAvatarTest {

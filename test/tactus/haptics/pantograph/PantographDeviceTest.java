@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.pantograph;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,6 +9,13 @@ import org.junit.jupiter.api.Test;
 
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.Board;
+import tactus.haptics.BoardModel;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.HapticDevice;
+import tactus.haptics.HapticLoop;
 
 /**
  * The 2DIY through the common {@link HapticDevice} interface: position in metres from the kinematics, force in

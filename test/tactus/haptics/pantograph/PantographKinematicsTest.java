@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.pantograph;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.Pantograph;
 
 /** Forward kinematics and J^T torques against the reference vectors and against finite differences. */
 class PantographKinematicsTest {

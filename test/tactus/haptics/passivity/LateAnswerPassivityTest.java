@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -8,6 +8,9 @@ import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.haptics.HapticDevice;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.NoForceAvatar;
 
 /**
  * The passivity port on a 3-DoF device whose answers come late by a varying number of ticks, in simulated time: a

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -8,6 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.FrictionCompensation;
+import tactus.haptics.NoForceAvatar;
+import tactus.haptics.PassivityObserver;
+import tactus.haptics.VirtualCoupling;
 
 /**
  * The passivity observer, the time-domain passivity controller and the virtual coupling, on one axis of the emulator's

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -15,6 +15,19 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.Board;
+import tactus.haptics.BoardModel;
+import tactus.haptics.Device;
+import tactus.haptics.FrictionCompensation;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.HapticDevice;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticLoopAllocationTest;
+import tactus.haptics.NoForceAvatar;
+import tactus.haptics.PassivityObserver;
+import tactus.haptics.VirtualCoupling;
+import tactus.haptics.WorkspaceMapping;
 
 /**
  * The passivity observer and controller, the virtual coupling and the friction compensation inside a running

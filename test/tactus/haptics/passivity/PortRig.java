@@ -1,8 +1,10 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.paramSystem;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.PhysicalModelAvatar;
 
 /**
  * Test fixture: a {@link HapticPort} between a {@link SampledPlant} and a REAL_UNITS model whose avatar (no smoothing)

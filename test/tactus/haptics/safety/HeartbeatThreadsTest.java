@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;

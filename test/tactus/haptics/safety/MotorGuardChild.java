@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
@@ -6,6 +6,11 @@ import java.nio.charset.StandardCharsets;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.Board;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.HapticLoop;
 
 /**
  * A program for {@link MotorGuardTest} (not a test): a hAPI-style sketch without a window. It opens a board

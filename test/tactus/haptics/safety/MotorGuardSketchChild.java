@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import java.awt.Component;
 import java.awt.EventQueue;
@@ -12,6 +12,9 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import processing.core.PApplet;
+import tactus.haptics.Board;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyPreset;
 
 /**
  * A program for {@link MotorGuardSketchTest} (not a test): a Processing sketch with a window (run it under

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import java.util.List;
 import java.util.concurrent.TimeUnit;

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -12,6 +12,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.Board;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.transport.SerialTransport;
 
 /**
  * Every way a sketch's JVM can end leaves the motors at duty 0: a sketch-like child JVM pushes with a constant

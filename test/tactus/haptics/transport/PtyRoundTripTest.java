@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.transport;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -11,6 +11,11 @@ import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.Board;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyLinkException;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.Pantograph;
 
 /** The emulator over a real pseudo-terminal made by socat, through jSerialComm: the serial code path. */
 class PtyRoundTripTest {

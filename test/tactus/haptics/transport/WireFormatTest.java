@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.transport;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

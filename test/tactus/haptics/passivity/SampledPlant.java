@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
 
 import tactus.haptics.emulator.CartesianPlantKinematics;
 import tactus.haptics.emulator.DevicePlant;

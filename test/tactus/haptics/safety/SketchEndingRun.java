@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.haptics.safety;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -22,6 +22,9 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.transport.SerialTransport;
+import tactus.haptics.Board;
+import tactus.haptics.HaplyPreset;
 
 /**
  * For the motor-guard tests: a sketch-like child JVM driving the board emulator over a socat pty pair (the
