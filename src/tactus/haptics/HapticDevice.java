@@ -53,6 +53,27 @@ public interface HapticDevice extends AutoCloseable {
      */
     void sendForce(double fx, double fy, double fz);
 
+    /**
+     * Whether the device can render a force where its handle is now: false at a pose its kinematics cannot reach (the
+     * loop then counts a fault and sends zero force). The default is true.
+     */
+    default boolean canRender() {
+        return true;
+    }
+
+    /**
+     * The share of the last {@link #sendForce} that reached the handle (1: as asked; less when the device scaled it to
+     * its limits or applied a gain; 0 when it sent none), for the loop's passivity account. The default is 1.
+     */
+    default double renderedShare() {
+        return 1;
+    }
+
+    /** How many forces the device has scaled down to its limits since it was opened. The default is 0. */
+    default long limitedForces() {
+        return 0;
+    }
+
     /** Sends zero force, from any thread, best effort and bounded in time; never throws. */
     void zeroForce();
 

@@ -3,6 +3,7 @@ package tactus.haptics;
 import java.util.List;
 import java.util.function.DoubleFunction;
 import tactus.hapticstability.WallRig;
+import tactus.haptics.passivity.VirtualCoupling;
 
 /**
  * The controlled variants of the stability sweep (docs/haptics-stability.md): the time-domain passivity controller,

@@ -6,6 +6,7 @@ import tactus.hapticstability.StabilitySweep;
 import tactus.hapticstability.Touch;
 import tactus.hapticstability.WallRig;
 import tactus.haptics.emulator.PlantParameters;
+import tactus.haptics.passivity.VirtualCoupling;
 
 /**
  * Why the passivity controller alone loses the pen-grip wall (docs/haptics-stability.md, "Passivity control"): runs

@@ -1,6 +1,9 @@
 package tactus.haptics;
 
 import tactus.haptics.passivity.HapticPort;
+import tactus.haptics.passivity.FrictionCompensation;
+import tactus.haptics.passivity.PassivityObserver;
+import tactus.haptics.passivity.VirtualCoupling;
 
 /**
  * For measurements: a {@link HapticPort} (the passivity observer and controller, a coupling, friction compensation)

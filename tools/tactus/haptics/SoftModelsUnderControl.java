@@ -9,6 +9,7 @@ import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PlantParameters;
 import tactus.paramSystem;
+import tactus.haptics.passivity.PassivityObserver;
 
 /**
  * Does the passivity controller change how the paper's soft haptic examples feel? Runs the models of HeavyMassChain,

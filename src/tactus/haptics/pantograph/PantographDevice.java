@@ -14,8 +14,8 @@ import tactus.haptics.WorkspaceMapping;
  * torques tau = g J^T F, both scaled down by the same factor when one is above the torque limit (0.123 N m, the
  * firmware's clip, by default), so that the force keeps its direction. z is always 0 and fz is ignored.
  *
- * <p>The {@link HapticLoop} built on a {@code Device} (its first constructor) runs this same path inside its own
- * tick, with its board-level telemetry; this class lets any code drive the 2DIY through the common interface.
+ * <p>The {@link HapticLoop} built on a {@code Device} (its first constructor) drives the 2DIY through one of these,
+ * as it drives any other {@link HapticDevice}; this class also lets any code drive the 2DIY through the common interface.
  */
 public final class PantographDevice implements HapticDevice {
     private final Device device;
@@ -28,7 +28,10 @@ public final class PantographDevice implements HapticDevice {
     private double vx;
     private double vy;
     private long lastNanos;
-    private long limited;
+    private volatile long limited;
+    private double share = 1;
+    private volatile double torque1;
+    private volatile double torque2;
 
     /** Wraps a device (encoders 1, 2 give theta1, theta2; actuators 1, 2 take tau1, tau2) and its kinematics. */
     public PantographDevice(Device device, PantographKinematics kinematics) {
@@ -68,8 +71,29 @@ public final class PantographDevice implements HapticDevice {
     }
 
     /** How many forces were scaled down to the torque limit. */
+    @Override
     public long limitedForces() {
         return limited;
+    }
+
+    /** The torque in N m sent to joint j (1 or 2) by the last {@link #sendForce}. */
+    public double torque(int joint) {
+        return joint == 1 ? torque1 : torque2;
+    }
+
+    /** False before the first pose and at a pose the kinematics cannot reach (no force is rendered there). */
+    @Override
+    public boolean canRender() {
+        return !Double.isNaN(x) && kin.isValid();
+    }
+
+    /**
+     * The torque gain times the torque limit's scale at the last {@link #sendForce} (the force at the handle is
+     * g J^-T tau), 0 when it sent no force.
+     */
+    @Override
+    public double renderedShare() {
+        return share;
     }
 
     @Override
@@ -87,6 +111,10 @@ public final class PantographDevice implements HapticDevice {
         device.device_read_request();
     }
 
+    /**
+     * Takes the newest frame; true when one came. At a pose the kinematics cannot reach, the position stays the
+     * last reachable one and {@link #canRender()} is false until the handle is back.
+     */
     @Override
     public boolean update() {
         if (!device.poll_data()) {
@@ -95,7 +123,7 @@ public final class PantographDevice implements HapticDevice {
         double th1 = Math.toRadians(device.angle(1));
         double th2 = Math.toRadians(device.angle(2));
         if (!kin.forward(th1, th2)) {
-            return false;
+            return true;
         }
         long now = System.nanoTime();
         double nx = kin.x();
@@ -127,22 +155,33 @@ public final class PantographDevice implements HapticDevice {
 
     @Override
     public void sendForce(double fx, double fy, double fz) {
-        if (Double.isNaN(x) || !kin.isValid() || !Double.isFinite(fx) || !Double.isFinite(fy)) {
+        if (!canRender() || !Double.isFinite(fx) || !Double.isFinite(fy)) {
+            share = 0;
             write(0, 0);
+            return;
+        }
+        if (fx == 0 && fy == 0) {
+            share = torqueGain;
+            write(0, 0);                     // exact zeros (J^T 0 may give -0.0)
             return;
         }
         kin.torques(fx, fy, torqueGain, tau);
         double m = Math.max(Math.abs(tau[0]), Math.abs(tau[1]));
+        double scale = torqueGain;
         if (m > torqueLimit) {
             double s = torqueLimit / m;
             tau[0] *= s;
             tau[1] *= s;
+            scale *= s;
             limited++;
         }
+        share = scale;
         write(tau[0], tau[1]);
     }
 
     private void write(double t1, double t2) {
+        torque1 = t1;
+        torque2 = t2;
         device.set_actuator_torque(1, (float) t1);
         device.set_actuator_torque(2, (float) t2);
         device.device_write_torques();

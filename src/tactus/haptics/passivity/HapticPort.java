@@ -1,10 +1,7 @@
 package tactus.haptics.passivity;
 
-import tactus.haptics.FrictionCompensation;
 import tactus.haptics.HapticDevice;
 import tactus.haptics.HapticLoop;
-import tactus.haptics.PassivityObserver;
-import tactus.haptics.VirtualCoupling;
 
 /**
  * What sits between the device and the avatar in a {@link HapticLoop}, in the device's units (metres, newtons, along

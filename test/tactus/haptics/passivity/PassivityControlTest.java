@@ -9,10 +9,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import tactus.haptics.AvatarLink;
-import tactus.haptics.FrictionCompensation;
 import tactus.haptics.NoForceAvatar;
-import tactus.haptics.PassivityObserver;
-import tactus.haptics.VirtualCoupling;
 
 /**
  * The passivity observer, the time-domain passivity controller and the virtual coupling, on one axis of the emulator's

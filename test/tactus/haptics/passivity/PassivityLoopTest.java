@@ -19,14 +19,11 @@ import tactus.haptics.AvatarLink;
 import tactus.haptics.Board;
 import tactus.haptics.BoardModel;
 import tactus.haptics.Device;
-import tactus.haptics.FrictionCompensation;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticDevice;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.HapticLoopAllocationTest;
 import tactus.haptics.NoForceAvatar;
-import tactus.haptics.PassivityObserver;
-import tactus.haptics.VirtualCoupling;
 import tactus.haptics.WorkspaceMapping;
 
 /**

@@ -126,7 +126,7 @@ class MotorGuardPauseTest {
                 Sampler ramp = new Sampler(run);
                 List<ReferenceType> types = vm.classesByName(SerialTransport.class.getName());
                 assertEquals(1, types.size(), "SerialTransport is loaded");
-                int line = lineOf("src/tactus/haptics/SerialTransport.java", "done += Math.max(0, n);");
+                int line = lineOf("src/tactus/haptics/transport/SerialTransport.java", "done += Math.max(0, n);");
                 List<Location> at = types.get(0).locationsOfLine(line);
                 assertTrue(!at.isEmpty(), "a location at SerialTransport.java:" + line);
                 BreakpointRequest bp = vm.eventRequestManager().createBreakpointRequest(at.get(0));

@@ -1,4 +1,6 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
+
+import tactus.haptics.HapticLoop;
 
 /**
  * The passivity observer of a {@link HapticLoop}: the energy that flows through the haptic port, between the device
@@ -30,11 +32,11 @@ public final class PassivityObserver {
     private volatile long activeTicks;
     private volatile double damping;
 
-    public PassivityObserver() {
+    PassivityObserver() {
     }
 
     /** Clears every figure (the loop calls it when it starts). */
-    public void reset() {
+    void reset() {
         lastTick = 0;
         energyIn = 0;
         energyOut = 0;
@@ -48,7 +50,7 @@ public final class PassivityObserver {
      * Records one tick: the energy that entered the model through the port since the last tick (J; negative when the
      * model gave energy to the hand) and the part of it the controller's damper dissipated (J).
      */
-    public void record(double intoModel, double damperDissipated) {
+    void record(double intoModel, double damperDissipated) {
         lastTick = intoModel;
         if (intoModel >= 0) {
             energyIn = energyIn + intoModel;
@@ -60,7 +62,7 @@ public final class PassivityObserver {
     }
 
     /** Records the damping (N s/m) the controller added at this tick's command, 0 when it was inactive. */
-    public void damping(double added) {
+    void damping(double added) {
         damping = added;
         if (added > 0) {
             activeTicks = activeTicks + 1;

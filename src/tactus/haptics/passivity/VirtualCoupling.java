@@ -1,4 +1,6 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
+
+import tactus.haptics.HapticLoop;
 
 /**
  * A virtual coupling (Colgate, Stanley &amp; Brown 1995; Adams &amp; Hannaford 1999): a spring-damper between the handle

@@ -1,4 +1,6 @@
-package tactus.haptics;
+package tactus.haptics.passivity;
+
+import tactus.haptics.HapticLoop;
 
 /**
  * Friction compensation for the motors' torque threshold: a small force pushed along the handle's motion, so that the
