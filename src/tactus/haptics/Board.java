@@ -9,7 +9,6 @@ import java.util.concurrent.locks.ReentrantLock;
 import tactus.haptics.safety.GuardHeartbeat;
 import tactus.haptics.safety.MotorGuard;
 import tactus.haptics.safety.MotorGuardLink;
-import tactus.haptics.transport.SerialPorts;
 import tactus.haptics.transport.SerialTransport;
 import tactus.haptics.transport.Transport;
 import tactus.haptics.transport.WireFormat;

@@ -468,12 +468,18 @@ public class Device {
         }
     }
 
-    /** Length in bytes of this device's reply to a write (0 before the setup). */
+    /**
+     * Length in bytes of this device's reply to a write (0 before the setup). Not API: for the motor guard in
+     * {@code tactus.haptics.safety}.
+     */
     public int replyBytes() {
         return frame == null ? 0 : WireFormat.replyLength(frame.length);
     }
 
-    /** The write message with zero torques and zero PWM, or null before the setup. */
+    /**
+     * The write message with zero torques and zero PWM, or null before the setup. Not API: for the motor guard in
+     * {@code tactus.haptics.safety}.
+     */
     public byte[] zeroMessage() {
         return zeroMessage;
     }

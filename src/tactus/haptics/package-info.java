@@ -19,5 +19,12 @@
  * the {@link tactus.haptics.Board} zeroes the motors when its torque writes stop (50 ms by default), declares
  * a board that stops reading lost within a second, never lets a write block without a bound, and prints each
  * kind of failure once where it happens. The board emulator lives in {@code tactus.haptics.emulator}.
+ *
+ * <p>This package holds what a sketch names: the hAPI-compatible classes, the loop, the sessions, the devices and
+ * avatars. The rest sits in rooms beside it: {@code transport} (serial ports and the wire format), {@code safety}
+ * (the motor guard and its heartbeat), {@code loop} (the loop's machinery and the decoupled avatar), {@code passivity}
+ * (observer, controller, virtual coupling, friction compensation), {@code session} (what the sessions share),
+ * {@code pantograph} (the 2DIY's kinematics and device), {@code inverse} (the Inverse3 family) and {@code emulator}.
+ * A public class or member marked "Not API" is public only so that another room can reach it.
  */
 package tactus.haptics;

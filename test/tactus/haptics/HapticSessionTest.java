@@ -13,7 +13,6 @@ import org.junit.jupiter.api.Test;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.haptics.pantograph.PantographKinematics;
-import tactus.haptics.transport.SerialPorts;
 
 /** The session a sketch uses: board or emulator, device set up, a loop whose mapping fits the window. */
 class HapticSessionTest {

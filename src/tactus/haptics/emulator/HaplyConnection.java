@@ -3,7 +3,7 @@ package tactus.haptics.emulator;
 import tactus.haptics.Board;
 import tactus.haptics.HaplyLinkException;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.transport.SerialPorts;
+import tactus.haptics.SerialPorts;
 
 /**
  * A board for an example: the first Haply found, or else an emulated one whose hand follows a target (the

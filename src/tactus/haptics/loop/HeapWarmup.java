@@ -11,6 +11,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * sketch that makes garbage as it draws runs into them in its first seconds. Made once per JVM, when a loop with
  * real-time scheduling starts: short-lived garbage, until the collectors have counted {@link #COLLECTIONS} more
  * collections, or {@link #MAX_BYTES} were allocated (see docs/haptics.md, "What a sketch's garbage costs the hand").
+ *
+ * <p>Not API: public only for {@link tactus.haptics.HapticLoop}.
  */
 public final class HeapWarmup {
     /** How many collections the warm-up waits for. */

@@ -10,6 +10,8 @@ package tactus.haptics.loop;
  * no lock; {@link #percentile(double)} scans the counts (about 2,300 of them). A reader that runs beside the
  * writer sees counts that may be off by the few samples recorded during its scan: these are statistics, not
  * state.
+ *
+ * <p>Not API: public only for {@link tactus.haptics.HapticLoop}.
  */
 public final class WindowHistogram {
     private static final int SUB_BITS = 6;

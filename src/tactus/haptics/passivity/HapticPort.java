@@ -11,6 +11,8 @@ import tactus.haptics.HapticLoop;
  * where the avatar must go), {@link #command} with the model's force (and gets back the force to send), then
  * {@link #sent} with the share of it that went out. One thread (the loop's) calls these; the switches may be
  * flipped from any thread. Nothing here allocates or locks.
+ *
+ * <p>Not API: public only for {@link tactus.haptics.HapticLoop} and the measurement tools' {@code PortLink} (a documented hook); it may change without notice.
  */
 public final class HapticPort {
     private final PassivityObserver observer = new PassivityObserver();
@@ -53,21 +55,31 @@ public final class HapticPort {
     private long lastFresh;                                     // sentCount when the last new state was read
     private double lateSpan = 1;                                // ticks the next charged displacement will span
 
+    /** The observer this port keeps (the one {@code HapticLoop.passivity()} returns). */
+
     public PassivityObserver observer() {
         return observer;
     }
+
+    /** Switches the passivity controller on or off, from any thread. */
 
     public void setControl(boolean on) {
         controlOn = on;
     }
 
+    /** True while the passivity controller is on. */
+
     public boolean isControl() {
         return controlOn;
     }
 
+    /** Sets the largest damping the controller may add, in N s/m. */
+
     public void setDampingLimit(double nsPerM) {
         controller.setDampingLimit(nsPerM);
     }
+
+    /** The largest damping the controller may add, in N s/m. */
 
     public double dampingLimit() {
         return controller.dampingLimit();
@@ -86,6 +98,8 @@ public final class HapticPort {
         controller.setReserveLimit(joules);
     }
 
+    /** The cap on the energy the controller may hold in reserve, in J. */
+
     public double reserveLimit() {
         return controller.reserveLimit();
     }
@@ -94,6 +108,8 @@ public final class HapticPort {
     public void setTolerance(double joules) {
         controller.setTolerance(joules);
     }
+
+    /** The deficit the port may run before the controller damps, in J. */
 
     public double tolerance() {
         return controller.tolerance();
@@ -107,6 +123,8 @@ public final class HapticPort {
     public void setDelay(int ticks) {
         delay = ticks;
     }
+
+    /** The exchange delay the account assumes, in ticks. */
 
     public int delay() {
         return delay;
@@ -123,17 +141,25 @@ public final class HapticPort {
         late = ticks;
     }
 
+    /** The bound on late answers the account follows, in ticks (0: the fixed-delay account). */
+
     public int lateBound() {
         return late;
     }
+
+    /** The virtual coupling in use, or null. */
 
     public VirtualCoupling coupling() {
         return coupling;
     }
 
+    /** Sets the friction compensation (null: none), from any thread. */
+
     public void setFriction(FrictionCompensation f) {
         friction = f;
     }
+
+    /** The friction compensation in use, or null. */
 
     public FrictionCompensation friction() {
         return friction;

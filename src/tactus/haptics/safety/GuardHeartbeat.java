@@ -23,6 +23,8 @@ import java.nio.file.StandardOpenOption;
  * replies those writes cause) and its state (whether it could open the port for writing).
  *
  * <p>The values are only compared for change, never across processes as times.
+ *
+ * <p>Not API: public only for {@link tactus.haptics.Board}.
  */
 public final class GuardHeartbeat {
     /** Size of the shared file in bytes. */

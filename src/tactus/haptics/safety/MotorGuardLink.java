@@ -15,6 +15,8 @@ import tactus.haptics.transport.Transport;
  * zeroed and answered.
  * Starting or talking to the guard never fails the board: a failure prints one warning and the board runs
  * without the guard.
+ *
+ * <p>Not API: public only for {@link tactus.haptics.Board}.
  */
 public final class MotorGuardLink {
     /** System property that turns the guard off when "false" (default on). */
@@ -51,8 +53,12 @@ public final class MotorGuardLink {
 
     /** A serial port opened with its guard. */
     public static final class Opened {
+        /** The port, opened after the guard. */
         public final SerialTransport transport;
+        /** The guard watching the port ({@link #NONE} without one). */
         public final MotorGuardLink guard;
+
+        /** Pairs a port with its guard. */
 
         public Opened(SerialTransport transport, MotorGuardLink guard) {
             this.transport = transport;

@@ -9,6 +9,8 @@ import tactus.haptics.HapticSession;
  * What {@link HapticSession} and {@link HapticSession3D} share about the hand of an emulated device: the idle
  * tour drives it until the mouse first moves, drags or presses over the window, and the mouse from then on; the
  * tour's clock; the status line that says so; and the telemetry line, made at most once a second.
+ *
+ * <p>Not API: public only for the two sessions in {@code tactus.haptics}.
  */
 public final class SessionHand {
     private volatile boolean mouseSeen;

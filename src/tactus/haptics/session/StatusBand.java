@@ -5,6 +5,8 @@ import processing.core.PApplet;
 /**
  * The status line a haptic session draws at the bottom-left of the window: on a band whose colour says whether the
  * device is real, emulated or in trouble, whatever the sketch's transforms, camera and styles (all restored).
+ *
+ * <p>Not API: public only for the two sessions in {@code tactus.haptics}.
  */
 public final class StatusBand {
     private StatusBand() {

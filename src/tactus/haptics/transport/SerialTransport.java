@@ -6,6 +6,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
 import tactus.haptics.Board;
 import tactus.haptics.HaplyLinkException;
+import tactus.haptics.SerialPorts;
 
 /**
  * A {@link Transport} over a serial port through jSerialComm. Works with USB CDC boards and with
@@ -85,7 +86,8 @@ public final class SerialTransport implements Transport {
 
     /**
      * Registers a JVM shutdown hook that runs before jSerialComm closes the open ports from its own shutdown
-     * hook (with {@code Runtime.addShutdownHook} the two would run in no set order).
+     * hook (with {@code Runtime.addShutdownHook} the two would run in no set order). Not API: for
+     * {@link tactus.haptics.Board}.
      */
     public static void runBeforePortsClose(Thread hook) {
         SerialPort.addShutdownHook(hook);
@@ -178,7 +180,7 @@ public final class SerialTransport implements Transport {
         }
     }
 
-    /** The baud rate the port was opened with. */
+    /** The baud rate the port was opened with. Not API: for the motor guard in {@code tactus.haptics.safety}. */
     public int baudRate() {
         return port.getBaudRate();
     }

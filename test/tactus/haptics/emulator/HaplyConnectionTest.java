@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.transport.SerialPorts;
+import tactus.haptics.SerialPorts;
 
 /** With no Haply plugged in, an example gets the emulator with a hand that follows the mouse, and is told so. */
 class HaplyConnectionTest {

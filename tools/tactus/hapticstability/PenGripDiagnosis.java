@@ -1,12 +1,9 @@
-package tactus.haptics;
+package tactus.hapticstability;
 
 import java.util.Locale;
-import tactus.hapticstability.EmulatorBoundary;
-import tactus.hapticstability.StabilitySweep;
-import tactus.hapticstability.Touch;
-import tactus.hapticstability.WallRig;
 import tactus.haptics.emulator.PlantParameters;
 import tactus.haptics.passivity.VirtualCoupling;
+import tactus.haptics.AvatarLink;
 
 /**
  * Why the passivity controller alone loses the pen-grip wall (docs/haptics-stability.md, "Passivity control"): runs

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.hapticstability;
 
 import java.util.Locale;
 import java.util.concurrent.locks.LockSupport;
@@ -10,6 +10,13 @@ import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PlantParameters;
 import tactus.paramSystem;
 import tactus.haptics.passivity.PassivityObserver;
+import tactus.haptics.Board;
+import tactus.haptics.BoardModel;
+import tactus.haptics.Device;
+import tactus.haptics.HaplyPreset;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticSession;
+import tactus.haptics.PhysicalModelAvatar;
 
 /**
  * Does the passivity controller change how the paper's soft haptic examples feel? Runs the models of HeavyMassChain,

@@ -1,10 +1,9 @@
-package tactus.haptics.transport;
+package tactus.haptics;
 
 import com.fazecast.jSerialComm.SerialPort;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import tactus.haptics.HaplyLinkException;
 
 /** Serial port discovery: lists the ports and picks the one that looks like a Haply board. */
 public final class SerialPorts {

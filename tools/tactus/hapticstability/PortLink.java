@@ -1,9 +1,11 @@
-package tactus.haptics;
+package tactus.hapticstability;
 
 import tactus.haptics.passivity.HapticPort;
 import tactus.haptics.passivity.FrictionCompensation;
 import tactus.haptics.passivity.PassivityObserver;
 import tactus.haptics.passivity.VirtualCoupling;
+import tactus.haptics.AvatarLink;
+import tactus.haptics.HapticLoop;
 
 /**
  * For measurements: a {@link HapticPort} (the passivity observer and controller, a coupling, friction compensation)

@@ -1,4 +1,6 @@
-package tactus.haptics;
+package tactus.hapticstability;
+
+import tactus.haptics.AvatarLink;
 
 /**
  * For measurements: an {@link AvatarLink} that passes every call to another one; a subclass overrides what it watches

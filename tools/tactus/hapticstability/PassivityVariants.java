@@ -1,9 +1,9 @@
-package tactus.haptics;
+package tactus.hapticstability;
 
 import java.util.List;
 import java.util.function.DoubleFunction;
-import tactus.hapticstability.WallRig;
 import tactus.haptics.passivity.VirtualCoupling;
+import tactus.haptics.AvatarLink;
 
 /**
  * The controlled variants of the stability sweep (docs/haptics-stability.md): the time-domain passivity controller,

@@ -1,4 +1,4 @@
-package tactus.haptics;
+package tactus.hapticstability;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -7,10 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import tactus.hapticstability.EmulatorBoundary;
-import tactus.hapticstability.StabilitySweep;
-import tactus.hapticstability.Touch;
-import tactus.hapticstability.WallRig;
 import tactus.haptics.emulator.PlantParameters;
 
 /**
