@@ -164,7 +164,7 @@ public final class HapticLoop implements AutoCloseable {
      * {@linkplain HapticDevice#defaultMapping() default axes} with scale alpha ({@link #setPositionGain}) and
      * the offset of {@link #setOrigin} ({@link #setMirrorX} applies to a planar device, whose default axes are the
      * paper's mirrored ones, and not to a 3-D device, whose axes say it). Forces go back along
-     * the same axes times beta ({@link #setForceGain}); the safety rules are those of the board path: a
+     * the same axes times beta ({@link #setForceGain}); the safety rules are those of every loop: a
      * non-finite force or one above the runaway limit gives zero force in the same tick, a model that throws
      * gives zero force and stops the loop, the watchdog zeroes the force, and a lost link or a device silent for
      * the link timeout stops the loop with a message.
@@ -182,8 +182,8 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * Sets how the device's metres map into the model (device path only; units per metre, offset in model units),
-     * replacing the default axes, alpha and origin. {@link #useRealUnits()} then keeps its axes and offset and
+     * Sets how the device's metres map into the model (a loop built on a {@link HapticDevice} only; units per metre,
+     * offset in model units), replacing the default axes, alpha and origin. {@link #useRealUnits()} then keeps its axes and offset and
      * sets its scale to 1.
      */
     public void setWorkspaceMapping(WorkspaceMapping m) {
@@ -215,7 +215,7 @@ public final class HapticLoop implements AutoCloseable {
             return realUnits ? explicitMapping.withScale(1) : explicitMapping;
         }
         WorkspaceMapping m = spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
-        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them, as on the board path
+        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them
         return spatial.dimensions() == 2 && !mirrorX ? m.mirrored(0) : m;
     }
 

@@ -1,6 +1,7 @@
 package tactus.haptics.pantograph;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.locks.LockSupport;
@@ -16,6 +17,7 @@ import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticDevice;
 import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticTelemetry;
 
 /**
  * The 2DIY through the common {@link HapticDevice} interface: position in metres from the kinematics, force in
@@ -108,6 +110,113 @@ class PantographDeviceTest {
             assertEquals(0, f[2], 0);
             assertEquals(0.09, p[1], 2e-4);
             assertEquals(0, emulator.motorTorque(1), 0, "stop() zeroed the motors");
+        }
+    }
+
+    /** A board with the 2018 preset, set up, its handle held at (x, y) metres by a scripted hand. */
+    private static Device deviceAt(BoardEmulator emulator, double x, double y) {
+        emulator.setHand(Hand.scripted((t, out) -> {
+            out[0] = x;
+            out[1] = y;
+        }));
+        Board board = new Board(emulator.connect());
+        Device device = new Device((byte) 3, board);
+        HaplyPreset.HAPLY_2018.configure(device);
+        device.device_set_parameters();
+        return device;
+    }
+
+    @Test
+    void anUnreachablePoseIsAFreshFrameWhereNoForceIsRendered() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        Device device = deviceAt(emulator, 0.01, 0.08);
+        try (Board board = device.board()) {
+            for (double d : new double[] {0.02, 0.5}) {   // the preset's motor spacing, then one the arms cannot span
+                PantographKinematics k = HaplyPreset.HAPLY_2018.newKinematics();
+                k.setParameters(0.05, 0.07, d);
+                PantographDevice pd = new PantographDevice(device, k);
+                pd.begin();
+                assertTrue(pd.update(), "a frame came (d = " + d + ")");
+                boolean reachable = d < 0.1;
+                assertEquals(reachable, pd.canRender(), "d = " + d);
+                pd.sendForce(0.3, -0.2, 0);
+                assertEquals(reachable ? 1 : 0, pd.renderedShare(), 0, "d = " + d);
+                assertEquals(!reachable, pd.torque(1) == 0 && pd.torque(2) == 0, "d = " + d);
+            }
+        }
+    }
+
+    @Test
+    void theTorqueLimitScalesTheRenderedShareAndIsCounted() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        Device device = deviceAt(emulator, 0.01, 0.08);
+        try (Board board = device.board()) {
+            PantographDevice pd = new PantographDevice(device, HaplyPreset.HAPLY_2018.newKinematics());
+            pd.setTorqueGain(0.5);
+            pd.setTorqueLimit(0.01);
+            pd.begin();
+            assertTrue(pd.update());
+            for (double f : new double[] {0.001, 5}) {   // below the limit, then far above it
+                long before = pd.limitedForces();
+                pd.sendForce(f, f, 0);
+                double m = Math.max(Math.abs(pd.torque(1)), Math.abs(pd.torque(2)));
+                if (m < 0.01 - 1e-12) {
+                    assertEquals(0.5, pd.renderedShare(), 0, "below the limit: the gain alone");
+                    assertEquals(before, pd.limitedForces());
+                } else {
+                    assertEquals(0.01, m, 1e-12, "the larger torque at the limit");
+                    assertTrue(pd.renderedShare() < 0.5 && pd.renderedShare() > 0, "scaled: " + pd.renderedShare());
+                    assertEquals(before + 1, pd.limitedForces());
+                }
+            }
+            assertEquals(1, pd.limitedForces(), "one of the two forces was clipped");
+        }
+    }
+
+    @Test
+    void aLoopOnADeviceTakesItsClipsAndJointTorquesFromItsPantograph() {
+        for (double limit : new double[] {0.123, 0.005}) {
+            BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+            Device device = deviceAt(emulator, 0.01, 0.08);
+            AvatarLink push = new AvatarLink() {
+                @Override
+                public void setTarget(double x, double y, double z) {
+                }
+
+                @Override
+                public void takeForce(double[] out) {
+                    out[0] = 0.002;   // 0.2 N per axis with beta 100
+                    out[1] = 0.002;
+                    out[2] = 0;
+                }
+
+                @Override
+                public void step(int n) {
+                }
+            };
+            HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), push);
+            loop.setTorqueLimit(limit);
+            try {
+                loop.start();
+                long deadline = System.nanoTime() + 10_000_000_000L;
+                while (loop.ticks() < 100 && loop.isRunning() && System.nanoTime() < deadline) {
+                    LockSupport.parkNanos(1_000_000);
+                }
+                HapticTelemetry tm = loop.telemetry();
+                double m = Math.max(Math.abs(loop.torque(1)), Math.abs(loop.torque(2)));
+                assertTrue(tm.ticks >= 100, String.valueOf(loop.failure()));
+                assertTrue(m > 0, "torques were sent");
+                if (limit < 0.1) {
+                    assertEquals(limit, m, 1e-9, "the loop's torque limit reached its pantograph");
+                    assertTrue(tm.clampedTicks > 0, "clipped ticks counted");
+                } else {
+                    assertTrue(m < limit, "below the firmware's limit: " + m);
+                    assertEquals(0, tm.clampedTicks, "nothing clipped");
+                }
+                assertNull(loop.hapticDevice(), "a loop built on a Device shows no HapticDevice, as before");
+            } finally {
+                loop.close();
+            }
         }
     }
 }
