@@ -24,7 +24,11 @@ public final class WindowHistogram {
     private final int mask;
     private volatile long recorded;
 
-    /** @param window the number of most recent samples kept (a power of two, at most 2^30) */
+    /**
+     * Creates a histogram of the most recent samples.
+     *
+     * @param window the number of most recent samples kept (a power of two, at most 2^30)
+     */
     public WindowHistogram(int window) {
         if (window <= 0 || Integer.bitCount(window) != 1 || window > (1 << 30)) {
             throw new IllegalArgumentException("WindowHistogram: window must be a power of two, got " + window);
