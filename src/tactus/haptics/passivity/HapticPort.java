@@ -56,31 +56,26 @@ public final class HapticPort {
     private double lateSpan = 1;                                // ticks the next charged displacement will span
 
     /** The observer this port keeps (the one {@code HapticLoop.passivity()} returns). */
-
     public PassivityObserver observer() {
         return observer;
     }
 
     /** Switches the passivity controller on or off, from any thread. */
-
     public void setControl(boolean on) {
         controlOn = on;
     }
 
     /** True while the passivity controller is on. */
-
     public boolean isControl() {
         return controlOn;
     }
 
     /** Sets the largest damping the controller may add, in N s/m. */
-
     public void setDampingLimit(double nsPerM) {
         controller.setDampingLimit(nsPerM);
     }
 
     /** The largest damping the controller may add, in N s/m. */
-
     public double dampingLimit() {
         return controller.dampingLimit();
     }
@@ -99,7 +94,6 @@ public final class HapticPort {
     }
 
     /** The cap on the energy the controller may hold in reserve, in J. */
-
     public double reserveLimit() {
         return controller.reserveLimit();
     }
@@ -110,7 +104,6 @@ public final class HapticPort {
     }
 
     /** The deficit the port may run before the controller damps, in J. */
-
     public double tolerance() {
         return controller.tolerance();
     }
@@ -125,7 +118,6 @@ public final class HapticPort {
     }
 
     /** The exchange delay the account assumes, in ticks. */
-
     public int delay() {
         return delay;
     }
@@ -142,25 +134,21 @@ public final class HapticPort {
     }
 
     /** The bound on late answers the account follows, in ticks (0: the fixed-delay account). */
-
     public int lateBound() {
         return late;
     }
 
     /** The virtual coupling in use, or null. */
-
     public VirtualCoupling coupling() {
         return coupling;
     }
 
     /** Sets the friction compensation (null: none), from any thread. */
-
     public void setFriction(FrictionCompensation f) {
         friction = f;
     }
 
     /** The friction compensation in use, or null. */
-
     public FrictionCompensation friction() {
         return friction;
     }

@@ -59,7 +59,6 @@ public final class MotorGuardLink {
         public final MotorGuardLink guard;
 
         /** Pairs a port with its guard. */
-
         public Opened(SerialTransport transport, MotorGuardLink guard) {
             this.transport = transport;
             this.guard = guard;
