@@ -134,8 +134,12 @@ public final class TimingVerdict {
             return first + "; the loop had real-time scheduling, so the delays came from elsewhere (the audio thread,"
                     + " the JVM's safepoints, the machine's other real-time work): see docs/haptics.md.";
         }
-        return first + ", and let the loop run at real-time priority: allow it for your user (an rtprio limit in "
-                + "/etc/security/limits.conf, as audio users have, or CAP_SYS_NICE), see docs/haptics.md.";
+        if (scheduling != null && scheduling.contains("refused")) {
+            return first + ", and let the loop run at real-time priority: allow it for your user (an rtprio limit in "
+                    + "/etc/security/limits.conf, as audio users have, or CAP_SYS_NICE), see docs/haptics.md.";
+        }
+        return first + ", and ask for real-time priority for the loop (HapticLoop.setRealtimePriority, which a "
+                + "HapticSession does), see docs/haptics.md.";
     }
 
     @Override

@@ -43,6 +43,8 @@ class TimingVerdictTest {
         assertFalse(TimingVerdict.haptic(1000, 0, 1.0, 0, DEADLINE).withAudio(1.0, 1.3).onTime(), "audio 0.3 s behind");
         TimingVerdict rt = TimingVerdict.haptic(1000, 50, 1.0, 0, DEADLINE);
         assertTrue(rt.text().contains("the loop had real-time scheduling, so the delays came from elsewhere"), rt.text());
+        String notAsked = TimingVerdict.haptic(1000, 50, 1.0, 0, "normal priority").text();
+        assertTrue(notAsked.contains("ask for real-time priority for the loop (HapticLoop.setRealtimePriority"), notAsked);
         HapticTelemetry t = new HapticTelemetry(1000, 488, 1.0, 12, 100_000, 500_000, 30_000_000, 50_000, 90_000,
                 200_000, 0, 0, 0, 0);
         TimingVerdict fromTelemetry = TimingVerdict.of(t, "normal priority");
