@@ -289,6 +289,23 @@ class DemoTest {
     }
 
     @Test
+    void pluckRunsWithTheSchedulingASketchGetsAndSaysWhichItGot() throws IOException {
+        // asked for by default, as a HapticSession does: granted ("real-time (SCHED_...") or refused with the reason
+        String line = stdout.lines().filter(l -> l.contains("scheduling of the haptic loop: ")).findFirst()
+                .orElseThrow(() -> new AssertionError("no scheduling line in:\n" + stdout));
+        String policy = line.substring(line.indexOf(": ") + 2);
+        assertTrue(policy.startsWith("real-time (SCHED_DEADLINE") || policy.startsWith("real-time (SCHED_FIFO")
+                || policy.startsWith("normal priority (real-time refused: "), line);
+        List<String> txt = Files.readAllLines(out.resolve("pluck-telemetry.txt"), StandardCharsets.UTF_8);
+        assertTrue(txt.contains("scheduling " + policy.substring(0, policy.indexOf("; it ticked"))),
+                String.join("\n", txt));
+        // the hand's script starts once the loop ticks, however long the loop's set-up took: the first tick is
+        // recorded at the script's time 0, not seconds into it
+        double[][] rows = readCsv(out.resolve("pluck-telemetry.csv"), AudioHapticPluck.TELEMETRY_HEADER);
+        assertTrue(rows[0][0] <= 0 && rows[0][0] > -0.5, "first tick at t = " + rows[0][0] + " s");
+    }
+
+    @Test
     void pluckTelemetryShowsTheLoopAtAboutOneKilohertz() throws IOException {
         double[][] rows = readCsv(out.resolve("pluck-telemetry.csv"), AudioHapticPluck.TELEMETRY_HEADER);
         double[] periods = new double[rows.length - 1];

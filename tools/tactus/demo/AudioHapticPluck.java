@@ -62,7 +62,13 @@ public final class AudioHapticPluck {
     /** The longest the run may take beyond the script, seconds, before it is called stuck. */
     static final double TIMEOUT_MARGIN = 20;
 
-    /** The system property that gives the haptic loop a sketch's real-time scheduling ("true"). */
+    /** The longest the haptic loop may take to set itself up and tick for the first time, seconds. */
+    static final double START_TIMEOUT = 10;
+
+    /**
+     * The system property that, set to "false", runs the haptic loop at normal priority instead of the real-time
+     * scheduling a sketch's {@link HapticSession} asks for (the default).
+     */
     static final String REALTIME_PROPERTY = "tactus.demo.realtime";
 
     private AudioHapticPluck() {
@@ -88,6 +94,8 @@ public final class AudioHapticPluck {
         public double maxForce;
         /** Haptic ticks recorded, and how many of them had the plectrum touching the string. */
         public int ticks, contactTicks;
+        /** From the loop's start to its first tick (its scheduling and heap warm-up), seconds. */
+        public double setupSeconds;
         /** The haptic loop's telemetry at the end of the run. */
         public HapticTelemetry telemetry;
         /** Why the haptic loop stopped by itself, or null. */
@@ -135,12 +143,12 @@ public final class AudioHapticPluck {
                 HAPTIC_RATE, rate, BUFFER, PluckPath.DURATION);
 
         DeviceMapping mapping = new DeviceMapping();
-        long clockOrigin = System.nanoTime();
         BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
         double startX = mapping.modelX(emulator.x());
         double startY = mapping.modelY(emulator.y());
         PluckPath path = new PluckPath(startX, startY);
-        emulator.setHand(Hand.scripted(path.deviceScript(mapping)));
+        HeldScript script = new HeldScript(path.deviceScript(mapping));
+        emulator.setHand(Hand.scripted(script));
 
         PhysicalModel mdl = PluckScene.build(new Vect3D(startX, startY, 0));
         PhyUGen ugen = new PhyUGen(mdl);
@@ -157,11 +165,10 @@ public final class AudioHapticPluck {
         HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), avatar);
         loop.setRate(HAPTIC_RATE);
         loop.setMode(HapticLoop.Mode.AUDIO);
-        // -Dtactus.demo.realtime=true asks for the scheduling a sketch's HapticSession gets (SCHED_DEADLINE where
-        // Linux allows it, else SCHED_FIFO, else normal priority). It is not the default: on a loaded 2-core machine
-        // the in-process emulator's threads, at normal priority, then starve beside the loop and the scripted hand
-        // misses the string. The summary says which policy the loop got either way.
-        if (Boolean.getBoolean(REALTIME_PROPERTY)) {
+        // the scheduling a sketch's HapticSession asks for (SCHED_DEADLINE where Linux allows it, else SCHED_FIFO,
+        // else normal priority); -Dtactus.demo.realtime=false runs the loop at normal priority. The summary says which
+        // policy the loop got.
+        if (Boolean.parseBoolean(System.getProperty(REALTIME_PROPERTY, "true"))) {
             loop.setRealtimePriority(HapticSession.REALTIME_PRIORITY);
         }
         mapping.configure(loop);
@@ -172,12 +179,22 @@ public final class AudioHapticPluck {
         SceneFrame scene = new SceneFrame();
         scene.draw(mdl, 0, 0, "");   // the first frame loads Java2D and the renderer's cache: not while plucking
         double[] sceneAt = {Double.NaN, Double.NaN};
-        AudioOutput audio = new AudioOutput(new SilentAudioOut(1, BUFFER, rate));
-        long wallStart = System.nanoTime();
+        AudioOutput audio = null;
+        long clockOrigin;
+        long wallStart;
         try {
+            // The hand, the clock of the files and the audio start once the loop ticks: its set-up (the heap
+            // warm-up and the real-time scheduling) takes from 0.1 s to over a second on a loaded machine.
+            long loopStart = System.nanoTime();
+            loop.start();
+            awaitFirstTick(loop);
+            clockOrigin = System.nanoTime();
+            r.setupSeconds = (clockOrigin - loopStart) * 1e-9;
+            script.startAt(emulator.time());
+            wallStart = System.nanoTime();
+            audio = new AudioOutput(new SilentAudioOut(1, BUFFER, rate));
             audio.addListener(capture);
             ugen.patch(audio);
-            loop.start();
             // The main thread only watches: it draws a frame of the scene when the force during the first
             // pluck is the largest so far (the string is then bent furthest), from the lock-free snapshot.
             double[] f = new double[2];
@@ -200,7 +217,9 @@ public final class AudioHapticPluck {
             }
         } finally {
             loop.close();
-            audio.close();
+            if (audio != null) {
+                audio.close();
+            }
             emulator.close();
         }
         r.wallSeconds = (System.nanoTime() - wallStart) * 1e-9;
@@ -282,7 +301,8 @@ public final class AudioHapticPluck {
         out.printf(Locale.ROOT, "  ran %.2f s of wall time for %.2f s of audio (%d samples, peak %.3f)%n",
                 r.wallSeconds, r.audioSeconds, frames, r.peak);
         out.println("  " + r.telemetry);
-        out.println("  scheduling of the haptic loop: " + r.scheduling);
+        out.printf(Locale.ROOT, "  scheduling of the haptic loop: %s; it ticked %.2f s after its start, when the "
+                + "hand began its script%n", r.scheduling, r.setupSeconds);
         out.println("  " + r.timing.text());
         out.printf(Locale.ROOT, "  %d ticks recorded, %d with the plectrum touching the string; largest force on "
                 + "the handle %.2f N%n", r.ticks, r.contactTicks, r.maxForce);
@@ -296,6 +316,21 @@ public final class AudioHapticPluck {
         out.printf(Locale.ROOT, "    theory: cos w_m = 1 - 2 (kt/M) sin^2(m pi / (2 (N + 1))), kt = K (1 - l0/d); "
                 + "tolerance on the fundamental %.2f cents (half the resolution)%n", r.toleranceCents);
         return r;
+    }
+
+    /** Waits until the loop has ticked once (its real-time set-up is then done), or says why it did not. */
+    private static void awaitFirstTick(HapticLoop loop) {
+        long deadline = System.nanoTime() + (long) (START_TIMEOUT * 1e9);
+        while (loop.ticks() == 0) {
+            if (!loop.isRunning()) {
+                throw new Demo.DemoFailure("the haptic loop stopped before its first tick: " + loop.failure());
+            }
+            if (System.nanoTime() > deadline) {
+                throw new Demo.DemoFailure("the haptic loop did not tick within " + START_TIMEOUT + " s of its start ("
+                        + loop.scheduling() + ")");
+            }
+            sleepMillis(1);
+        }
     }
 
     private static void sleepMillis(long ms) {
@@ -338,6 +373,7 @@ public final class AudioHapticPluck {
             w.write("Tactus demo: haptic telemetry of the audio-haptic plucked string\n");
             w.write(tel.toString() + "\n");
             w.write("scheduling " + r.scheduling + "\n");
+            w.write(String.format(Locale.ROOT, "setup_seconds %.3f%n", r.setupSeconds));
             w.write(String.format(Locale.ROOT, "nominal_hz %.1f%nachieved_hz %.2f%nticks %d%nseconds %.4f%n"
                             + "missed_steps %d%njitter_p50_us %.1f%njitter_p99_us %.1f%njitter_max_us %.1f%n"
                             + "compute_p50_us %.1f%ncompute_p99_us %.1f%ncompute_max_us %.1f%nstale_ticks %d%n"
