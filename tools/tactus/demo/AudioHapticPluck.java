@@ -62,6 +62,8 @@ public final class AudioHapticPluck {
     /** The longest the run may take beyond the script, seconds, before it is called stuck. */
     static final double TIMEOUT_MARGIN = 20;
 
+    /** When the first pluck is drawn, if the watching thread sees it: from, to, seconds into the script. */
+    static final double FIRST_PLUCK_FROM = 0.5, FIRST_PLUCK_TO = 1.4;
     /** The longest the haptic loop may take to set itself up and tick for the first time, seconds. */
     static final double START_TIMEOUT = 10;
 
@@ -179,6 +181,8 @@ public final class AudioHapticPluck {
         SceneFrame scene = new SceneFrame();
         scene.draw(mdl, 0, 0, "");   // the first frame loads Java2D and the renderer's cache: not while plucking
         double[] sceneAt = {Double.NaN, Double.NaN};
+        int[] watched = new int[2];   // wake-ups of the watching thread while the hand plucks, and with a force
+        double[] lastWake = {0, 0};   // the longest gap between two of them, s; the last one, s
         AudioOutput audio = null;
         long clockOrigin;
         long wallStart;
@@ -196,7 +200,9 @@ public final class AudioHapticPluck {
             audio.addListener(capture);
             ugen.patch(audio);
             // The main thread only watches: it draws a frame of the scene when the force during the first
-            // pluck is the largest so far (the string is then bent furthest), from the lock-free snapshot.
+            // pluck is the largest so far (the string is then bent furthest), from the lock-free snapshot. It runs
+            // at normal priority and, on a loaded machine, can sleep through the whole first pluck (a contact lasts
+            // about 80 ms): then it draws the first later contact it sees.
             double[] f = new double[2];
             double[] p = new double[3];
             double best = 0;
@@ -206,11 +212,20 @@ public final class AudioHapticPluck {
                 double t = (System.nanoTime() - clockOrigin) * 1e-9;
                 loop.deviceForce(f);
                 double mag = Math.hypot(f[0], f[1]);
-                if (t > 0.5 && t < 1.4 && mag > best && exchange.peekPosition(p)) {
+                boolean firstPluck = t > FIRST_PLUCK_FROM && t < FIRST_PLUCK_TO;
+                boolean plucking = t > FIRST_PLUCK_FROM && t < PluckPath.STRUM_END + 0.1;
+                if (plucking) {
+                    watched[0]++;
+                    watched[1] += mag > 0 ? 1 : 0;
+                    lastWake[0] = Math.max(lastWake[0], lastWake[1] > 0 ? t - lastWake[1] : 0);
+                    lastWake[1] = t;
+                }
+                boolean draw = firstPluck ? mag > best : plucking && mag > 0 && Double.isNaN(sceneAt[0]);
+                if (draw && exchange.peekPosition(p)) {
                     best = mag;
                     scene.draw(mdl, f[0], f[1], String.format(Locale.ROOT,
-                            "t = %.2f s, pluck down: the plectrum drags the string; force on the handle %.2f N",
-                            t, mag));
+                            "t = %.2f s, %s: the plectrum drags the string; force on the handle %.2f N",
+                            t, path.phaseAt(t), mag));
                     sceneAt[0] = p[0];
                     sceneAt[1] = p[1];
                 }
@@ -290,7 +305,11 @@ public final class AudioHapticPluck {
 
         // ---- pictures
         if (Double.isNaN(sceneAt[0])) {
-            throw new Demo.DemoFailure("no frame of the scene was drawn during the first pluck");
+            throw new Demo.DemoFailure(String.format(Locale.ROOT, "no frame of the scene was drawn while the hand "
+                    + "plucked (%.1f-%.2f s): the watching thread woke %d times then (longest gap %.3f s), %d of them "
+                    + "with a force on the handle; %d ticks touched the string, the first at %.3f s",
+                    FIRST_PLUCK_FROM, PluckPath.STRUM_END + 0.1, watched[0],
+                    lastWake[0], watched[1], r.contactTicks, firstContactSeconds(t, mfx, mfy, n)));
         }
         scene.save(r.scenePng.toFile(), sceneAt[0], sceneAt[1]);
         PathPlot.save(r.pathPng.toFile(), t, avatar.column(ExchangeAvatar.HANDLE_X),
@@ -316,6 +335,16 @@ public final class AudioHapticPluck {
         out.printf(Locale.ROOT, "    theory: cos w_m = 1 - 2 (kt/M) sin^2(m pi / (2 (N + 1))), kt = K (1 - l0/d); "
                 + "tolerance on the fundamental %.2f cents (half the resolution)%n", r.toleranceCents);
         return r;
+    }
+
+    /** The time of the first tick with a force from the model, s, or NaN. */
+    private static double firstContactSeconds(double[] t, double[] mfx, double[] mfy, int n) {
+        for (int i = 0; i < n; i++) {
+            if (mfx[i] != 0 || mfy[i] != 0) {
+                return t[i];
+            }
+        }
+        return Double.NaN;
     }
 
     /** Waits until the loop has ticked once (its real-time set-up is then done), or says why it did not. */

@@ -56,6 +56,16 @@ public final class PluckPath {
         return new String[] {"glide", "rest", "pluck down", "rest", "pluck up", "move", "strum", "ring"};
     }
 
+    /** The name of the move under way at time {@code t} (seconds into the script), one of {@link #phases()}. */
+    public String phaseAt(double t) {
+        String[] names = phases();
+        int i = 0;
+        while (i + 1 < points.length - 1 && t >= points[i + 1][0]) {
+            i++;
+        }
+        return names[i];
+    }
+
     /** @return the start times of the moves, seconds (same order as {@link #phases()}). */
     public double[] phaseStarts() {
         double[] t = new double[points.length - 1];
