@@ -10,6 +10,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.nio.file.attribute.FileTime;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -63,7 +65,9 @@ public final class GalleryShots {
         Path examples = Paths.get(args[0]);
         Path frames = Paths.get(args[1]);
         Path out = Paths.get(args[2]);
-        List<Path> sketches = SketchHarness.findSketches(examples);
+        List<Path> sketches = new ArrayList<>(SketchHarness.findSketches(examples));
+        sketches.sort(Comparator.comparingInt((Path d) -> groupRank(examples.relativize(d)))
+                .thenComparing(Path::toString));
         Files.createDirectories(out.resolve("gallery"));
         StringBuilder page = new StringBuilder();
         page.append("# Gallery\n\n")
@@ -108,6 +112,14 @@ public final class GalleryShots {
         }
         Files.write(out.resolve(PAGE), page.toString().getBytes(StandardCharsets.UTF_8));
         System.out.printf(Locale.ROOT, "gallery: %d examples, page %s%n", sketches.size(), out.resolve(PAGE));
+    }
+
+    /** Groups in the order a newcomer meets them; groups not listed come after, by name. */
+    static final List<String> GROUP_ORDER = List.of("Basics", "Lesson", "Visuals", "Audio", "Haptics", "Haptics3D");
+
+    private static int groupRank(Path rel) {
+        int i = rel.getNameCount() > 1 ? GROUP_ORDER.indexOf(rel.getName(0).toString()) : -1;
+        return i < 0 ? GROUP_ORDER.size() : i;
     }
 
     /** The sketch's last frame: the sketch tests' copy if it is up to date, else a fresh headless run. */

@@ -15,6 +15,7 @@ import tactus.haptics.Board;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticSession;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.SimulatedInverse3;
@@ -160,12 +161,14 @@ public final class SitePictures {
         TickClock clock = new TickClock(3500);
         HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), clock);
         loop.setRate(1000);
+        loop.setRealtimePriority(HapticSession.REALTIME_PRIORITY);   // what a sketch's HapticSession asks for
         loop.start();
         long end = System.nanoTime() + 3_500_000_000L;
         while (clock.count < clock.at.length && System.nanoTime() < end) {
             Thread.sleep(50);
         }
         String scheduling = loop.scheduling();
+        String policy = scheduling.contains(" (") ? scheduling.substring(0, scheduling.indexOf(" (")) : scheduling;
         loop.close();
         int n = clock.count;
         if (n < 100) {
@@ -190,7 +193,7 @@ public final class SitePictures {
             share[b] = 100.0 * share[b] / counted;
         }
         new LineChart("The haptic loop at 1 kHz on the emulated 2DIY: time between ticks (" + counted
-                + " ticks, " + scheduling + ")", "period (ms; the last bin holds all longer)", "ticks (%)")
+                + " ticks, " + policy + " scheduling)", "period (ms; the last bin holds all longer)", "ticks (%)")
                 .markers(true)
                 .series("share of ticks per 0.05 ms", centre, share)
                 .save(new File(out, "haptic-loop-periods.png"), WIDTH, HEIGHT);
