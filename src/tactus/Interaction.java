@@ -126,4 +126,26 @@ public abstract class Interaction extends Module {
             exit();
         }
     }
+
+    // ---- the parameters beyond K, Z and the length (mi.lib's nonlinear interactions)
+
+    /** @return parameter {@code index} beyond K, Z and the length, in the model's units. */
+    double aux(String op, int index) {
+        enter();
+        try {
+            return core.params.aux(op, id, index);
+        } finally {
+            exit();
+        }
+    }
+
+    /** Sets parameter {@code index} beyond K, Z and the length, in the model's units. */
+    void aux(String op, int index, double value) {
+        enter();
+        try {
+            core.params.setAux(op, id, index, value);
+        } finally {
+            exit();
+        }
+    }
 }

@@ -74,6 +74,30 @@ final class ModuleHandles implements HandleFactory {
                 return new PlaneContact3D(core, gate, id);
             case ATTRACTOR3D:
                 return new Attractor3D(core, gate, id);
+            case QUADRATIC_SPRING_DAMPER3D:
+                return new QuadraticSpringDamper3D(core, gate, id);
+            case QUADRATIC_SPRING_DAMPER1D:
+                return new QuadraticSpringDamper1D(core, gate, id);
+            case CUBIC_SPRING_DAMPER3D:
+                return new CubicSpringDamper3D(core, gate, id);
+            case CUBIC_SPRING_DAMPER1D:
+                return new CubicSpringDamper1D(core, gate, id);
+            case CLIPPED_SPRING_DAMPER3D:
+                return new ClippedSpringDamper3D(core, gate, id);
+            case CLIPPED_SPRING_DAMPER1D:
+                return new ClippedSpringDamper1D(core, gate, id);
+            case PLUCK3D:
+                return new Pluck3D(core, gate, id);
+            case PLUCK1D:
+                return new Pluck1D(core, gate, id);
+            case BOW3D:
+                return new Bow3D(core, gate, id);
+            case BOW1D:
+                return new Bow1D(core, gate, id);
+            case CLIPPED_CONTACT3D:
+                return new ClippedContact3D(core, gate, id);
+            case CLIPPED_CONTACT1D:
+                return new ClippedContact1D(core, gate, id);
             default:
                 throw new IllegalStateException("no handle for " + kind);
         }

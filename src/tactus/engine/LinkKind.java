@@ -73,10 +73,10 @@ public enum LinkKind {
             0xFFC83CC8, "nlPluck", new String[] {"scale"}, ParamUnit.LENGTH),
     /** mi.lib's nlBow on the relative velocity vector: stick-slip friction. */
     BOW3D("Bow3D", DAMPED | NO_HISTORY, NonlinearKernels.Bow3D::new, Engagement.ALWAYS, 0xFFE6B450, null,
-            new String[] {"scale", "type"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
+            new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlBow along z. */
     BOW1D("Bow1D", DAMPED | ONE_D | NO_HISTORY, NonlinearKernels.Bow1D::new, Engagement.ALWAYS, 0xFFE6B450, "nlBow",
-            new String[] {"scale", "type"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
+            new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlCollisionClipped on the distance: a clipped cubic contact while d is below the threshold. */
     CLIPPED_CONTACT3D("ClippedContact3D", STIFF | DAMPED | LENGTH | CONDITIONAL, NonlinearKernels.Contact3D::new,
             Engagement.WHEN_COMPRESSED, 0x00FF3232, null, new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
@@ -150,7 +150,7 @@ public enum LinkKind {
 
     /** @return the kind whose {@link #label()} is {@code label}, or null when there is none. */
     public static LinkKind byLabel(String label) {
-        for (LinkKind k : values()) {
+        for (LinkKind k : Every.KINDS) {
             if (k.label.equals(label)) {
                 return k;
             }
@@ -306,6 +306,11 @@ public enum LinkKind {
             default:
                 return hasDamping() ? z : 0;
         }
+    }
+
+    /** Every kind, in declaration order, without the copy {@code values()} makes. */
+    private static final class Every {
+        static final LinkKind[] KINDS = values();
     }
 
     /** The flags of a kind: which common parameters it has and how it acts. */

@@ -1,6 +1,18 @@
 package tactus.internal.calls;
 
 import tactus.Attractor3D;
+import tactus.QuadraticSpringDamper3D;
+import tactus.QuadraticSpringDamper1D;
+import tactus.CubicSpringDamper3D;
+import tactus.CubicSpringDamper1D;
+import tactus.ClippedSpringDamper3D;
+import tactus.ClippedSpringDamper1D;
+import tactus.Pluck3D;
+import tactus.Pluck1D;
+import tactus.Bow3D;
+import tactus.Bow1D;
+import tactus.ClippedContact3D;
+import tactus.ClippedContact1D;
 import tactus.Bubble3D;
 import tactus.Contact3D;
 import tactus.Damper3D;
@@ -220,6 +232,117 @@ public final class BuildCalls extends Calls {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
             return (Interaction) core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
+        });
+    }
+
+    // ---- mi.lib's nonlinear interactions: kinds with parameters beyond K, Z and the length
+
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return (QuadraticSpringDamper3D) addLinkWithAux("addQuadraticSpringDamper3D", LinkKind.QUADRATIC_SPRING_DAMPER3D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
+        return addQuadraticSpringDamper3D(name, dist, K, Z, Q, distinct("addQuadraticSpringDamper3D", name, m1, m2), nameOf(m2));
+    }
+
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return (QuadraticSpringDamper1D) addLinkWithAux("addQuadraticSpringDamper1D", LinkKind.QUADRATIC_SPRING_DAMPER1D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
+        return addQuadraticSpringDamper1D(name, dist, K, Z, Q, distinct("addQuadraticSpringDamper1D", name, m1, m2), nameOf(m2));
+    }
+
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return (CubicSpringDamper3D) addLinkWithAux("addCubicSpringDamper3D", LinkKind.CUBIC_SPRING_DAMPER3D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
+        return addCubicSpringDamper3D(name, dist, K, Z, Q, distinct("addCubicSpringDamper3D", name, m1, m2), nameOf(m2));
+    }
+
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return (CubicSpringDamper1D) addLinkWithAux("addCubicSpringDamper1D", LinkKind.CUBIC_SPRING_DAMPER1D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
+        return addCubicSpringDamper1D(name, dist, K, Z, Q, distinct("addCubicSpringDamper1D", name, m1, m2), nameOf(m2));
+    }
+
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
+        return (ClippedSpringDamper3D) addLinkWithAux("addClippedSpringDamper3D", LinkKind.CLIPPED_SPRING_DAMPER3D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
+        return addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, distinct("addClippedSpringDamper3D", name, m1, m2), nameOf(m2));
+    }
+
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
+        return (ClippedSpringDamper1D) addLinkWithAux("addClippedSpringDamper1D", LinkKind.CLIPPED_SPRING_DAMPER1D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
+        return addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, distinct("addClippedSpringDamper1D", name, m1, m2), nameOf(m2));
+    }
+
+    public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return (Pluck3D) addLinkWithAux("addPluck3D", LinkKind.PLUCK3D, name, m1, m2, K, Z, dist, scale);
+    }
+
+    public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
+        return addPluck3D(name, dist, K, Z, scale, distinct("addPluck3D", name, m1, m2), nameOf(m2));
+    }
+
+    public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return (Pluck1D) addLinkWithAux("addPluck1D", LinkKind.PLUCK1D, name, m1, m2, K, Z, dist, scale);
+    }
+
+    public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
+        return addPluck1D(name, dist, K, Z, scale, distinct("addPluck1D", name, m1, m2), nameOf(m2));
+    }
+
+    public Bow3D addBow3D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return (Bow3D) addLinkWithAux("addBow3D", LinkKind.BOW3D, name, m1, m2, 0, Z, 0, scale, profile);
+    }
+
+    public Bow3D addBow3D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
+        return addBow3D(name, Z, scale, profile, distinct("addBow3D", name, m1, m2), nameOf(m2));
+    }
+
+    public Bow1D addBow1D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return (Bow1D) addLinkWithAux("addBow1D", LinkKind.BOW1D, name, m1, m2, 0, Z, 0, scale, profile);
+    }
+
+    public Bow1D addBow1D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
+        return addBow1D(name, Z, scale, profile, distinct("addBow1D", name, m1, m2), nameOf(m2));
+    }
+
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
+        return (ClippedContact3D) addLinkWithAux("addClippedContact3D", LinkKind.CLIPPED_CONTACT3D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
+        return addClippedContact3D(name, dist, K, Z, C, Kmax, distinct("addClippedContact3D", name, m1, m2), nameOf(m2));
+    }
+
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
+        return (ClippedContact1D) addLinkWithAux("addClippedContact1D", LinkKind.CLIPPED_CONTACT1D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
+        return addClippedContact1D(name, dist, K, Z, C, Kmax, distinct("addClippedContact1D", name, m1, m2), nameOf(m2));
+    }
+
+    private Interaction addLinkWithAux(String op, LinkKind kind, String name, String m1, String m2, double K, double Z,
+                                       double len, double... aux) {
+        Check.name(op, name);
+        Check.finite(op, name, "K", K);
+        Check.finite(op, name, "Z", Z);
+        tactus.internal.edit.ParamEditor.checkLength(op, name, kind, len);
+        return structural(() -> {
+            int a = core.dir.endMass(op, name, m1);
+            int b = core.dir.endMass(op, name, m2);
+            return (Interaction) core.builder.addLinkWithAux(op, kind, name, a, b, K, Z, len, aux);
         });
     }
 
