@@ -633,6 +633,18 @@ public class PhysicalModel {
 
     // ---- Faust mi.lib's nonlinear interactions (docs/modules.md)
 
+    /**
+     * Adds a nonlinear interaction of any type by its type, what model loaders use: {@code extra} holds the
+     * parameters of {@link linkModuleType#extraParameterNames()} in that order, in the model's units; a type
+     * without stiffness or length ignores K or dist.
+     *
+     * @throws IllegalArgumentException when the type is not a nonlinear one or {@code extra} has the wrong length
+     */
+    public Interaction addInteraction(linkModuleType type, String name, double dist, double K, double Z,
+                                      double[] extra, String m1, String m2) {
+        return build.addInteraction(type, name, dist, K, Z, extra, m1, m2);
+    }
+
     /** Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS). */
     public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
         return build.addQuadraticSpringDamper3D(name, dist, K, Z, Q, m1, m2);

@@ -34,6 +34,7 @@ import tactus.Spring3D;
 import tactus.SpringDamper1D;
 import tactus.SpringDamper3D;
 import tactus.Vect3D;
+import tactus.linkModuleType;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.internal.edit.ModuleBuilder;
@@ -331,6 +332,21 @@ public final class BuildCalls extends Calls {
 
     public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
         return addClippedContact1D(name, dist, K, Z, C, Kmax, distinct("addClippedContact1D", name, m1, m2), nameOf(m2));
+    }
+
+    public Interaction addInteraction(linkModuleType type, String name, double dist, double K, double Z,
+                                      double[] extra, String m1, String m2) {
+        LinkKind kind = type == null ? null : LinkKind.byLabel(type.name());
+        if (kind == null || !kind.isNonlinear()) {
+            throw new IllegalArgumentException("addInteraction(" + type + ", \"" + name + "\"): only the nonlinear"
+                    + " types are added by type; use the add call of " + type);
+        }
+        if (extra == null || extra.length != kind.auxCount()) {
+            throw new IllegalArgumentException("addInteraction(" + type + ", \"" + name + "\"): a " + type
+                    + " takes the extra parameters " + java.util.Arrays.toString(kind.auxNames()));
+        }
+        return addLinkWithAux("addInteraction", kind, name, m1, m2, kind.hasStiffness() ? K : 0, Z,
+                kind.hasLength() ? dist : 0, extra.clone());
     }
 
     private Interaction addLinkWithAux(String op, LinkKind kind, String name, String m1, String m2, double K, double Z,
