@@ -84,6 +84,23 @@ public enum linkModuleType {
         return k == null ? null : k.miLibFunction();
     }
 
+    /**
+     * @return the arguments of {@link #miLibFunction()} before its initial positions, in mi.lib's order, named as
+     *     this API names them: {@code "K"}, {@code "Z"}, {@code "dist"} or an extra parameter's name
+     */
+    public String[] miLibArguments() {
+        LinkKind k = kind();
+        return k == null ? new String[0] : k.miLibArguments();
+    }
+
+    /**
+     * @return the power of the sampling rate that turns extra parameter {@code i} from REAL_UNITS into a per-step
+     *     value (per step = real / fs^power): 2 for stiffnesses, 1 for velocities, 0 for lengths and numbers
+     */
+    public int extraParameterRatePower(int i) {
+        return kind().auxRatePower(i);
+    }
+
     /** @return the default colour of the type in drawings, as 0xAARRGGBB (alpha 0: drawn without a line). */
     public int defaultColor() {
         LinkKind k = kind();

@@ -28,19 +28,19 @@ public enum LinkKind {
             0xFF1EFAFA, null),
     /** Spring and damper acting along z only, on the signed difference z1 - z2. */
     SPRING_DAMPER1D("SpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D, LinkKernels.SpringDamper1D::new,
-            Engagement.ALWAYS, 0xFF32FFFA, "springDamper"),
+            Engagement.ALWAYS, 0xFF32FFFA, "springDamper(K, Z)"),
     /** Spring-damper that acts only while stretched beyond its rest length. */
     ROPE3D("Rope3D", STIFF | DAMPED | LENGTH | CONDITIONAL, LinkKernels.Stretched::new, Engagement.WHEN_STRETCHED,
             0xFF00FF64, null),
     /** Spring-damper that acts only while the masses are closer than a threshold. */
     CONTACT3D("Contact3D", STIFF | DAMPED | LENGTH | CONDITIONAL, LinkKernels.Proximity::new,
-            Engagement.WHEN_COMPRESSED, 0x00FF6464, "collision"),
+            Engagement.WHEN_COMPRESSED, 0x00FF6464, "collision(K, Z, dist)"),
     /** Spring-damper that acts only while the masses are farther apart than a radius. */
     BUBBLE3D("Bubble3D", STIFF | DAMPED | LENGTH | CONDITIONAL, LinkKernels.Stretched::new, Engagement.WHEN_STRETCHED,
             0x001E6464, null),
     /** One-sided spring-damper between one mass and an axis-aligned plane. */
     PLANE_CONTACT3D("PlaneContact3D", STIFF | DAMPED | LENGTH | CONDITIONAL | SINGLE | NO_HISTORY,
-            LinkKernels.Plane::new, Engagement.NONE, 0x007D7D7D, "collision"),
+            LinkKernels.Plane::new, Engagement.NONE, 0x007D7D7D, "collision(K, Z, dist)"),
     /** Inverse-square attraction beyond a limit distance: f = -A / d^2. */
     ATTRACTOR3D("Attractor3D", LENGTH | NO_HISTORY, LinkKernels.Attractor::new, Engagement.NONE, 0x007D7D7D, null),
 
@@ -49,33 +49,33 @@ public enum LinkKind {
             Engagement.ALWAYS, 0xFFFAC81E, null, new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper2 along z: F = K e + Q sgn(e) e^2 + Z v, e = z1 - z2 - l0. */
     QUADRATIC_SPRING_DAMPER1D("QuadraticSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
-            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2", new String[] {"Q"},
+            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)", new String[] {"Q"},
             ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper3 along the distance: F = K e + Q e^3 + Z v. */
     CUBIC_SPRING_DAMPER3D("CubicSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
             Engagement.ALWAYS, 0xFFFA961E, null, new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper3 along z. */
     CUBIC_SPRING_DAMPER1D("CubicSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Elastic1D::new,
-            Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3", new String[] {"Q"}, ParamUnit.STIFFNESS),
+            Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along the distance: a cubic spring bounded by the stiffness Kmax. */
     CLIPPED_SPRING_DAMPER3D("ClippedSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
             Engagement.ALWAYS, 0xFFFA641E, null, new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
             ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along z. */
     CLIPPED_SPRING_DAMPER1D("ClippedSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
-            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped",
+            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped(K, C, Kmax, Z)",
             new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS, ParamUnit.STIFFNESS),
     /** mi.lib's nlPluck along the distance: a repulsive spring that lets go past its distance scale. */
     PLUCK3D("Pluck3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new, Engagement.ALWAYS, 0xFFC83CC8,
             null, new String[] {"scale"}, ParamUnit.LENGTH),
     /** mi.lib's nlPluck along z. */
     PLUCK1D("Pluck1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Elastic1D::new, Engagement.ALWAYS,
-            0xFFC83CC8, "nlPluck", new String[] {"scale"}, ParamUnit.LENGTH),
+            0xFFC83CC8, "nlPluck(K, scale, Z)", new String[] {"scale"}, ParamUnit.LENGTH),
     /** mi.lib's nlBow on the relative velocity vector: stick-slip friction. */
     BOW3D("Bow3D", DAMPED | NO_HISTORY, NonlinearKernels.Bow3D::new, Engagement.ALWAYS, 0xFFE6B450, null,
             new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlBow along z. */
-    BOW1D("Bow1D", DAMPED | ONE_D | NO_HISTORY, NonlinearKernels.Bow1D::new, Engagement.ALWAYS, 0xFFE6B450, "nlBow",
+    BOW1D("Bow1D", DAMPED | ONE_D | NO_HISTORY, NonlinearKernels.Bow1D::new, Engagement.ALWAYS, 0xFFE6B450, "nlBow(Z, scale, profile)",
             new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlCollisionClipped on the distance: a clipped cubic contact while d is below the threshold. */
     CLIPPED_CONTACT3D("ClippedContact3D", STIFF | DAMPED | LENGTH | CONDITIONAL, NonlinearKernels.Contact3D::new,
@@ -83,7 +83,7 @@ public enum LinkKind {
             ParamUnit.STIFFNESS),
     /** mi.lib's nlCollisionClipped along z, mass 2 above mass 1: acts while z2 - z1 is below the threshold. */
     CLIPPED_CONTACT1D("ClippedContact1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Contact1D::new,
-            Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped", new String[] {"C", "Kmax"},
+            Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped(K, C, Kmax, Z, dist)", new String[] {"C", "Kmax"},
             ParamUnit.STIFFNESS, ParamUnit.STIFFNESS);
 
     /** How the tension of a link is read by a listening point that asks for its force. */
@@ -208,7 +208,36 @@ public enum LinkKind {
 
     /** @return the name of the function of Faust's mi.lib that plays the kind in a 1-D export, or null. */
     public String miLibFunction() {
-        return miLib;
+        return miLib == null ? null : miLib.substring(0, miLib.indexOf('('));
+    }
+
+    /**
+     * @return the parameters the mi.lib function takes before its initial positions, in its order, named as the
+     *     kind names them ({@code "K"}, {@code "Z"}, {@code "dist"} or one of {@link #auxNames()}); empty when the
+     *     kind has no mi.lib function
+     */
+    public String[] miLibArguments() {
+        if (miLib == null) {
+            return new String[0];
+        }
+        return miLib.substring(miLib.indexOf('(') + 1, miLib.length() - 1).split(", ");
+    }
+
+    /**
+     * @return the power of the sampling rate that converts parameter {@code i} beyond K, Z and the length from
+     *     REAL_UNITS to per-step values (per step = real / fs^power): 2 for stiffnesses, 1 for dampings and
+     *     velocities, 0 for lengths and numbers
+     */
+    public int auxRatePower(int i) {
+        switch (auxUnits[i]) {
+            case STIFFNESS:
+                return 2;
+            case DAMPING:
+            case VELOCITY:
+                return 1;
+            default:
+                return 0;
+        }
     }
 
     /** @return the names of the kind's parameters beyond K, Z and the length (empty for most kinds). */
