@@ -4,8 +4,9 @@ import static tactus.engine.LinkKernels.previousDistance;
 import static tactus.engine.LinkKernels.push;
 
 /**
- * The kernels of mi.lib's nonlinear interactions. Each one picks its force law once per step (a switch outside
- * the loop), then runs a tight loop that calls the law of {@link NonlinearLaws} directly. The 1-D kernels act
+ * The kernels of mi.lib's nonlinear interactions. A kernel shared by several kinds picks the law with a switch on
+ * the batch's kind, a loop invariant held in a final local; each law is a static method of {@link NonlinearLaws},
+ * called directly (no virtual call in the loop). The 1-D kernels act
  * along z on the signed difference {@code e = z1 - z2}, as mi.lib does; the 3-D kernels apply the same law along
  * the direction between the two masses, as {@code SpringDamper3D} does for the linear spring, except the bow,
  * whose friction acts along the relative velocity.
