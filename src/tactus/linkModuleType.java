@@ -78,7 +78,7 @@ public enum linkModuleType {
         return k == null ? new String[0] : k.auxNames();
     }
 
-    /** @return the mi.lib function that plays the type in a 1-D Faust export, or null when there is none. */
+    /** @return the mi.lib function whose law the type applies (along z in 1-D, along the distance in 3-D), or null. */
     public String miLibFunction() {
         LinkKind k = kind();
         return k == null ? null : k.miLibFunction();

@@ -46,20 +46,20 @@ public enum LinkKind {
 
     /** mi.lib's nlSpringDamper2 along the distance: F = K e + Q sgn(e) e^2 + Z v, e = d - l0. */
     QUADRATIC_SPRING_DAMPER3D("QuadraticSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
-            Engagement.ALWAYS, 0xFFFAC81E, null, new String[] {"Q"}, ParamUnit.STIFFNESS),
+            Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper2 along z: F = K e + Q sgn(e) e^2 + Z v, e = z1 - z2 - l0. */
     QUADRATIC_SPRING_DAMPER1D("QuadraticSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
             NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)", new String[] {"Q"},
             ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper3 along the distance: F = K e + Q e^3 + Z v. */
     CUBIC_SPRING_DAMPER3D("CubicSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
-            Engagement.ALWAYS, 0xFFFA961E, null, new String[] {"Q"}, ParamUnit.STIFFNESS),
+            Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper3 along z. */
     CUBIC_SPRING_DAMPER1D("CubicSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Elastic1D::new,
             Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along the distance: a cubic spring bounded by the stiffness Kmax. */
     CLIPPED_SPRING_DAMPER3D("ClippedSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
-            Engagement.ALWAYS, 0xFFFA641E, null, new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
+            Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped(K, C, Kmax, Z)", new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
             ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along z. */
     CLIPPED_SPRING_DAMPER1D("ClippedSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
@@ -67,7 +67,7 @@ public enum LinkKind {
             new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS, ParamUnit.STIFFNESS),
     /** mi.lib's nlPluck along the distance: a repulsive spring that lets go past its distance scale. */
     PLUCK3D("Pluck3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new, Engagement.ALWAYS, 0xFFC83CC8,
-            null, new String[] {"scale"}, ParamUnit.LENGTH),
+            "nlPluck(K, scale, Z)", new String[] {"scale"}, ParamUnit.LENGTH),
     /** mi.lib's nlPluck along z. */
     PLUCK1D("Pluck1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Elastic1D::new, Engagement.ALWAYS,
             0xFFC83CC8, "nlPluck(K, scale, Z)", new String[] {"scale"}, ParamUnit.LENGTH),
@@ -79,7 +79,7 @@ public enum LinkKind {
             new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlCollisionClipped on the distance: a clipped cubic contact while d is below the threshold. */
     CLIPPED_CONTACT3D("ClippedContact3D", STIFF | DAMPED | LENGTH | CONDITIONAL, NonlinearKernels.Contact3D::new,
-            Engagement.WHEN_COMPRESSED, 0x00FF3232, null, new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
+            Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped(K, C, Kmax, Z, dist)", new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
             ParamUnit.STIFFNESS),
     /** mi.lib's nlCollisionClipped along z, mass 2 above mass 1: acts while z2 - z1 is below the threshold. */
     CLIPPED_CONTACT1D("ClippedContact1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Contact1D::new,
@@ -206,7 +206,10 @@ public enum LinkKind {
         return color;
     }
 
-    /** @return the name of the function of Faust's mi.lib that plays the kind in a 1-D export, or null. */
+    /**
+     * @return the name of the function of Faust's mi.lib whose law the kind applies (a 1-D kind exactly; a 3-D one
+     *     along the distance), or null
+     */
     public String miLibFunction() {
         return miLib == null ? null : miLib.substring(0, miLib.indexOf('('));
     }

@@ -39,7 +39,7 @@ final class MiLibWriter {
         }
         for (Scene.LinkRow l : s.links) {
             if (l.type == linkModuleType.SpringDamper1D || l.type == linkModuleType.PlaneContact3D
-                    || (l.type.isNonlinear() && l.type.miLibFunction() != null)) {
+                    || (l.type.isNonlinear() && l.type.isOneDimensional())) {
                 continue;
             }
             if (l.type == linkModuleType.Contact3D) {
@@ -124,6 +124,18 @@ final class MiLibWriter {
         Scene.LinkRow l = s.links[j];
         boolean collision = l.type.miLibFunction().startsWith("nlCollision");
         boolean rest = !collision && l.l0 != 0;
+        StringBuilder b = new StringBuilder(call(l, p, j));
+        double xa = s.masses[l.a].x0[2];
+        String za = collision ? neg(add(lit(xa), p.linkL[j])) : rest ? sub(p.linkL[j], lit(xa)) : lit(-xa);
+        b.append(za).append(", ").append(lit(-s.masses[l.b].x0[2])).append(')');
+        return rest ? "(-(" + p.linkL[j] + "), _) : " + b : b.toString();
+    }
+
+    /**
+     * @return the start of a call of the kind's mi.lib function, {@code "mi.nlPluck(K, scale, Z, "}, its arguments in
+     *     mi.lib's order as the descriptor names them, ready for the two initial delayed positions
+     */
+    static String call(Scene.LinkRow l, Params p, int j) {
         String[] extraNames = l.type.extraParameterNames();
         StringBuilder b = new StringBuilder("mi.").append(l.type.miLibFunction()).append('(');
         for (String arg : l.type.miLibArguments()) {
@@ -142,10 +154,7 @@ final class MiLibWriter {
             }
             b.append(", ");
         }
-        double xa = s.masses[l.a].x0[2];
-        String za = collision ? neg(add(lit(xa), p.linkL[j])) : rest ? sub(p.linkL[j], lit(xa)) : lit(-xa);
-        b.append(za).append(", ").append(lit(-s.masses[l.b].x0[2])).append(')');
-        return rest ? "(-(" + p.linkL[j] + "), _) : " + b : b.toString();
+        return b.toString();
     }
 
     private static String massBlock(Scene s, Params p, int i) {

@@ -148,6 +148,73 @@ class FaustNonlinearAgreementTest {
         }, List.of(new Point("bar", 2, 1), new Point("hammer", 2, 1)), List.of(), "nlCollisionClipped");
     }
 
+    /** A 3-D string of n Mass3D, one displaced, whose links {@code link} adds (rest length 0.8, spacing 1). */
+    static PhysicalModel string3D(int n, LinkMaker link) {
+        PhysicalModel m = new PhysicalModel(44100);
+        m.addGround3D("g0", new Vect3D(0, 0, 0));
+        for (int i = 1; i <= n; i++) {
+            m.addMass3D("m" + i, 1, new Vect3D(i, i == n / 3 ? 0.2 : 0, 0), new Vect3D());
+        }
+        m.addGround3D("g1", new Vect3D(n + 1, 0, 0));
+        for (int i = 0; i <= n; i++) {
+            link.add(m, "s" + i, i == 0 ? "g0" : "m" + i, i == n ? "g1" : "m" + (i + 1));
+        }
+        return m;
+    }
+
+    private static final List<Point> STRING3D = List.of(new Point("m10", 1, 10), new Point("m10", 0, 10),
+            new Point("m4", 2, 10));
+
+    /** The 3-D forms: mi.lib's own function applied along the distance, in the explicit scheme. */
+    @Test
+    void threeDStringsOfEachSpringLaw() throws IOException {
+        agree("nlSpringDamper2-3d", () -> init(string3D(16, (m, n, a, b) -> m.addQuadraticSpringDamper3D(n, 0.8, 0.1,
+                0.0003, 0.3, a, b))), STRING3D, List.of(new Strike("m6", 2, 0.2)), "nlSpringDamper2");
+        agree("nlSpringDamper3-3d", () -> init(string3D(16, (m, n, a, b) -> m.addCubicSpringDamper3D(n, 0.8, 0.1,
+                0.0003, 0.5, a, b))), STRING3D, List.of(new Strike("m6", 2, 0.2)), "nlSpringDamper3");
+        agree("nlSpringDamperClipped-3d", () -> init(string3D(16, (m, n, a, b) -> m.addClippedSpringDamper3D(n, 0.8,
+                0.05, 0.0003, 0.5, 0.3, a, b))), STRING3D, List.of(new Strike("m6", 2, 0.1)), "nlSpringDamperClipped");
+    }
+
+    /** A plectrum (heavy Mass3D) drawn across a 3-D string mass by a Pluck3D, rest length 0.3, scale 0.2. */
+    @Test
+    void aThreeDPluck() throws IOException {
+        agree("nlPluck-3d", () -> {
+            PhysicalModel m = string3D(12, (mm, n, a, b) -> mm.addSpringDamper3D(n, 0.8, 0.1, 0.0003, a, b));
+            m.addMass3D("plectrum", 1e4, new Vect3D(5, -0.5, 0.05), new Vect3D(0, 0.001 * 44100, 0));
+            m.addPluck3D("pluck", 0.3, 0.05, 0.0002, 0.2, "plectrum", "m5");
+            return init(m);
+        }, List.of(new Point("m5", 1, 10), new Point("m8", 1, 10)), List.of(), "nlPluck");
+    }
+
+    /** A heavy Mass3D bow drawn across a 3-D string mass by a Bow3D (its law on the relative velocity vector). */
+    @Test
+    void aThreeDBow() throws IOException {
+        String dsp = check("bow3d", bowed3D(), bowed3D(), List.of(new Point("m5", 1, 10), new Point("m8", 1, 10)),
+                List.of(), null);
+        assertTrue(dsp.contains("bow3("), "Bow3D is written with its law on the relative velocity");
+    }
+
+    static PhysicalModel bowed3D() {
+        PhysicalModel m = string3D(12, (mm, n, a, b) -> mm.addSpringDamper3D(n, 0.8, 0.1, 0.0003, a, b));
+        m.addMass3D("bow", 1e4, new Vect3D(5, 0, 0.3), new Vect3D(0, 0.002 * 44100, 0.0005 * 44100));
+        m.addBow3D("friction", 0.3, 0.004, 0, "bow", "m5");
+        return init(m);
+    }
+
+    /** A hammer (Mass3D) thrown at a 3-D bar through a ClippedContact3D, threshold 0.2. */
+    @Test
+    void aThreeDClippedContact() throws IOException {
+        agree("nlCollisionClipped-3d", () -> {
+            PhysicalModel m = new PhysicalModel(44100);
+            m.addOsc3D("bar", 1, 0.01, 0.0001, new Vect3D(0, 0, 1), new Vect3D());
+            m.addMass3D("hammer", 0.5, new Vect3D(0.05, 0.02, 1.6), new Vect3D(0, 0, -400));
+            m.addClippedContact3D("hit", 0.2, 0.02, 0.001, 2, 0.1, "bar", "hammer");
+            return init(m);
+        }, List.of(new Point("bar", 2, 1), new Point("hammer", 2, 1), new Point("bar", 0, 10)), List.of(),
+                "nlCollisionClipped");
+    }
+
     private static PhysicalModel init(PhysicalModel m) {
         m.init();
         return m;
