@@ -271,4 +271,35 @@ class NonlinearInteractionsTest {
         double e = 0.2;
         assertEquals(0.5 * 0.01 * e * e + 0.25 * 3 * e * e * e * e, m.getPotentialEnergy(), 1e-15);
     }
+
+    /**
+     * While a stand-in audio thread owns and steps the model, extra parameters set from another thread go through
+     * the queued path: each one reaches the model between two steps, in order, whether set on the handle or by name.
+     */
+    @Test
+    void extraParametersReachAModelThatAnotherThreadSteps() throws Exception {
+        PhysicalModel m = new PhysicalModel(1000);
+        m.addMass1D("a", 1, new Vect3D(0, 0, 0.1), new Vect3D());
+        m.addGround1D("g", new Vect3D(0, 0, 0));
+        ClippedSpringDamper1D c = m.addClippedSpringDamper1D("c", 0, 0.01, 0.001, 0.5, 0.04, "a", "g");
+        Bow1D b = m.addBow1D("b", 0.1, 0.01, 0, "a", "g");
+        m.init();
+        m.beginRealtimeStepping();
+        OwnerLoop owner = new OwnerLoop(m, 64, 100_000L, "audio").begin();
+        try {
+            for (int k = 1; k <= 20; k++) {
+                c.setMaxStiffness(0.04 + 0.001 * k);
+                b.setExtraParameter("scale", 0.01 * k);
+                b.setProfile(k % 2);
+            }
+            assertTrue(owner.awaitCalls(3));
+            assertEquals(0.06, c.getMaxStiffness(), 1e-15);
+            assertEquals(0.2, b.getScale(), 1e-15);
+            assertEquals(0, b.getProfile());
+            assertSame(null, owner.firstError.get());
+        } finally {
+            assertTrue(owner.halt());
+            m.endRealtimeStepping();
+        }
+    }
 }
