@@ -1,8 +1,5 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
-
 /**
  * A bowing friction, Faust mi.lib's {@code nlBow}: a force on the relative velocity v of the two masses that
  * grows with |v| (sticking) up to a peak and then falls (slipping), the stick-slip that makes a bowed string
@@ -10,8 +7,8 @@ import tactus.internal.ModelCore;
  * the scale; profile 1 its smooth curve {@code 0.63 Z v exp(-4 (v/scale)^2 + 1/2)}.
  */
 public abstract class Bow extends Interaction {
-    Bow(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    Bow(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
     /** @return the friction coefficient Z (REAL_UNITS: N·s/m; mi.lib's z). */

@@ -1,8 +1,5 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
-
 /**
  * An interaction with Faust mi.lib's clipped cubic law ({@code nlSpringDamperClipped}, and
  * {@code nlCollisionClipped} for contacts): {@code K e + C e^3 + Z v} up to mi.lib's clipping displacement
@@ -10,8 +7,8 @@ import tactus.internal.ModelCore;
  * {@code K e + Z v}, with K &ge; Kmax the linear {@code Kmax e + Z v}. The stiffness K is mi.lib's s.
  */
 public abstract class ClippedInteraction extends ElasticInteraction {
-    ClippedInteraction(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    ClippedInteraction(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
     /** @return the cubic stiffness C (REAL_UNITS: N/m^3; mi.lib's c). */

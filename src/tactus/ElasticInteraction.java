@@ -1,7 +1,5 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
 
 /**
  * An interaction with a stiffness K, a damping Z and a length parameter: the spring-damper family
@@ -9,8 +7,8 @@ import tactus.internal.ModelCore;
  * threshold or a bubble radius depending on the type.
  */
 public abstract class ElasticInteraction extends Interaction {
-    ElasticInteraction(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    ElasticInteraction(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
     /** @return the stiffness (REAL_UNITS: N/m). */

@@ -4,6 +4,7 @@ import java.util.concurrent.locks.Lock;
 import processing.core.PVector;
 import tactus.internal.model.Check;
 import tactus.internal.calls.BuildCalls;
+import tactus.internal.calls.ModuleCalls;
 import tactus.internal.calls.ParamCalls;
 import tactus.internal.calls.QueryCalls;
 import tactus.internal.calls.SettingsCalls;
@@ -12,7 +13,6 @@ import tactus.internal.model.ApiAccess;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.realtime.Stepping;
 import tactus.internal.ModelCore;
-import tactus.internal.calls.ControllerBook;
 
 /**
  * A mass-interaction physical model: masses and interactions addressed by name, simulated at a fixed rate with
@@ -41,8 +41,8 @@ import tactus.internal.calls.ControllerBook;
  * machinery in {@code tactus.internal} (not API; docs/architecture.md, "Inside tactus").
  */
 public class PhysicalModel {
-    /** The library version. */
-    public static final String VERSION = "0.2.0";
+    /** The library version, such as "0.3.0" (the release's, read from the library's resources when it loads). */
+    public static final String VERSION = tactus.internal.LibraryVersion.read();
 
     static {
         ApiAccess.install(new ApiDoors());
@@ -56,6 +56,8 @@ public class PhysicalModel {
     /** The rest of each call, by concern: once in the model, each hands the work to its room. */
     private final SettingsCalls settings;
     private final BuildCalls build;
+    /** The handles of this model's modules, by id (the one place that makes them). */
+    private final ModuleHandles handles;
     private final QueryCalls query;
     private final StateCalls state;
     private final ParamCalls param;
@@ -81,13 +83,13 @@ public class PhysicalModel {
         ModuleHandles handles = new ModuleHandles();
         core = new ModelCore(system, simRate, displayRate, handles);
         gate = new ModelLock(core);
-        handles.core = core;
-        handles.gate = gate;
+        handles.calls = new ModuleCalls(core, gate);
+        this.handles = handles;
         core.ramps = controllers;
         stepping = new Stepping(core, gate);
         settings = new SettingsCalls(core, gate);
         build = new BuildCalls(core, gate);
-        query = new QueryCalls(core, gate, controllers);
+        query = new QueryCalls(core, gate);
         state = new StateCalls(core, gate);
         param = new ParamCalls(core, gate);
     }
@@ -379,7 +381,7 @@ public class PhysicalModel {
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        return (ModelSnapshot) stepping.snapshot().view;
+        return stepping.snapshot().view;
     }
 
     // =================================================================== global medium
@@ -439,32 +441,32 @@ public class PhysicalModel {
      * @return the new module's handle
      */
     public Mass3D addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass3D(name, mass, initPos, initVel);
+        return handles.mass(build.addMass3D(name, mass, initPos, initVel));
     }
 
     /** Adds a free 3D mass that ignores air friction and gravity: only its interactions move it. */
     public Mass3DSimple addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass3DSimple(name, mass, initPos, initVel);
+        return handles.mass(build.addMass3DSimple(name, mass, initPos, initVel));
     }
 
     /** Adds a mass that moves in its initial z plane only (see {@link #addMass3D}). */
     public Mass2DPlane addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass2DPlane(name, mass, initPos, initVel);
+        return handles.mass(build.addMass2DPlane(name, mass, initPos, initVel));
     }
 
     /** Adds a mass that moves along z only (see {@link #addMass3D}). */
     public Mass1D addMass1D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass1D(name, mass, initPos, initVel);
+        return handles.mass(build.addMass1D(name, mass, initPos, initVel));
     }
 
     /** Adds a fixed point in 3D. */
     public Ground3D addGround3D(String name, Vect3D initPos) {
-        return build.addGround3D(name, initPos);
+        return handles.mass(build.addGround3D(name, initPos));
     }
 
     /** Adds a fixed point for 1D models. */
     public Ground1D addGround1D(String name, Vect3D initPos) {
-        return build.addGround1D(name, initPos);
+        return handles.mass(build.addGround1D(name, initPos));
     }
 
     /**
@@ -472,12 +474,12 @@ public class PhysicalModel {
      * (REAL_UNITS: N/m and N·s/m), also subject to air friction and gravity.
      */
     public Osc3D addOsc3D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc3D(name, mass, K, Z, initPos, initVel);
+        return handles.mass(build.addOsc3D(name, mass, K, Z, initPos, initVel));
     }
 
     /** Adds an oscillator that moves along z only (see {@link #addOsc3D}). */
     public Osc1D addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc1D(name, mass, K, Z, initPos, initVel);
+        return handles.mass(build.addOsc1D(name, mass, K, Z, initPos, initVel));
     }
 
     /**
@@ -490,12 +492,12 @@ public class PhysicalModel {
      * @param t60 60 dB decay time in seconds, &gt; 0 ({@code Double.POSITIVE_INFINITY} for none)
      */
     public Osc3D addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc3DTuned(name, mass, freqHz, t60, initPos, initVel);
+        return handles.mass(build.addOsc3DTuned(name, mass, freqHz, t60, initPos, initVel));
     }
 
     /** Adds a 1D oscillator tuned by its pitch and decay (see {@link #addOsc3DTuned}). */
     public Osc1D addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc1DTuned(name, mass, freqHz, t60, initPos, initVel);
+        return handles.mass(build.addOsc1DTuned(name, mass, freqHz, t60, initPos, initVel));
     }
 
     /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
@@ -521,84 +523,91 @@ public class PhysicalModel {
      * @param smoothing EWMA length in steps, &ge; 1 (1 means no smoothing)
      */
     public HapticInput3D addHapticInput3D(String name, Vect3D initPos, int smoothing) {
-        return build.addHapticInput3D(name, initPos, smoothing);
+        return handles.mass(build.addHapticInput3D(name, initPos, smoothing));
     }
 
     /** Adds a kinematic position driver that follows its target through an EWMA (weight 1/smoothing). */
     public PosInput3D addPosInput3D(String name, Vect3D initPos, int smoothing) {
-        return build.addPosInput3D(name, initPos, smoothing);
+        return handles.mass(build.addPosInput3D(name, initPos, smoothing));
     }
 
     // =================================================================== adding interactions
 
     /** Adds a spring: force -K (d - dist) along the line between the masses (REAL_UNITS: K in N/m). */
     public Spring3D addSpring3D(String name, double dist, double K, String m1, String m2) {
-        return build.addSpring3D(name, dist, K, m1, m2);
+        return handles.link(build.addSpring3D(name, dist, K, m1, m2));
     }
 
     /** Adds a spring between two mass handles (see {@link #addSpring3D(String, double, double, String, String)}). */
     public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return build.addSpring3D(name, dist, K, m1, m2);
+        String[] n = handles.distinct("addSpring3D", name, m1, m2);
+        return addSpring3D(name, dist, K, n[0], n[1]);
     }
 
     /** Adds a damper: force -Z (d(n) - d(n-1)) along the line between the masses (REAL_UNITS: N·s/m). */
     public Damper3D addDamper3D(String name, double Z, String m1, String m2) {
-        return build.addDamper3D(name, Z, m1, m2);
+        return handles.link(build.addDamper3D(name, Z, m1, m2));
     }
 
     /** Adds a damper between two mass handles. */
     public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return build.addDamper3D(name, Z, m1, m2);
+        String[] n = handles.distinct("addDamper3D", name, m1, m2);
+        return addDamper3D(name, Z, n[0], n[1]);
     }
 
     /** Adds a spring and damper in parallel, with rest length {@code dist}. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addSpringDamper3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a spring-damper between two mass handles. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addSpringDamper3D", name, m1, m2);
+        return addSpringDamper3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a spring-damper that acts along z only, on the signed difference z1 - z2 with rest value {@code dist}. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addSpringDamper1D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a 1D spring-damper between two mass handles. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addSpringDamper1D", name, m1, m2);
+        return addSpringDamper1D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a rope: a spring-damper that acts only while the masses are farther apart than {@code dist}. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addRope3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addRope3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a rope between two mass handles. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addRope3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addRope3D", name, m1, m2);
+        return addRope3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addContact3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addContact3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a contact between two mass handles. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addContact3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addContact3D", name, m1, m2);
+        return addContact3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a bubble: keeps m1 within radius {@code dist} of m2 with a spring-damper acting only outside it. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addBubble3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addBubble3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a bubble between two mass handles. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addBubble3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addBubble3D", name, m1, m2);
+        return addBubble3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /**
@@ -608,13 +617,13 @@ public class PhysicalModel {
      */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, String m1) {
-        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
+        return handles.link(build.addPlaneContact(name, l0, K, Z, orientation, pos, m1));
     }
 
     /** Adds a plane contact on a mass handle. */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, Mass m1) {
-        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
+        return addPlaneContact(name, l0, K, Z, orientation, pos, handles.nameOf(m1));
     }
 
     /**
@@ -623,12 +632,13 @@ public class PhysicalModel {
      * keeps it bounded by attr / dLim².
      */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
-        return build.addAttractor3D(name, dLim, attr, m1, m2);
+        return handles.link(build.addAttractor3D(name, dLim, attr, m1, m2));
     }
 
     /** Adds an attractor between two mass handles. */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return build.addAttractor3D(name, dLim, attr, m1, m2);
+        String[] n = handles.distinct("addAttractor3D", name, m1, m2);
+        return addAttractor3D(name, dLim, attr, n[0], n[1]);
     }
 
     // ---- Faust mi.lib's nonlinear interactions (docs/modules.md)
@@ -642,127 +652,227 @@ public class PhysicalModel {
      */
     public Interaction addInteraction(linkModuleType type, String name, double dist, double K, double Z,
                                       double[] extra, String m1, String m2) {
-        return build.addInteraction(type, name, dist, K, Z, extra, m1, m2);
+        return handles.link(build.addInteraction(type, name, dist, K, Z, extra, m1, m2));
     }
 
-    /** Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS). */
-    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
-        return build.addQuadraticSpringDamper3D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K
+     * e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q,
+            String m1, String m2) {
+        return handles.link(build.addQuadraticSpringDamper3D(name, dist, K, Z, Q, m1, m2));
     }
 
-    /** Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS). */
-    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
-        return build.addQuadraticSpringDamper3D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K
+     * e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addQuadraticSpringDamper3D", name, m1, m2);
+        return addQuadraticSpringDamper3D(name, dist, K, Z, Q, n[0], n[1]);
     }
 
-    /** Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e = z1 - z2 - dist; Q in N/m^2 (REAL_UNITS). */
-    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
-        return build.addQuadraticSpringDamper1D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e =
+     * z1 - z2 - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q,
+            String m1, String m2) {
+        return handles.link(build.addQuadraticSpringDamper1D(name, dist, K, Z, Q, m1, m2));
     }
 
-    /** Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e = z1 - z2 - dist; Q in N/m^2 (REAL_UNITS). */
-    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
-        return build.addQuadraticSpringDamper1D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e =
+     * z1 - z2 - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addQuadraticSpringDamper1D", name, m1, m2);
+        return addQuadraticSpringDamper1D(name, dist, K, Z, Q, n[0], n[1]);
     }
 
-    /** Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS). */
-    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
-        return build.addCubicSpringDamper3D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e +
+     * Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return handles.link(build.addCubicSpringDamper3D(name, dist, K, Z, Q, m1, m2));
     }
 
-    /** Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS). */
-    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
-        return build.addCubicSpringDamper3D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e +
+     * Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1,
+            Mass m2) {
+        String[] n = handles.distinct("addCubicSpringDamper3D", name, m1, m2);
+        return addCubicSpringDamper3D(name, dist, K, Z, Q, n[0], n[1]);
     }
 
-    /** Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 - dist; Q in N/m^3 (REAL_UNITS). */
-    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
-        return build.addCubicSpringDamper1D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 -
+     * dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return handles.link(build.addCubicSpringDamper1D(name, dist, K, Z, Q, m1, m2));
     }
 
-    /** Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 - dist; Q in N/m^3 (REAL_UNITS). */
-    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1, Mass m2) {
-        return build.addCubicSpringDamper1D(name, dist, K, Z, Q, m1, m2);
+    /**
+     * Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 -
+     * dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1,
+            Mass m2) {
+        String[] n = handles.distinct("addCubicSpringDamper1D", name, m1, m2);
+        return addCubicSpringDamper1D(name, dist, K, Z, Q, n[0], n[1]);
     }
 
-    /** Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
-        return build.addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's
+     * nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C,
+            double Kmax, String m1, String m2) {
+        return handles.link(build.addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, m1, m2));
     }
 
-    /** Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
-        return build.addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's
+     * nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C,
+            double Kmax, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedSpringDamper3D", name, m1, m2);
+        return addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, n[0], n[1]);
     }
 
-    /** Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
-        return build.addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c
+     * = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C,
+            double Kmax, String m1, String m2) {
+        return handles.link(build.addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, m1, m2));
     }
 
-    /** Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
-        return build.addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c
+     * = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C,
+            double Kmax, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedSpringDamper1D", name, m1, m2);
+        return addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, n[0], n[1]);
     }
 
-    /** Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and lets go once |d - dist| reaches scale (length units, > 0). */
+    /**
+     * Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and
+     * lets go once |d - dist| reaches scale (length units, > 0).
+     */
     public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
-        return build.addPluck3D(name, dist, K, Z, scale, m1, m2);
+        return handles.link(build.addPluck3D(name, dist, K, Z, scale, m1, m2));
     }
 
-    /** Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and lets go once |d - dist| reaches scale (length units, > 0). */
+    /**
+     * Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and
+     * lets go once |d - dist| reaches scale (length units, > 0).
+     */
     public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
-        return build.addPluck3D(name, dist, K, Z, scale, m1, m2);
+        String[] n = handles.distinct("addPluck3D", name, m1, m2);
+        return addPluck3D(name, dist, K, Z, scale, n[0], n[1]);
     }
 
-    /** Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale (length units, > 0). */
+    /**
+     * Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale
+     * (length units, > 0).
+     */
     public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
-        return build.addPluck1D(name, dist, K, Z, scale, m1, m2);
+        return handles.link(build.addPluck1D(name, dist, K, Z, scale, m1, m2));
     }
 
-    /** Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale (length units, > 0). */
+    /**
+     * Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale
+     * (length units, > 0).
+     */
     public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
-        return build.addPluck1D(name, dist, K, Z, scale, m1, m2);
+        String[] n = handles.distinct("addPluck1D", name, m1, m2);
+        return addPluck1D(name, dist, K, Z, scale, n[0], n[1]);
     }
 
-    /** Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth). */
+    /**
+     * Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the
+     * velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth).
+     */
     public Bow3D addBow3D(String name, double Z, double scale, int profile, String m1, String m2) {
-        return build.addBow3D(name, Z, scale, profile, m1, m2);
+        return handles.link(build.addBow3D(name, Z, scale, profile, m1, m2));
     }
 
-    /** Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth). */
+    /**
+     * Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the
+     * velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth).
+     */
     public Bow3D addBow3D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
-        return build.addBow3D(name, Z, scale, profile, m1, m2);
+        String[] n = handles.distinct("addBow3D", name, m1, m2);
+        return addBow3D(name, Z, scale, profile, n[0], n[1]);
     }
 
-    /** Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth). */
+    /**
+     * Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0),
+     * profile 0 (piecewise linear) or 1 (smooth).
+     */
     public Bow1D addBow1D(String name, double Z, double scale, int profile, String m1, String m2) {
-        return build.addBow1D(name, Z, scale, profile, m1, m2);
+        return handles.link(build.addBow1D(name, Z, scale, profile, m1, m2));
     }
 
-    /** Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth). */
+    /**
+     * Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0),
+     * profile 0 (piecewise linear) or 1 (smooth).
+     */
     public Bow1D addBow1D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
-        return build.addBow1D(name, Z, scale, profile, m1, m2);
+        String[] n = handles.distinct("addBow1D", name, m1, m2);
+        return addBow1D(name, Z, scale, profile, n[0], n[1]);
     }
 
-    /** Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
-        return build.addClippedContact3D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax,
+            String m1, String m2) {
+        return handles.link(build.addClippedContact3D(name, dist, K, Z, C, Kmax, m1, m2));
     }
 
-    /** Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
-        return build.addClippedContact3D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedContact3D", name, m1, m2);
+        return addClippedContact3D(name, dist, K, Z, C, Kmax, n[0], n[1]);
     }
 
-    /** Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, String m1, String m2) {
-        return build.addClippedContact1D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax,
+            String m1, String m2) {
+        return handles.link(build.addClippedContact1D(name, dist, K, Z, C, Kmax, m1, m2));
     }
 
-    /** Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS). */
-    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, Mass m1, Mass m2) {
-        return build.addClippedContact1D(name, dist, K, Z, C, Kmax, m1, m2);
+    /**
+     * Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedContact1D", name, m1, m2);
+        return addClippedContact1D(name, dist, K, Z, C, Kmax, n[0], n[1]);
     }
 
     // =================================================================== look-up
@@ -799,17 +909,17 @@ public class PhysicalModel {
 
     /** @return the handle of a mass by name. */
     public Mass getMass(String name) {
-        return query.getMass(name);
+        return query.read(() -> handles.mass(query.getMass(name))); // the id and its handle, read together
     }
 
     /** @return the handle of the first interaction with this name. */
     public Interaction getInteraction(String name) {
-        return query.getInteraction(name);
+        return query.read(() -> handles.link(query.getInteraction(name)));
     }
 
     /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
     public Interaction getInteractionAt(int i) {
-        return query.getInteractionAt(i);
+        return query.read(() -> handles.link(query.getInteractionAt(i)));
     }
 
     /** @return the name of the mass at an index. */
@@ -1108,12 +1218,16 @@ public class PhysicalModel {
      */
     public void addParamController(String name, String subsetName, String paramName, float rampTime) {
         Check.name("addParamController", name);
-        query.addParamController(name, new ParamController(this, rampTime, subsetName, paramName));
+        ParamController pc = new ParamController(this, rampTime, subsetName, paramName);
+        query.read(() -> {
+            controllers.put(name, pc);
+            return null;
+        });
     }
 
     /** @return the named parameter controller, or null when there is none. */
     public ParamController getParamController(String name) {
-        return query.getParamController(name);
+        return query.read(() -> controllers.get(name));
     }
 
     /** The spelling of {@link #addParamController} used by the paper-era example sketches. */
@@ -1341,7 +1455,7 @@ public class PhysicalModel {
      * @return the handle of the new fixed point
      */
     public Ground3D changeToFixedPoint(String name) {
-        return build.changeToFixedPoint(name);
+        return handles.mass(build.changeToFixedPoint(name));
     }
 
     /** Removes every mass, interaction, subset and contact group; names become free again, and a diverged model may run again. */

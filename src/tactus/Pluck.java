@@ -1,15 +1,12 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
-
 /**
  * A plucking interaction, Faust mi.lib's {@code nlPluck}: a repulsive spring-damper on the elongation e that pushes
  * back harder up to a tenth of its distance scale, then less, and lets go (no force) once |e| reaches the scale.
  */
 public abstract class Pluck extends ElasticInteraction {
-    Pluck(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    Pluck(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
     /** @return the distance scale past which the pluck lets go (model length units; mi.lib's scale). */

@@ -1,14 +1,13 @@
-package tactus.internal.calls;
+package tactus;
 
 import java.util.LinkedHashMap;
-import tactus.ParamController;
 import tactus.internal.model.Ramps;
 
 /**
  * A model's parameter controllers by name, in creation order, and their ramps as the stepping calls see them
  * ({@link Ramps}). Every method assumes the caller is inside a facade call. Not API.
  */
-public final class ControllerBook implements Ramps {
+final class ControllerBook implements Ramps {
     private final LinkedHashMap<String, ParamController> controllers = new LinkedHashMap<>();
     /** The same controllers as an array, so that the stepping path checks them without allocating an iterator. */
     private volatile ParamController[] controllerArray = new ParamController[0];
