@@ -11,7 +11,7 @@ public abstract class Bow extends Interaction {
         super(handles, id);
     }
 
-    /** @return the friction coefficient Z (REAL_UNITS: N·s/m; mi.lib's z). */
+    /** {@return the friction coefficient Z (REAL_UNITS: N·s/m; mi.lib's z)} */
     public double getDamping() {
         return damping();
     }
@@ -21,7 +21,7 @@ public abstract class Bow extends Interaction {
         damping(Z);
     }
 
-    /** @return the velocity scale (REAL_UNITS: m/s, ALGO_UNITS: length per step; mi.lib's scale). */
+    /** {@return the velocity scale (REAL_UNITS: m/s, ALGO_UNITS: length per step; mi.lib's scale)} */
     public double getScale() {
         return aux("getScale", 0);
     }
@@ -31,7 +31,7 @@ public abstract class Bow extends Interaction {
         aux("setScale", 0, scale);
     }
 
-    /** @return the friction profile: 0 piecewise linear, 1 smooth (mi.lib's type). */
+    /** {@return the friction profile: 0 piecewise linear, 1 smooth (mi.lib's type)} */
     public int getProfile() {
         return (int) aux("getProfile", 1);
     }

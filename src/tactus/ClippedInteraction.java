@@ -11,7 +11,7 @@ public abstract class ClippedInteraction extends ElasticInteraction {
         super(handles, id);
     }
 
-    /** @return the cubic stiffness C (REAL_UNITS: N/m^3; mi.lib's c). */
+    /** {@return the cubic stiffness C (REAL_UNITS: N/m^3; mi.lib's c)} */
     public double getCubicStiffness() {
         return aux("getCubicStiffness", 0);
     }
@@ -21,7 +21,7 @@ public abstract class ClippedInteraction extends ElasticInteraction {
         aux("setCubicStiffness", 0, c);
     }
 
-    /** @return the bounding stiffness Kmax (REAL_UNITS: N/m; mi.lib's k). */
+    /** {@return the bounding stiffness Kmax (REAL_UNITS: N/m; mi.lib's k)} */
     public double getMaxStiffness() {
         return aux("getMaxStiffness", 1);
     }

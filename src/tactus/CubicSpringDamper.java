@@ -10,7 +10,7 @@ public abstract class CubicSpringDamper extends ElasticInteraction {
         super(handles, id);
     }
 
-    /** @return the cubic stiffness Q (REAL_UNITS: N/m^3; mi.lib's q). */
+    /** {@return the cubic stiffness Q (REAL_UNITS: N/m^3; mi.lib's q)} */
     public double getCubicStiffness() {
         return aux("getCubicStiffness", 0);
     }

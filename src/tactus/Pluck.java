@@ -9,7 +9,7 @@ public abstract class Pluck extends ElasticInteraction {
         super(handles, id);
     }
 
-    /** @return the distance scale past which the pluck lets go (model length units; mi.lib's scale). */
+    /** {@return the distance scale past which the pluck lets go (model length units; mi.lib's scale)} */
     public double getScale() {
         return aux("getScale", 0);
     }

@@ -10,7 +10,7 @@ public abstract class QuadraticSpringDamper extends ElasticInteraction {
         super(handles, id);
     }
 
-    /** @return the quadratic stiffness Q (REAL_UNITS: N/m^2; mi.lib's q). */
+    /** {@return the quadratic stiffness Q (REAL_UNITS: N/m^2; mi.lib's q)} */
     public double getQuadraticStiffness() {
         return aux("getQuadraticStiffness", 0);
     }

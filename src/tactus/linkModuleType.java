@@ -55,38 +55,38 @@ public enum linkModuleType {
 
     // ---- the kind's descriptor (tactus.engine.LinkKind), for the rooms that may not import the engine
 
-    /** @return the engine's descriptor of this type, or null for UNDEFINED. */
+    /** {@return the engine's descriptor of this type, or null for UNDEFINED} */
     private LinkKind kind() {
         return LinkKind.byLabel(name());
     }
 
-    /** @return true when the type acts along z only, on the signed difference z1 - z2 (a 1-D module). */
+    /** {@return true when the type acts along z only, on the signed difference z1 - z2 (a 1-D module)} */
     public boolean isOneDimensional() {
         LinkKind k = kind();
         return k != null && k.isOneDimensional();
     }
 
-    /** @return true when the type is one of Faust mi.lib's nonlinear interactions. */
+    /** {@return true when the type is one of Faust mi.lib's nonlinear interactions} */
     public boolean isNonlinear() {
         LinkKind k = kind();
         return k != null && k.isNonlinear();
     }
 
-    /** @return the names of the type's parameters beyond stiffness, damping and length (empty for most types). */
+    /** {@return the names of the type's parameters beyond stiffness, damping and length (empty for most types)} */
     public String[] extraParameterNames() {
         LinkKind k = kind();
         return k == null ? new String[0] : k.auxNames();
     }
 
-    /** @return the mi.lib function whose law the type applies (along z in 1-D, along the distance in 3-D), or null. */
+    /** {@return the mi.lib function whose law the type applies (along z in 1-D, along the distance in 3-D), or null} */
     public String miLibFunction() {
         LinkKind k = kind();
         return k == null ? null : k.miLibFunction();
     }
 
     /**
-     * @return the arguments of {@link #miLibFunction()} before its initial positions, in mi.lib's order, named as
-     *     this API names them: {@code "K"}, {@code "Z"}, {@code "dist"} or an extra parameter's name
+     * {@return the arguments of {@link #miLibFunction()} before its initial positions, in mi.lib's order, named as
+     * this API names them: {@code "K"}, {@code "Z"}, {@code "dist"} or an extra parameter's name}
      */
     public String[] miLibArguments() {
         LinkKind k = kind();
@@ -94,32 +94,32 @@ public enum linkModuleType {
     }
 
     /**
-     * @return the power of the sampling rate that turns extra parameter {@code i} from REAL_UNITS into a per-step
-     *     value (per step = real / fs^power): 2 for stiffnesses, 1 for velocities, 0 for lengths and numbers
+     * {@return the power of the sampling rate that turns extra parameter {@code i} from REAL_UNITS into a per-step
+     * value (per step = real / fs^power): 2 for stiffnesses, 1 for velocities, 0 for lengths and numbers}
      */
     public int extraParameterRatePower(int i) {
         return kind().auxRatePower(i);
     }
 
-    /** @return the default colour of the type in drawings, as 0xAARRGGBB (alpha 0: drawn without a line). */
+    /** {@return the default colour of the type in drawings, as 0xAARRGGBB (alpha 0: drawn without a line)} */
     public int defaultColor() {
         LinkKind k = kind();
         return k == null ? 0x007D7D7D : k.color();
     }
 
-    /** @return true when a listening point can read the type's tension (its elongation while it acts). */
+    /** {@return true when a listening point can read the type's tension (its elongation while it acts)} */
     public boolean hasReadableTension() {
         LinkKind k = kind();
         return k != null && k.engagement() != LinkKind.Engagement.NONE;
     }
 
-    /** @return true when the type acts only while its masses are closer than its length (contacts). */
+    /** {@return true when the type acts only while its masses are closer than its length (contacts)} */
     public boolean actsOnlyCompressed() {
         LinkKind k = kind();
         return k != null && k.engagement() == LinkKind.Engagement.WHEN_COMPRESSED;
     }
 
-    /** @return true when the type acts only while its masses are farther apart than its length (ropes, bubbles). */
+    /** {@return true when the type acts only while its masses are farther apart than its length (ropes, bubbles)} */
     public boolean actsOnlyStretched() {
         LinkKind k = kind();
         return k != null && k.engagement() == LinkKind.Engagement.WHEN_STRETCHED;

@@ -143,12 +143,12 @@ public enum LinkKind {
         this.auxUnits = auxUnits;
     }
 
-    /** @return the module name used in the API, in model files and in messages, for example {@code "SpringDamper3D"}. */
+    /** {@return the module name used in the API, in model files and in messages, for example {@code "SpringDamper3D"}} */
     public String label() {
         return label;
     }
 
-    /** @return the kind whose {@link #label()} is {@code label}, or null when there is none. */
+    /** {@return the kind whose {@link #label()} is {@code label}, or null when there is none} */
     public static LinkKind byLabel(String label) {
         for (LinkKind k : Every.KINDS) {
             if (k.label.equals(label)) {
@@ -158,66 +158,66 @@ public enum LinkKind {
         return null;
     }
 
-    /** @return true when the kind has a stiffness parameter K. */
+    /** {@return true when the kind has a stiffness parameter K} */
     public boolean hasStiffness() {
         return (flags & STIFF) != 0;
     }
 
-    /** @return true when the kind has a damping parameter Z. */
+    /** {@return true when the kind has a damping parameter Z} */
     public boolean hasDamping() {
         return (flags & DAMPED) != 0;
     }
 
     /**
-     * @return true when the kind has a length parameter: rest length (springs, 1D spring-damper, rope, pluck),
-     *     threshold (contacts), radius (bubble), offset (plane contact) or limit distance (attractor)
+     * {@return true when the kind has a length parameter: rest length (springs, 1D spring-damper, rope, pluck),
+     * threshold (contacts), radius (bubble), offset (plane contact) or limit distance (attractor)}
      */
     public boolean hasLength() {
         return (flags & LENGTH) != 0;
     }
 
-    /** @return true when the kind acts on one mass only (the plane contact). */
+    /** {@return true when the kind acts on one mass only (the plane contact)} */
     public boolean isSingleMass() {
         return (flags & SINGLE) != 0;
     }
 
-    /** @return true when the force applies only under a distance condition and the damper then starts afresh. */
+    /** {@return true when the force applies only under a distance condition and the damper then starts afresh} */
     public boolean isConditional() {
         return (flags & CONDITIONAL) != 0;
     }
 
-    /** @return true when the kind acts along z only, on the signed difference z1 - z2 (a 1-D module). */
+    /** {@return true when the kind acts along z only, on the signed difference z1 - z2 (a 1-D module)} */
     public boolean isOneDimensional() {
         return (flags & ONE_D) != 0;
     }
 
-    /** @return true when the kind keeps a previous distance for its damper (false: plane, attractor, bows). */
+    /** {@return true when the kind keeps a previous distance for its damper (false: plane, attractor, bows)} */
     public boolean keepsHistory() {
         return (flags & NO_HISTORY) == 0;
     }
 
-    /** @return how a listening point reads the tension of a link of this kind. */
+    /** {@return how a listening point reads the tension of a link of this kind} */
     public Engagement engagement() {
         return engagement;
     }
 
-    /** @return the default colour of the kind in drawings, as 0xAARRGGBB (alpha 0: drawn without its line). */
+    /** {@return the default colour of the kind in drawings, as 0xAARRGGBB (alpha 0: drawn without its line)} */
     public int color() {
         return color;
     }
 
     /**
-     * @return the name of the function of Faust's mi.lib whose law the kind applies (a 1-D kind exactly; a 3-D one
-     *     along the distance), or null
+     * {@return the name of the function of Faust's mi.lib whose law the kind applies (a 1-D kind exactly; a 3-D one
+     * along the distance), or null}
      */
     public String miLibFunction() {
         return miLib == null ? null : miLib.substring(0, miLib.indexOf('('));
     }
 
     /**
-     * @return the parameters the mi.lib function takes before its initial positions, in its order, named as the
-     *     kind names them ({@code "K"}, {@code "Z"}, {@code "dist"} or one of {@link #auxNames()}); empty when the
-     *     kind has no mi.lib function
+     * {@return the parameters the mi.lib function takes before its initial positions, in its order, named as the kind
+     * names them ({@code "K"}, {@code "Z"}, {@code "dist"} or one of {@link #auxNames()}); empty when the kind has no
+     * mi.lib function}
      */
     public String[] miLibArguments() {
         if (miLib == null) {
@@ -227,9 +227,9 @@ public enum LinkKind {
     }
 
     /**
-     * @return the power of the sampling rate that converts parameter {@code i} beyond K, Z and the length from
-     *     REAL_UNITS to per-step values (per step = real / fs^power): 2 for stiffnesses, 1 for dampings and
-     *     velocities, 0 for lengths and numbers
+     * {@return the power of the sampling rate that converts parameter {@code i} beyond K, Z and the length from
+     * REAL_UNITS to per-step values (per step = real / fs^power): 2 for stiffnesses, 1 for dampings and velocities, 0
+     * for lengths and numbers}
      */
     public int auxRatePower(int i) {
         switch (auxUnits[i]) {
@@ -243,32 +243,32 @@ public enum LinkKind {
         }
     }
 
-    /** @return the names of the kind's parameters beyond K, Z and the length (empty for most kinds). */
+    /** {@return the names of the kind's parameters beyond K, Z and the length (empty for most kinds)} */
     public String[] auxNames() {
         return auxNames.clone();
     }
 
-    /** @return the number of parameters beyond K, Z and the length. */
+    /** {@return the number of parameters beyond K, Z and the length} */
     public int auxCount() {
         return auxNames.length;
     }
 
-    /** @return the unit class of parameter {@code i} beyond K, Z and the length. */
+    /** {@return the unit class of parameter {@code i} beyond K, Z and the length} */
     public ParamUnit auxUnit(int i) {
         return auxUnits[i];
     }
 
-    /** @return a copy of the unit classes of the parameters beyond K, Z and the length. */
+    /** {@return a copy of the unit classes of the parameters beyond K, Z and the length} */
     public ParamUnit[] auxUnits() {
         return auxUnits.clone();
     }
 
-    /** @return true when the kind's force law is one of mi.lib's nonlinear interactions. */
+    /** {@return true when the kind's force law is one of mi.lib's nonlinear interactions} */
     public boolean isNonlinear() {
         return ordinal() >= QUADRATIC_SPRING_DAMPER3D.ordinal();
     }
 
-    /** @return the kernel that steps one batch of this kind. */
+    /** {@return the kernel that steps one batch of this kind} */
     Kernel kernel(LinkBatch b, StepPlan p) {
         return kernel.create(b, p);
     }

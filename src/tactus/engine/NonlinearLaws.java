@@ -47,7 +47,7 @@ public final class NonlinearLaws {
         return k * e + (z + CLIP_OVERDAMPING * k) * v;
     }
 
-    /** @return mi.lib's clipping displacement {@code b = sqrt(k - s) / c} of {@link #clipped} (per-step units). */
+    /** {@return mi.lib's clipping displacement {@code b = sqrt(k - s) / c} of {@link #clipped} (per-step units)} */
     public static double clipPoint(double s, double c, double k) {
         return Math.sqrt(k - s) / c;
     }
@@ -133,8 +133,8 @@ public final class NonlinearLaws {
     }
 
     /**
-     * @return the largest elastic slope {@code |dF/de|} that {@link #clipped} reaches: its bound k, or the cubic's
-     *     slope {@code s + 3 c b^2} at mi.lib's clipping point b when that is larger
+     * {@return the largest elastic slope {@code |dF/de|} that {@link #clipped} reaches: its bound k, or the cubic's
+     * slope {@code s + 3 c b^2} at mi.lib's clipping point b when that is larger}
      */
     public static double clippedStiffnessBound(double s, double c, double k) {
         if (c == 0) {
@@ -147,7 +147,7 @@ public final class NonlinearLaws {
         return Math.max(Math.abs(k), Math.abs(s + 3 * c * b * b));
     }
 
-    /** @return the largest slope {@code |dF/dv|} of {@link #bow}: {@code 2z/3} piecewise, {@code 0.63 e^0.5 z} smooth. */
+    /** {@return the largest slope {@code |dF/dv|} of {@link #bow}: {@code 2z/3} piecewise, {@code 0.63 e^0.5 z} smooth} */
     public static double bowDampingBound(double z, double type) {
         return type > 0 ? 0.63 * Math.exp(0.5) * Math.abs(z) : Math.abs(z - z / BOW_SHARPNESS);
     }
