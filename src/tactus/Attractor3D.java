@@ -9,7 +9,7 @@ public final class Attractor3D extends Interaction {
         super(handles, id);
     }
 
-    /** @return the attraction factor A (REAL_UNITS: N·m^2); negative values repel. */
+    /** {@return the attraction factor A (REAL_UNITS: N·m^2); negative values repel} */
     public double getAttraction() {
         return param(LinkParam.ATTRACTION);
     }
@@ -20,7 +20,7 @@ public final class Attractor3D extends Interaction {
         calls.setLinkParam(id, "setAttraction", LinkParam.ATTRACTION, a);
     }
 
-    /** @return the limit distance below which no force acts. */
+    /** {@return the limit distance below which no force acts} */
     public double getLimit() {
         return length();
     }

@@ -18,7 +18,7 @@ final class ControllerBook implements Ramps {
         controllerArray = controllers.values().toArray(new ParamController[0]);
     }
 
-    /** @return the named parameter controller, or null. */
+    /** {@return the named parameter controller, or null} */
     public ParamController get(String name) {
         return controllers.get(name);
     }

@@ -7,7 +7,7 @@ public final class Damper3D extends Interaction {
         super(handles, id);
     }
 
-    /** @return the damping (REAL_UNITS: N·s/m). */
+    /** {@return the damping (REAL_UNITS: N·s/m)} */
     public double getDamping() {
         return damping();
     }

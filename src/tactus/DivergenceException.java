@@ -32,8 +32,8 @@ public class DivergenceException extends IllegalStateException {
     }
 
     /**
-     * @return "Mass3D \"name\" diverged at step N: position (x, y, z); the model is frozen until
-     *     clearDivergence()", formatted on the first call
+     * {@return "Mass3D \"name\" diverged at step N: position (x, y, z); the model is frozen until
+     *     clearDivergence()", formatted on the first call}
      */
     @Override
     public String getMessage() {
@@ -46,12 +46,12 @@ public class DivergenceException extends IllegalStateException {
         return m;
     }
 
-    /** @return the name of the first offending mass. */
+    /** {@return the name of the first offending mass} */
     public String getMassName() {
         return massName;
     }
 
-    /** @return the step count at which the divergence was detected. */
+    /** {@return the step count at which the divergence was detected} */
     public long getStep() {
         return step;
     }

@@ -11,7 +11,7 @@ public abstract class ElasticInteraction extends Interaction {
         super(handles, id);
     }
 
-    /** @return the stiffness (REAL_UNITS: N/m). */
+    /** {@return the stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
         return stiffness();
     }
@@ -21,7 +21,7 @@ public abstract class ElasticInteraction extends Interaction {
         stiffness(K);
     }
 
-    /** @return the damping (REAL_UNITS: N·s/m). */
+    /** {@return the damping (REAL_UNITS: N·s/m)} */
     public double getDamping() {
         return damping();
     }
@@ -31,7 +31,7 @@ public abstract class ElasticInteraction extends Interaction {
         damping(Z);
     }
 
-    /** @return the length parameter: rest length, threshold or radius (model length units). */
+    /** {@return the length parameter: rest length, threshold or radius (model length units)} */
     public double getLength() {
         return length();
     }

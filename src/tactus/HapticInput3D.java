@@ -17,7 +17,7 @@ public final class HapticInput3D extends Mass {
         calls.setInputTarget(id, stamp, pos);
     }
 
-    /** @return the force accumulated since the last call (REAL_UNITS: N), and resets the accumulator. */
+    /** {@return the force accumulated since the last call (REAL_UNITS: N), and resets the accumulator} */
     public Vect3D takeForce() {
         return takeForce(new Vect3D());
     }

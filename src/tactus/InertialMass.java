@@ -9,7 +9,7 @@ public abstract class InertialMass extends Mass {
         super(handles, id, stamp);
     }
 
-    /** @return the inertia (REAL_UNITS: kg). */
+    /** {@return the inertia (REAL_UNITS: kg)} */
     public double getMass() {
         checkValid();
         return calls.massParam(id, stamp, MassParam.MASS);

@@ -24,24 +24,24 @@ public abstract class Interaction extends Module {
         return getClass().getSimpleName();
     }
 
-    /** @return the handle of the first mass. */
+    /** {@return the handle of the first mass} */
     public Mass getMass1() {
         checkValid();
         return calls.read(() -> handles.mass(calls.linkEnd(id, false)));
     }
 
-    /** @return the handle of the second mass (the same as the first for a plane contact). */
+    /** {@return the handle of the second mass (the same as the first for a plane contact)} */
     public Mass getMass2() {
         checkValid();
         return calls.read(() -> handles.mass(calls.linkEnd(id, true)));
     }
 
-    /** @return the current distance between the two masses (for a plane contact, the gap to the plane). */
+    /** {@return the current distance between the two masses (for a plane contact, the gap to the plane)} */
     public double getDistance() {
         return param(LinkParam.DISTANCE);
     }
 
-    /** @return the distance minus the length parameter (rest length, threshold, radius, offset or limit). */
+    /** {@return the distance minus the length parameter (rest length, threshold, radius, offset or limit)} */
     public double getElongation() {
         return param(LinkParam.ELONGATION);
     }

@@ -28,7 +28,7 @@ public abstract class Mass extends Module {
         return calls.massType(id, stamp);
     }
 
-    /** @return a copy of the current position, in model units. */
+    /** {@return a copy of the current position, in model units} */
     public Vect3D getPosition() {
         return getPosition(new Vect3D());
     }
@@ -39,13 +39,13 @@ public abstract class Mass extends Module {
         return calls.motion(id, stamp, ModuleCalls.Motion.POSITION, out);
     }
 
-    /** @return the velocity over the last step, in units per second. */
+    /** {@return the velocity over the last step, in units per second} */
     public Vect3D getVelocity() {
         checkValid();
         return calls.motion(id, stamp, ModuleCalls.Motion.VELOCITY, new Vect3D());
     }
 
-    /** @return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N). */
+    /** {@return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N)} */
     public Vect3D getForce() {
         checkValid();
         return calls.motion(id, stamp, ModuleCalls.Motion.FORCE, new Vect3D());

@@ -49,15 +49,15 @@ public abstract class Module {
         }
     }
 
-    /** @return true while the module is part of its model. */
+    /** {@return true while the module is part of its model} */
     public boolean isValid() {
         return valid;
     }
 
-    /** @return the unique name of this module. */
+    /** {@return the unique name of this module} */
     public abstract String getName();
 
-    /** @return the module type, for example "Mass3D" or "SpringDamper3D". */
+    /** {@return the module type, for example "Mass3D" or "SpringDamper3D"} */
     public abstract String getType();
 
     @Override

@@ -12,7 +12,7 @@ public abstract class Oscillator extends InertialMass {
         super(handles, id, stamp);
     }
 
-    /** @return the internal stiffness (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
         checkValid();
         return calls.massParam(id, stamp, MassParam.STIFFNESS);
@@ -24,7 +24,7 @@ public abstract class Oscillator extends InertialMass {
         calls.setMassParam(id, stamp, MassParam.STIFFNESS, K);
     }
 
-    /** @return the internal damping (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping (REAL_UNITS: N·s/m)} */
     public double getDamping() {
         checkValid();
         return calls.massParam(id, stamp, MassParam.DAMPING);

@@ -109,22 +109,22 @@ public class PhysicalModel {
         this(simRate, 30, system);
     }
 
-    /** @return the library version string. */
+    /** {@return the library version string} */
     public static String version() {
         return VERSION;
     }
 
     /**
-     * @return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
+     * {@return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
      *     atomic with respect to other threads (while the model is stepped in realtime, with respect to other
      *     editors only: the stepping thread never takes it, and every call made while holding it is queued like any
-     *     other, in call order)
+     *     other, in call order)}
      */
     public Lock getLock() {
         return gate.lock();
     }
 
-    /** @return the unit system of this model. */
+    /** {@return the unit system of this model} */
     public paramSystem getParamSystem() {
         return settings.getParamSystem();
     }
@@ -168,9 +168,9 @@ public class PhysicalModel {
     }
 
     /**
-     * @return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
+     * {@return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
      *     when the model is not stepped in realtime or no thread has taken the role yet (or since the last owner
-     *     gave it up)
+     *     gave it up)}
      */
     public Thread getRealtimeOwner() {
         return gate.owner();
@@ -219,23 +219,23 @@ public class PhysicalModel {
     }
 
     /**
-     * @return the number of queued changes (over the life of the model) that found one of their targets removed
+     * {@return the number of queued changes (over the life of the model) that found one of their targets removed
      *     when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
      *     {@link DivergenceListener} on the audio thread removed that link: the writes to the removed modules were
-     *     skipped (the others applied) and nothing was thrown
+     *     skipped (the others applied) and nothing was thrown}
      */
     public long getDroppedCommands() {
         return gate.droppedCommands();
     }
 
-    /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
+    /** {@return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()})} */
     public boolean isRealtimeStepping() {
         return gate.mode() != null;
     }
 
     // =================================================================== rates and stepping
 
-    /** @return the simulation rate, in steps per second. */
+    /** {@return the simulation rate, in steps per second} */
     public int getSimRate() {
         return settings.getSimRate();
     }
@@ -272,7 +272,7 @@ public class PhysicalModel {
         return stepping.holdSimRate(holder);
     }
 
-    /** @return the display rate, in frames per second. */
+    /** {@return the display rate, in frames per second} */
     public int getDisplayRate() {
         return settings.getDisplayRate();
     }
@@ -329,20 +329,20 @@ public class PhysicalModel {
         settings.setThreads(threads);
     }
 
-    /** @return the number of threads large models may use. */
+    /** {@return the number of threads large models may use} */
     public int getThreads() {
         return settings.getThreads();
     }
 
-    /** @return the number of steps simulated since the model was created. */
+    /** {@return the number of steps simulated since the model was created} */
     public long getStepCount() {
         return settings.getStepCount();
     }
 
     /**
-     * @return what one step computes, in order, one label per computation the compiled plan runs (for example
+     * {@return what one step computes, in order, one label per computation the compiled plan runs (for example
      *     "free 3D masses", "3D masses with gravity or friction", "fixed points", "springs"): a scene pays only
-     *     for the effects it has
+     *     for the effects it has}
      */
     public String[] getSimulatedEffects() {
         return settings.getSimulatedEffects();
@@ -396,7 +396,7 @@ public class PhysicalModel {
         settings.setGravity(magnitude);
     }
 
-    /** @return the gravity magnitude in model units. */
+    /** {@return the gravity magnitude in model units} */
     public double getGravity() {
         return settings.getGravity();
     }
@@ -414,7 +414,7 @@ public class PhysicalModel {
         setGravityDirection(new Vect3D(direction.x, direction.y, direction.z));
     }
 
-    /** @return a copy of the normalised gravity direction. */
+    /** {@return a copy of the normalised gravity direction} */
     public Vect3D getGravityDirection() {
         return settings.getGravityDirection();
     }
@@ -424,7 +424,7 @@ public class PhysicalModel {
         settings.setFriction(f);
     }
 
-    /** @return the air friction in model units. */
+    /** {@return the air friction in model units} */
     public double getFriction() {
         return settings.getFriction();
     }
@@ -505,12 +505,12 @@ public class PhysicalModel {
         build.tuneOsc(name, freqHz, t60);
     }
 
-    /** @return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included. */
+    /** {@return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included} */
     public double getOscFrequency(String name) {
         return build.getOscFrequency(name);
     }
 
-    /** @return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included. */
+    /** {@return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included} */
     public double getOscT60(String name) {
         return build.getOscT60(name);
     }
@@ -877,79 +877,79 @@ public class PhysicalModel {
 
     // =================================================================== look-up
 
-    /** @return true when a mass with this name exists. */
+    /** {@return true when a mass with this name exists} */
     public boolean matExists(String name) {
         return query.matExists(name);
     }
 
-    /** @return true when at least one interaction with this name exists. */
+    /** {@return true when at least one interaction with this name exists} */
     public boolean linkExists(String name) {
         return query.linkExists(name);
     }
 
-    /** @return the number of masses. */
+    /** {@return the number of masses} */
     public int getNumberOfMats() {
         return query.getNumberOfMats();
     }
 
-    /** @return the number of interactions. */
+    /** {@return the number of interactions} */
     public int getNumberOfLinks() {
         return query.getNumberOfLinks();
     }
 
-    /** @return the index of a mass in insertion order (indices shift down after removals), or -1. */
+    /** {@return the index of a mass in insertion order (indices shift down after removals), or -1} */
     public int getMatIndex(String name) {
         return query.getMatIndex(name);
     }
 
-    /** @return the index of the first interaction with this name, in insertion order, or -1. */
+    /** {@return the index of the first interaction with this name, in insertion order, or -1} */
     public int getLinkIndex(String name) {
         return query.getLinkIndex(name);
     }
 
-    /** @return the handle of a mass by name. */
+    /** {@return the handle of a mass by name} */
     public Mass getMass(String name) {
         return query.read(() -> handles.mass(query.getMass(name))); // the id and its handle, read together
     }
 
-    /** @return the handle of the first interaction with this name. */
+    /** {@return the handle of the first interaction with this name} */
     public Interaction getInteraction(String name) {
         return query.read(() -> handles.link(query.getInteraction(name)));
     }
 
-    /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
+    /** {@return the handle of the interaction at an index (interaction names may repeat; indices do not)} */
     public Interaction getInteractionAt(int i) {
         return query.read(() -> handles.link(query.getInteractionAt(i)));
     }
 
-    /** @return the name of the mass at an index. */
+    /** {@return the name of the mass at an index} */
     public String getMatNameAt(int i) {
         return query.getMatNameAt(i);
     }
 
-    /** @return the name of the interaction at an index. */
+    /** {@return the name of the interaction at an index} */
     public String getLinkNameAt(int i) {
         return query.getLinkNameAt(i);
     }
 
-    /** @return the module type of the mass at an index, for example {@code matModuleType.Mass3D}. */
+    /** {@return the module type of the mass at an index, for example {@code matModuleType.Mass3D}} */
     public matModuleType getMatTypeAt(int i) {
         return query.getMatTypeAt(i);
     }
 
-    /** @return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}. */
+    /** {@return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}} */
     public linkModuleType getLinkTypeAt(int i) {
         return query.getLinkTypeAt(i);
     }
 
-    /** @return the names of the two masses of an interaction (the same name twice for a plane contact). */
+    /** {@return the names of the two masses of an interaction (the same name twice for a plane contact)} */
     public String[] getLinkMatNames(String name) {
         return query.getLinkMatNames(name);
     }
 
     // =================================================================== mass state
 
-    /** @return a copy of the position of a mass. */
+    /** {@return a copy of the position of a mass} */
     public Vect3D getMatPosition(String name) {
         return getMatPosition(name, new Vect3D());
     }
@@ -959,37 +959,37 @@ public class PhysicalModel {
         return state.getMatPosition(name, out);
     }
 
-    /** @return the position of a mass as a Processing {@code PVector} (float precision). */
+    /** {@return the position of a mass as a Processing {@code PVector} (float precision)} */
     public PVector getMatPVector(String name) {
         return getMatPosition(name).toPVector();
     }
 
-    /** @return the position of the mass at an index. */
+    /** {@return the position of the mass at an index} */
     public Vect3D getMatPosAt(int i) {
         return state.getMatPosAt(i);
     }
 
-    /** @return the velocity of a mass, in units per second (backward difference over the last step). */
+    /** {@return the velocity of a mass, in units per second (backward difference over the last step)} */
     public Vect3D getMatVelocity(String name) {
         return state.getMatVelocity(name);
     }
 
-    /** @return the velocity of the mass at an index, in units per second. */
+    /** {@return the velocity of the mass at an index, in units per second} */
     public Vect3D getMatVelAt(int i) {
         return state.getMatVelAt(i);
     }
 
-    /** @return the force accumulated on a mass by the last interaction phase (REAL_UNITS: N). */
+    /** {@return the force accumulated on a mass by the last interaction phase (REAL_UNITS: N)} */
     public Vect3D getMatForce(String name) {
         return state.getMatForce(name);
     }
 
-    /** @return the force on the mass at an index. */
+    /** {@return the force on the mass at an index} */
     public Vect3D getMatFrcAt(int i) {
         return state.getMatFrcAt(i);
     }
 
-    /** @return the force on a mass as a Processing {@code PVector}. */
+    /** {@return the force on a mass as a Processing {@code PVector}} */
     public PVector getMatForcePVector(String name) {
         return getMatForce(name).toPVector();
     }
@@ -1031,7 +1031,7 @@ public class PhysicalModel {
         state.setMoveKeepsLinkHistory(keep);
     }
 
-    /** @return true when a position move keeps the link history, as the paper's engine did (false by default). */
+    /** {@return true when a position move keeps the link history, as the paper's engine did (false by default)} */
     public boolean getMoveKeepsLinkHistory() {
         return state.getMoveKeepsLinkHistory();
     }
@@ -1078,60 +1078,60 @@ public class PhysicalModel {
 
     // =================================================================== the paper engine's index queries
 
-    /** @return the position of the first mass of the interaction at an index (a copy). */
+    /** {@return the position of the first mass of the interaction at an index (a copy)} */
     public Vect3D getLinkPos1At(int i) {
         return query.getLinkPos1At(i);
     }
 
     /**
-     * @return the position of the second mass of the interaction at an index (a copy); for a plane contact, the
-     *     foot of its mass on the plane
+     * {@return the position of the second mass of the interaction at an index (a copy); for a plane contact, the
+     *     foot of its mass on the plane}
      */
     public Vect3D getLinkPos2At(int i) {
         return query.getLinkPos2At(i);
     }
 
-    /** @return the index of the first mass of the interaction at an index. */
+    /** {@return the index of the first mass of the interaction at an index} */
     public int getLinkMat1IdxAt(int i) {
         return query.getLinkMat1IdxAt(i);
     }
 
-    /** @return the index of the second mass of the interaction at an index, or -1 for a plane contact. */
+    /** {@return the index of the second mass of the interaction at an index, or -1 for a plane contact} */
     public int getLinkMat2IdxAt(int i) {
         return query.getLinkMat2IdxAt(i);
     }
 
-    /** @return the name of the first mass of the interaction at an index. */
+    /** {@return the name of the first mass of the interaction at an index} */
     public String getLinkMat1NameAt(int i) {
         return query.getLinkMat1NameAt(i);
     }
 
-    /** @return the name of the second mass of the interaction at an index, or "" for a plane contact. */
+    /** {@return the name of the second mass of the interaction at an index, or "" for a plane contact} */
     public String getLinkMat2NameAt(int i) {
         return query.getLinkMat2NameAt(i);
     }
 
-    /** @return the position the mass at an index had one step before (a copy). */
+    /** {@return the position the mass at an index had one step before (a copy)} */
     public Vect3D getMatDelayedPosAt(int i) {
         return query.getMatDelayedPosAt(i);
     }
 
-    /** @return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N). */
+    /** {@return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N)} */
     public PVector getMatForcePVector(int i) {
         return query.getMatForcePVector(i);
     }
 
-    /** @return the distance (length units) of the oscillator at an index from its rest point. */
+    /** {@return the distance (length units) of the oscillator at an index from its rest point} */
     public double getOsc3DDeltaPos(int i) {
         return query.getOsc3DDeltaPos(i);
     }
 
-    /** @return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index. */
+    /** {@return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index} */
     public int getPlaneOrientationAt(int i) {
         return query.getPlaneOrientationAt(i);
     }
 
-    /** @return the coordinate, on its axis, of the plane of the plane contact at an index. */
+    /** {@return the coordinate, on its axis, of the plane of the plane contact at an index} */
     public double getPlanePositionAt(int i) {
         return query.getPlanePositionAt(i);
     }
@@ -1139,20 +1139,20 @@ public class PhysicalModel {
     // ------------------------------------------------------------- read-only queries for exporters (tactus.export)
 
     /**
-     * @return the rest point of an oscillator ({@code Osc3D} or {@code Osc1D}), in length units (a copy): the
-     *     point its internal spring pulls it toward
+     * {@return the rest point of an oscillator ({@code Osc3D} or {@code Osc1D}), in length units (a copy): the
+     *     point its internal spring pulls it toward}
      * @throws IllegalArgumentException if the name is unknown or the mass is not an oscillator
      */
     public Vect3D getOscRestPosition(String name) {
         return query.getOscRestPosition(name);
     }
 
-    /** @return true while the mass is under velocity control ({@link #triggerVelocityControl}) */
+    /** {@return true while the mass is under velocity control ({@link #triggerVelocityControl})} */
     public boolean isVelocityControlled(String name) {
         return query.isVelocityControlled(name);
     }
 
-    /** @return the names of the mass subsets that have a contact group, in creation order (a new array) */
+    /** {@return the names of the mass subsets that have a contact group, in creation order (a new array)} */
     public String[] getContactGroupSubsets() {
         return query.getContactGroupSubsets();
     }
@@ -1225,7 +1225,7 @@ public class PhysicalModel {
         });
     }
 
-    /** @return the named parameter controller, or null when there is none. */
+    /** {@return the named parameter controller, or null when there is none} */
     public ParamController getParamController(String name) {
         return query.read(() -> controllers.get(name));
     }
@@ -1247,12 +1247,12 @@ public class PhysicalModel {
 
     // =================================================================== mass parameters
 
-    /** @return the inertia of a mass (REAL_UNITS: kg). */
+    /** {@return the inertia of a mass (REAL_UNITS: kg)} */
     public double getMatMass(String name) {
         return param.getMatMass(name);
     }
 
-    /** @return the inertia of the mass at an index. */
+    /** {@return the inertia of the mass at an index} */
     public double getMatMassAt(int i) {
         return param.getMatMassAt(i);
     }
@@ -1287,74 +1287,74 @@ public class PhysicalModel {
         param.setMatDampingAt(i, Z);
     }
 
-    /** @return the internal stiffness of an oscillator (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness of an oscillator (REAL_UNITS: N/m)} */
     public double getMatStiffness(String name) {
         return param.getMatStiffness(name);
     }
 
-    /** @return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m)} */
     public double getMatStiffnessAt(int i) {
         return param.getMatStiffnessAt(i);
     }
 
-    /** @return the internal damping of an oscillator (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping of an oscillator (REAL_UNITS: N·s/m)} */
     public double getMatDamping(String name) {
         return param.getMatDamping(name);
     }
 
-    /** @return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m)} */
     public double getMatDampingAt(int i) {
         return param.getMatDampingAt(i);
     }
 
     // =================================================================== interaction state and parameters
 
-    /** @return the current distance between the masses of an interaction (for a plane contact, the gap to the plane). */
+    /** {@return the current distance between the masses of an interaction (for a plane contact, the gap to the plane)} */
     public double getLinkDistance(String name) {
         return param.getLinkDistance(name);
     }
 
-    /** @return the distance of the interaction at an index. */
+    /** {@return the distance of the interaction at an index} */
     public double getLinkDistanceAt(int i) {
         return param.getLinkDistanceAt(i);
     }
 
-    /** @return the elongation of an interaction: its distance minus its length parameter. */
+    /** {@return the elongation of an interaction: its distance minus its length parameter} */
     public double getLinkElongation(String name) {
         return param.getLinkElongation(name);
     }
 
-    /** @return the elongation of the interaction at an index. */
+    /** {@return the elongation of the interaction at an index} */
     public double getLinkElongationAt(int i) {
         return param.getLinkElongationAt(i);
     }
 
-    /** @return the stiffness of an interaction (REAL_UNITS: N/m). */
+    /** {@return the stiffness of an interaction (REAL_UNITS: N/m)} */
     public double getLinkStiffness(String name) {
         return param.getLinkStiffness(name);
     }
 
-    /** @return the stiffness of the interaction at an index (REAL_UNITS: N/m). */
+    /** {@return the stiffness of the interaction at an index (REAL_UNITS: N/m)} */
     public double getLinkStiffnessAt(int i) {
         return param.getLinkStiffnessAt(i);
     }
 
-    /** @return the damping of an interaction (REAL_UNITS: N·s/m). */
+    /** {@return the damping of an interaction (REAL_UNITS: N·s/m)} */
     public double getLinkDamping(String name) {
         return param.getLinkDamping(name);
     }
 
-    /** @return the damping of the interaction at an index (REAL_UNITS: N·s/m). */
+    /** {@return the damping of the interaction at an index (REAL_UNITS: N·s/m)} */
     public double getLinkDampingAt(int i) {
         return param.getLinkDampingAt(i);
     }
 
-    /** @return the length parameter of an interaction: rest length, threshold, radius, plane offset or limit. */
+    /** {@return the length parameter of an interaction: rest length, threshold, radius, plane offset or limit} */
     public double getLinkDRest(String name) {
         return param.getLinkDRest(name);
     }
 
-    /** @return the length parameter of the interaction at an index. */
+    /** {@return the length parameter of the interaction at an index} */
     public double getLinkDRestAt(int i) {
         return param.getLinkDRestAt(i);
     }
@@ -1505,7 +1505,7 @@ public class PhysicalModel {
         build.removeLinkFromSubset(link, subset);
     }
 
-    /** @return the names of the members of a mass or link subset, in the order they were added. */
+    /** {@return the names of the members of a mass or link subset, in the order they were added} */
     public String[] getSubsetMembers(String subset) {
         return build.getSubsetMembers(subset);
     }
@@ -1549,12 +1549,12 @@ public class PhysicalModel {
         changeParamOfSubset((double) value, subset, param);
     }
 
-    /** @return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset. */
+    /** {@return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset} */
     public double getParamValueOfSubset(String subset, String param) {
         return build.getParamValueOfSubset(subset, param);
     }
 
-    /** @return the mean position of the masses of a mass subset. */
+    /** {@return the mean position of the masses of a mass subset} */
     public Vect3D getBarycenterOfSubset(String subset) {
         return build.getBarycenterOfSubset(subset);
     }
@@ -1587,7 +1587,7 @@ public class PhysicalModel {
         build.removeContactGroup(subset);
     }
 
-    /** @return true when the mass subset has a contact group. */
+    /** {@return true when the mass subset has a contact group} */
     public boolean hasContactGroup(String subset) {
         return build.hasContactGroup(subset);
     }
@@ -1622,7 +1622,7 @@ public class PhysicalModel {
         settings.setStrict(strict);
     }
 
-    /** @return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)}). */
+    /** {@return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)})} */
     public boolean isStrict() {
         return settings.isStrict();
     }
@@ -1637,7 +1637,7 @@ public class PhysicalModel {
         settings.setStabilityPolicy(policy);
     }
 
-    /** @return the current stability policy (WARN by default). */
+    /** {@return the current stability policy (WARN by default)} */
     public StabilityPolicy getStabilityPolicy() {
         return settings.getStabilityPolicy();
     }
@@ -1650,12 +1650,12 @@ public class PhysicalModel {
         settings.setMaxContactsPerMass(n);
     }
 
-    /** @return the stability analysis of the model as it is now (see {@link StabilityReport}). */
+    /** {@return the stability analysis of the model as it is now (see {@link StabilityReport})} */
     public StabilityReport getStabilityReport() {
         return settings.getStabilityReport();
     }
 
-    /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
+    /** {@return one line describing the model's stability: the margin, or the offending module and its limit} */
     public String describeStability() {
         return settings.describeStability();
     }
@@ -1678,7 +1678,7 @@ public class PhysicalModel {
         settings.setDivergenceLimit(limit);
     }
 
-    /** @return true when the model has diverged and is frozen. */
+    /** {@return true when the model has diverged and is frozen} */
     public boolean isDiverged() {
         return settings.isDiverged();
     }
@@ -1702,17 +1702,17 @@ public class PhysicalModel {
 
     // =================================================================== energy
 
-    /** @return the kinetic energy of the model (REAL_UNITS: J), from backward-difference velocities. */
+    /** {@return the kinetic energy of the model (REAL_UNITS: J), from backward-difference velocities} */
     public double getKineticEnergy() {
         return query.getKineticEnergy();
     }
 
-    /** @return the potential energy stored in engaged springs, oscillators, attractors and gravity (REAL_UNITS: J). */
+    /** {@return the potential energy stored in engaged springs, oscillators, attractors and gravity (REAL_UNITS: J)} */
     public double getPotentialEnergy() {
         return query.getPotentialEnergy();
     }
 
-    /** @return kinetic plus potential energy (REAL_UNITS: J). */
+    /** {@return kinetic plus potential energy (REAL_UNITS: J)} */
     public double getTotalEnergy() {
         return query.getTotalEnergy();
     }

@@ -13,7 +13,7 @@ public final class PlaneContact3D extends ElasticInteraction {
         super(handles, id);
     }
 
-    /** @return the plane's coordinate on its axis. */
+    /** {@return the plane's coordinate on its axis} */
     public double getPlanePosition() {
         return param(LinkParam.PLANE_POSITION);
     }
@@ -24,7 +24,7 @@ public final class PlaneContact3D extends ElasticInteraction {
         calls.setLinkParam(id, "setPlanePosition", LinkParam.PLANE_POSITION, pos);
     }
 
-    /** @return the plane's axis: 0 (x), 1 (y) or 2 (z). */
+    /** {@return the plane's axis: 0 (x), 1 (y) or 2 (z)} */
     public int getOrientation() {
         return (int) param(LinkParam.PLANE_AXIS);
     }

@@ -7,7 +7,7 @@ public final class Spring3D extends Interaction {
         super(handles, id);
     }
 
-    /** @return the stiffness (REAL_UNITS: N/m). */
+    /** {@return the stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
         return stiffness();
     }
@@ -17,7 +17,7 @@ public final class Spring3D extends Interaction {
         stiffness(K);
     }
 
-    /** @return the rest length. */
+    /** {@return the rest length} */
     public double getLength() {
         return length();
     }
