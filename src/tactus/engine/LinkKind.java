@@ -49,8 +49,8 @@ public enum LinkKind {
             Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper2 along z: F = K e + Q sgn(e) e^2 + Z v, e = z1 - z2 - l0. */
     QUADRATIC_SPRING_DAMPER1D("QuadraticSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
-            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)", new String[] {"Q"},
-            ParamUnit.STIFFNESS),
+            NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFAC81E, "nlSpringDamper2(K, Q, Z)",
+            new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamper3 along the distance: F = K e + Q e^3 + Z v. */
     CUBIC_SPRING_DAMPER3D("CubicSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
             Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
@@ -59,8 +59,8 @@ public enum LinkKind {
             Engagement.ALWAYS, 0xFFFA961E, "nlSpringDamper3(K, Q, Z)", new String[] {"Q"}, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along the distance: a cubic spring bounded by the stiffness Kmax. */
     CLIPPED_SPRING_DAMPER3D("ClippedSpringDamper3D", STIFF | DAMPED | LENGTH, NonlinearKernels.Elastic3D::new,
-            Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped(K, C, Kmax, Z)", new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
-            ParamUnit.STIFFNESS),
+            Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped(K, C, Kmax, Z)", new String[] {"C", "Kmax"},
+            ParamUnit.STIFFNESS, ParamUnit.STIFFNESS),
     /** mi.lib's nlSpringDamperClipped along z. */
     CLIPPED_SPRING_DAMPER1D("ClippedSpringDamper1D", STIFF | DAMPED | LENGTH | ONE_D,
             NonlinearKernels.Elastic1D::new, Engagement.ALWAYS, 0xFFFA641E, "nlSpringDamperClipped(K, C, Kmax, Z)",
@@ -75,12 +75,12 @@ public enum LinkKind {
     BOW3D("Bow3D", DAMPED | NO_HISTORY, NonlinearKernels.Bow3D::new, Engagement.ALWAYS, 0xFFE6B450, null,
             new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlBow along z. */
-    BOW1D("Bow1D", DAMPED | ONE_D | NO_HISTORY, NonlinearKernels.Bow1D::new, Engagement.ALWAYS, 0xFFE6B450, "nlBow(Z, scale, profile)",
-            new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
+    BOW1D("Bow1D", DAMPED | ONE_D | NO_HISTORY, NonlinearKernels.Bow1D::new, Engagement.ALWAYS, 0xFFE6B450,
+            "nlBow(Z, scale, profile)", new String[] {"scale", "profile"}, ParamUnit.VELOCITY, ParamUnit.NUMBER),
     /** mi.lib's nlCollisionClipped on the distance: a clipped cubic contact while d is below the threshold. */
     CLIPPED_CONTACT3D("ClippedContact3D", STIFF | DAMPED | LENGTH | CONDITIONAL, NonlinearKernels.Contact3D::new,
-            Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped(K, C, Kmax, Z, dist)", new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS,
-            ParamUnit.STIFFNESS),
+            Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped(K, C, Kmax, Z, dist)",
+            new String[] {"C", "Kmax"}, ParamUnit.STIFFNESS, ParamUnit.STIFFNESS),
     /** mi.lib's nlCollisionClipped along z, mass 2 above mass 1: acts while z2 - z1 is below the threshold. */
     CLIPPED_CONTACT1D("ClippedContact1D", STIFF | DAMPED | LENGTH | ONE_D, NonlinearKernels.Contact1D::new,
             Engagement.WHEN_COMPRESSED, 0x00FF3232, "nlCollisionClipped(K, C, Kmax, Z, dist)", new String[] {"C", "Kmax"},
@@ -143,7 +143,7 @@ public enum LinkKind {
         this.auxUnits = auxUnits;
     }
 
-    /** {@return the module name used in the API, in model files and in messages, for example {@code "SpringDamper3D"}} */
+    /** {@return the module name used in the API, in model files and in messages, e.g. {@code "SpringDamper3D"}} */
     public String label() {
         return label;
     }

@@ -147,7 +147,7 @@ public final class NonlinearLaws {
         return Math.max(Math.abs(k), Math.abs(s + 3 * c * b * b));
     }
 
-    /** {@return the largest slope {@code |dF/dv|} of {@link #bow}: {@code 2z/3} piecewise, {@code 0.63 e^0.5 z} smooth} */
+    /** {@return the largest slope {@code |dF/dv|} of {@link #bow}: 2z/3 piecewise, 0.63 e^0.5 z smooth} */
     public static double bowDampingBound(double z, double type) {
         return type > 0 ? 0.63 * Math.exp(0.5) * Math.abs(z) : Math.abs(z - z / BOW_SHARPNESS);
     }
