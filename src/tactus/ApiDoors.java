@@ -21,7 +21,8 @@ final class ApiDoors extends ApiAccess {
     }
 
     @Override
-    public DivergenceException divergence(String massLabel, String massName, long step, double x, double y, double z) {
-        return new DivergenceException(massLabel, massName, step, x, y, z);
+    public DivergenceException divergence(String massLabel, String massName, long step, double x, double y, double z,
+                                          String suspect) {
+        return new DivergenceException(massLabel, massName, step, x, y, z, suspect);
     }
 }

@@ -53,6 +53,8 @@ public class PhysicalModel {
     final ModelLock gate;
     /** The stepping calls, in both modes. */
     private final Stepping stepping;
+    /** The one warning of a model stepped before init(). */
+    private final tactus.internal.model.InitNotice initNotice = new tactus.internal.model.InitNotice();
     /** The rest of each call, by concern: once in the model, each hands the work to its room. */
     private final SettingsCalls settings;
     private final BuildCalls build;
@@ -300,11 +302,13 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
+        initNotice.check(core.initialized, "draw_physics()");
         return stepping.frame();
     }
 
     /** Runs one simulation step. */
     public void computeStep() {
+        initNotice.check(core.initialized, "computeStep()");
         stepping.step();
     }
 
@@ -313,6 +317,7 @@ public class PhysicalModel {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
+        initNotice.check(core.initialized, "computeNSteps()");
         stepping.steps(n);
     }
 
@@ -404,6 +409,15 @@ public class PhysicalModel {
     /** Sets the gravity direction ("up"); it is normalised. Masses accelerate along its opposite. */
     public void setGravityDirection(Vect3D direction) {
         settings.setGravityDirection(direction);
+    }
+
+    /**
+     * Sets the gravity direction ("up") from its three components; it is normalised. The same as
+     * {@link #setGravityDirection(Vect3D)}, for a program without Processing core on the class path: there javac
+     * cannot choose between the one-argument forms, since one of them takes a {@code PVector}.
+     */
+    public void setGravityDirection(double x, double y, double z) {
+        setGravityDirection(new Vect3D(x, y, z));
     }
 
     /** Sets the gravity direction ("up") from a Processing vector; see {@link #setGravityDirection(Vect3D)}. */

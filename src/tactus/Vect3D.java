@@ -124,6 +124,9 @@ public final class Vect3D {
 
     /** {@return a new Processing {@code PVector} with this vector's components as floats} */
     public PVector toPVector() {
+        tactus.internal.model.OptionalLibrary.PROCESSING_CORE.require("a PVector call (toPVector, getMatPVector, "
+                + "getMatForcePVector)", "without Processing core read the same values as a Vect3D: getMatPosition(name), "
+                + "getMatForce(name), and their fields x, y, z");
         return new PVector((float) x, (float) y, (float) z);
     }
 

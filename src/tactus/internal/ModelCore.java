@@ -36,8 +36,8 @@ public final class ModelCore extends ModelBase {
 
     public ModelCore(paramSystem system, int simRate, int displayRate, ModuleListener handles) {
         super(system, simRate, displayRate, handles);
-        this.watch = new DivergenceWatch(engine, dir);
         this.guard = new StabilityGuard(engine, dir, time);
+        this.watch = new DivergenceWatch(engine, dir, guard::suspect);
         this.snapshots = new SnapshotWriter(this);
         this.params = new ParamEditor(this, guard);
         this.topology = new TopologyEditor(this, snapshots, watch);

@@ -44,7 +44,8 @@ public abstract class ApiAccess {
      * @return the exception of a divergence found while stepping, from its raw facts (its message is formatted when
      *     it is read, not on the stepping thread)
      * @param massLabel the kind of the mass, "Mass3D"; x, y, z its position when the divergence was found
+     * @param suspect the module most likely at fault, its parameter and the fix, or null
      */
     public abstract DivergenceException divergence(String massLabel, String massName, long step,
-                                                   double x, double y, double z);
+                                                   double x, double y, double z, String suspect);
 }
