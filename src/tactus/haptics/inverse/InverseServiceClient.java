@@ -207,7 +207,7 @@ public final class InverseServiceClient implements AutoCloseable {
      * frames, an empty device list, a snapshot without the chosen device, a device type this client does not know.
      */
     private String refusal(InverseState s) {
-        if (receiver.badRun >= BAD_RUN && !s.snapshotSeen) {
+        if (receiver.badRun > 0 && !s.snapshotSeen) {   // its snapshot cannot be read: nothing to drive
             return badFramesReport();
         }
         if (s.inverse3Listed && s.inverse3Count == 0) {
