@@ -10,6 +10,7 @@ import tactus.haptics.emulator.Hand3D;
 import tactus.haptics.emulator.HaplyConnection;
 import tactus.haptics.emulator.InverseServiceEmulator;
 import tactus.haptics.emulator.SimulatedInverse3;
+import tactus.haptics.inverse.Inverse3Choice;
 import tactus.haptics.inverse.Inverse3Device;
 import tactus.haptics.inverse.InverseState;
 
@@ -48,6 +49,9 @@ public final class HapticSession3D implements AutoCloseable {
     private final HapticDevice device;
     private final Inverse3Device inverse;           // null for a 2DIY board
     private final InverseServiceEmulator emulator;  // null on real hardware
+    private final SimulatedInverse3 sim;            // this session's emulated device, or null
+    private boolean ownsEmulator = true;            // false for the second hand of a pair (the first closes it)
+    private boolean mirrored;                       // the emulated hand follows the mouse mirrored left-right
     private final HaplyConnection board;            // null unless a 2DIY board
     private final String banner;
     private final double[] centre = new double[3];  // device metres
@@ -69,6 +73,7 @@ public final class HapticSession3D implements AutoCloseable {
         this.device = device;
         this.inverse = inverse;
         this.emulator = emulator;
+        this.sim = emulator == null ? null : inverse != null ? emulator.device(inverse.deviceId()) : emulator.device();
         this.board = board;
         this.banner = banner;
         System.arraycopy(centre, 0, this.centre, 0, 3);
@@ -118,6 +123,63 @@ public final class HapticSession3D implements AutoCloseable {
             c.close();
         }
         return openEmulated(app, firstSentence(why));
+    }
+
+    /**
+     * Opens the Inverse3 this choice names (by id, index or handedness) on the Inverse Service at the address of
+     * the property {@code tactus.haptics.inverse.uri} (default {@code ws://localhost:10001}), guarded, with no
+     * fallback: for a second device, or one hand of two.
+     *
+     * @throws HaplyLinkException if the service is not there or does not list that device (the message lists those
+     *                            it has)
+     */
+    public static HapticSession3D open(PApplet app, Inverse3Choice which) {
+        URI uri = URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
+        Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS, which);
+        d.setReconnect(HapticSession.RECONNECT_MS);
+        return onInverse(app, d, null, "Haply " + d.kind() + " " + d.deviceId() + handed(d) + " through the Inverse "
+                + "Service at " + uri);
+    }
+
+    /**
+     * Opens two hands on the in-process emulator serving two Inverse3s: element 0 drives the left-handed one
+     * (id {@value #LEFT_ID}), element 1 the right-handed one ({@link InverseServiceEmulator#DEVICE_ID}), each with
+     * its own connection, loop and emulated hand; the mouse (or the idle tour) moves the right hand, and the left
+     * hand as its mirror image. Closing element 0 closes the emulator too.
+     */
+    public static HapticSession3D[] openEmulatedPair(PApplet app) {
+        double[] h = SimulatedInverse3.HOME;
+        SimulatedInverse3 right = new SimulatedInverse3();
+        right.setHand(Hand3D.following(h[0], h[1], h[2], 300, 3));
+        SimulatedInverse3 left = new SimulatedInverse3();
+        left.setHand(Hand3D.following(h[0], h[1], h[2], 300, 3));
+        InverseServiceEmulator emu = InverseServiceEmulator.start(0, right);
+        emu.addInverse3(LEFT_ID, "left", left, true);
+        HapticSession3D l = null;
+        try {
+            Inverse3Device dl = Inverse3Device.open(emu.uri(), 5000, Inverse3Choice.byHandedness("left"));
+            l = onInverse(app, dl, emu, "Emulated left-handed Inverse3 " + dl.deviceId() + ", the mouse (mirrored) is your "
+                    + "left hand");
+            l.mirrored = true;
+            Inverse3Device dr = Inverse3Device.open(emu.uri(), 5000, Inverse3Choice.byHandedness("right"));
+            HapticSession3D r = onInverse(app, dr, emu, "Emulated right-handed Inverse3 " + dr.deviceId() + ", the mouse is "
+                    + "your right hand");
+            r.ownsEmulator = false;
+            return new HapticSession3D[] {l, r};
+        } catch (RuntimeException e) {
+            if (l != null) {
+                l.close();
+            }
+            emu.close();
+            throw e;
+        }
+    }
+
+    /** The id of the left-handed Inverse3 of {@link #openEmulatedPair}. */
+    public static final String LEFT_ID = "1EF7";
+
+    private static String handed(Inverse3Device d) {
+        return d.handedness() == null ? "" : " (" + d.handedness() + "-handed)";
     }
 
     /** Opens the in-process Inverse Service emulator with the mouse as the hand, even if a device is there. */
@@ -349,7 +411,7 @@ public final class HapticSession3D implements AutoCloseable {
      * has moved (x and y; the depth swings slowly), and tours the workspace until then.
      */
     public void pre() {
-        if (app == null || emulator == null) {
+        if (app == null || sim == null) {
             return;
         }
         double t = hand.tourSeconds(System.nanoTime());
@@ -368,7 +430,10 @@ public final class HapticSession3D implements AutoCloseable {
         for (int i = 0; i < 3; i++) {
             tmpDevice[i] = Math.max(centre[i] - halfSize[i], Math.min(centre[i] + halfSize[i], tmpDevice[i]));
         }
-        emulator.device().hand().setTarget(tmpDevice[0], tmpDevice[1], tmpDevice[2]);
+        if (mirrored) {
+            tmpDevice[0] = 2 * centre[0] - tmpDevice[0];
+        }
+        sim.hand().setTarget(tmpDevice[0], tmpDevice[1], tmpDevice[2]);
     }
 
     /**
@@ -409,7 +474,7 @@ public final class HapticSession3D implements AutoCloseable {
         if (board != null) {
             board.close();
         }
-        if (emulator != null) {
+        if (emulator != null && ownsEmulator) {
             emulator.close();
         }
     }
