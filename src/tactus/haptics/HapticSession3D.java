@@ -42,6 +42,13 @@ import tactus.haptics.inverse.InverseState;
 public final class HapticSession3D implements AutoCloseable {
     /** The real-time priority each loop asks for (Linux SCHED_FIFO; refused quietly where not allowed). */
     public static final int REALTIME_PRIORITY = 50;
+    /**
+     * The link timeout of a loop on the in-process emulator, in milliseconds: the emulator answers from threads of
+     * the sketch's own JVM, which a loaded machine can hold back for hundreds of milliseconds while the loop's
+     * real-time thread ticks on; that is no device switched off, so the loop waits longer than the 500 ms it gives
+     * a real device.
+     */
+    public static final int EMULATED_LINK_TIMEOUT_MS = 5000;
     /** Period of the idle tour's lap, in seconds. */
     public static final double TOUR_PERIOD = 12.0;
 
@@ -249,8 +256,8 @@ public final class HapticSession3D implements AutoCloseable {
 
     /**
      * Stops the current loop, if any, and makes a new one (not started) on the model's avatar, with this
-     * session's mapping, a force gain of 1 N per model force unit ({@link HapticLoop#setForceGain}) and a
-     * real-time request.
+     * session's mapping, a force gain of 1 N per model force unit ({@link HapticLoop#setForceGain}), a
+     * real-time request and, on the emulator, a link timeout of {@value #EMULATED_LINK_TIMEOUT_MS} ms.
      */
     public HapticLoop attach(PhysicalModel model, String avatar) {
         return attach(new PhysicalModelAvatar(model, avatar));
@@ -269,6 +276,9 @@ public final class HapticSession3D implements AutoCloseable {
         l.setWorkspaceMapping(mapping);
         l.setForceGain(1);
         l.setRealtimePriority(REALTIME_PRIORITY);
+        if (emulator != null) {
+            l.setLinkTimeoutMillis(EMULATED_LINK_TIMEOUT_MS);
+        }
         loop = l;
         return l;
     }
