@@ -44,6 +44,7 @@ public final class Engine implements AutoCloseable {
     private ParallelStepper stepper;
     private java.lang.ref.Cleaner.Cleanable stepperCleanup;
     private int parallelMinElements = 20_000;
+    private StepModeChooser modes = new StepModeChooser(System::nanoTime);
     private StepPlan hookPlan;
     private long hookSteps;
     private final ParallelStepper.StepHook guardHook = this::afterParallelStep;
@@ -643,15 +644,53 @@ public final class Engine implements AutoCloseable {
         }
         StepPlan p = plan;
         if (stepper != null && n > 1 && p.elementCount() >= parallelMinElements) {
-            hookPlan = p;
-            hookSteps = 0;
-            try {
-                return stepper.run(p, n, guardHook);
-            } finally {
-                steps += hookSteps;
-                hookPlan = null;
+            return stepChoosingMode(p, n);
+        }
+        return stepOnOneThread(p, n);
+    }
+
+    /**
+     * Runs n steps of a plan big enough for the parallel stepper, in the mode the chooser finds faster (a probe
+     * step in a mode, then the rest of the batch in the faster one).
+     */
+    private int stepChoosingMode(StepPlan p, int n) {
+        int ran = 0;
+        while (ran < n && divergedMass < 0) {
+            boolean parallel = modes.parallelNext();
+            int chunk = modes.probing() ? 1 : n - ran;
+            long t0 = modes.now();
+            int r = parallel ? stepInParallel(p, chunk) : stepOnOneThread(p, chunk);
+            modes.record(parallel, r, modes.now() - t0);
+            ran += r;
+            if (r < chunk) {
+                break;   // the divergence guard stopped the batch
             }
         }
+        return ran;
+    }
+
+    private int stepInParallel(StepPlan p, int n) {
+        hookPlan = p;
+        hookSteps = 0;
+        try {
+            return stepper.run(p, n, guardHook);
+        } finally {
+            steps += hookSteps;
+            hookPlan = null;
+        }
+    }
+
+    /** Times the choice between one thread and the parallel stepper with this clock from now on (for tests). */
+    void setModeClock(java.util.function.LongSupplier nanoClock) {
+        modes = new StepModeChooser(nanoClock);
+    }
+
+    /** Steps run on all threads, and on one thread for a plan big enough for them (for tests). */
+    long[] stepsByMode() {
+        return new long[] {modes.parallelSteps(), modes.serialSteps()};
+    }
+
+    private int stepOnOneThread(StepPlan p, int n) {
         int ran = 0;
         try {
             while (ran < n) {
