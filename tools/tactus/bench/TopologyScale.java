@@ -5,7 +5,7 @@ import tactus.Vect3D;
 
 /**
  * Times topology edits at scale: removing k masses one by one from an N-mass chain, then stepping 10 steps; and
- * removing masses from a model with many subsets. Prints one line per case, in seconds (the machine's load is the
+ * removing masses from a model with many subsets; 10 steps of the chain on one thread and on two. Prints one line per case, in seconds (the machine's load is the
  * caller's to report). Arguments: {@code [N] [k] [subsets] [removedFromSubsets]}, default 1000000 100 100000 200.
  */
 public final class TopologyScale {
@@ -38,6 +38,15 @@ public final class TopologyScale {
         ps.computeNSteps(10);
         System.out.printf("%d subsets, removing %d masses one by one, then 10 steps: %.2f s%n", subsets, removed,
                 (System.nanoTime() - t0) * 1e-9);
+        for (int threads : new int[] {1, 2}) {
+            pm.setThreads(threads);
+            pm.computeNSteps(2);
+            t0 = System.nanoTime();
+            pm.computeNSteps(10);
+            System.out.printf("10 steps of %d masses on %d thread(s): %.2f s%n", pm.getNumberOfMats(), threads,
+                    (System.nanoTime() - t0) * 1e-9);
+        }
+        pm.setThreads(1);
     }
 
     /** A chain of n masses on springs, initialised. */
