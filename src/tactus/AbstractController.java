@@ -73,12 +73,12 @@ public class AbstractController {
         return v == null ? 0 : v;
     }
 
-    /** @return the name of the controlled subset. */
+    /** {@return the name of the controlled subset} */
     public String getSubsetName() {
         return subsetName;
     }
 
-    /** @return the controlled parameter. */
+    /** {@return the controlled parameter} */
     public String getParamName() {
         return param;
     }

@@ -6,23 +6,8 @@ import tactus.internal.snapshot.SnapshotBuffer;
 /** The package's side of {@link ApiAccess}: the package-private doors the machinery may open. */
 final class ApiDoors extends ApiAccess {
     @Override
-    public Object modelOf(Object handle) {
-        return ((Module) handle).core;
-    }
-
-    @Override
-    public int idOf(Object handle) {
-        return ((Module) handle).id;
-    }
-
-    @Override
-    public void checkLive(Object handle) {
-        ((Module) handle).checkValid();
-    }
-
-    @Override
-    public Object newSnapshotView(Object buffer) {
-        return new ModelSnapshot((SnapshotBuffer) buffer);
+    public ModelSnapshot newSnapshotView(SnapshotBuffer buffer) {
+        return new ModelSnapshot(buffer);
     }
 
     @Override
@@ -36,7 +21,8 @@ final class ApiDoors extends ApiAccess {
     }
 
     @Override
-    public DivergenceException divergence(String massLabel, String massName, long step, double x, double y, double z) {
-        return new DivergenceException(massLabel, massName, step, x, y, z);
+    public DivergenceException divergence(String massLabel, String massName, long step, double x, double y, double z,
+                                          String suspect) {
+        return new DivergenceException(massLabel, massName, step, x, y, z, suspect);
     }
 }

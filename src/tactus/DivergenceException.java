@@ -14,6 +14,8 @@ public class DivergenceException extends IllegalStateException {
     private final double x;
     private final double y;
     private final double z;
+    /** The module most likely at fault, with its parameter and the fix, or null. */
+    private final String suspect;
     /** The formatted message, made on first read (a race makes the same text twice, harmlessly). */
     private String message;
 
@@ -21,8 +23,9 @@ public class DivergenceException extends IllegalStateException {
      * A divergence whose message is formatted only when it is read: the stepping thread (a PhyUGen's audio thread)
      * records the facts and formats no string.
      */
-    DivergenceException(String massLabel, String massName, long step, double x, double y, double z) {
+    DivergenceException(String massLabel, String massName, long step, double x, double y, double z, String suspect) {
         super((String) null);
+        this.suspect = suspect;
         this.massName = massName;
         this.step = step;
         this.massLabel = massLabel;
@@ -32,26 +35,37 @@ public class DivergenceException extends IllegalStateException {
     }
 
     /**
-     * @return "Mass3D \"name\" diverged at step N: position (x, y, z); the model is frozen until
-     *     clearDivergence()", formatted on the first call
+     * {@return "Mass3D \"name\" diverged at step N: position (x, y, z); most likely cause: ...; the model is
+     *     frozen until clearDivergence()", formatted on the first call}
      */
     @Override
     public String getMessage() {
         String m = message;
         if (m == null) {
             m = massLabel + " \"" + massName + "\" diverged at step " + step + ": position (" + x + ", " + y + ", " + z
-                    + "); the model is frozen until clearDivergence()";
+                    + "); " + (suspect != null ? "most likely cause: " + suspect + "; " : "")
+                    + "the model is frozen until clearDivergence()";
             message = m;
         }
         return m;
     }
 
-    /** @return the name of the first offending mass. */
+    /**
+     * The module most likely at fault, as the stability analysis of the diverged model finds it: its type and name,
+     * the parameter, its value and limit, and the fix; or what to look for when every module is within its limit.
+     *
+     * @return the text, or null if the analysis could not be made
+     */
+    public String getSuspect() {
+        return suspect;
+    }
+
+    /** {@return the name of the first offending mass} */
     public String getMassName() {
         return massName;
     }
 
-    /** @return the step count at which the divergence was detected. */
+    /** {@return the step count at which the divergence was detected} */
     public long getStep() {
         return step;
     }

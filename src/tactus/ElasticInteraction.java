@@ -1,7 +1,5 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
 
 /**
  * An interaction with a stiffness K, a damping Z and a length parameter: the spring-damper family
@@ -9,11 +7,11 @@ import tactus.internal.ModelCore;
  * threshold or a bubble radius depending on the type.
  */
 public abstract class ElasticInteraction extends Interaction {
-    ElasticInteraction(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    ElasticInteraction(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
-    /** @return the stiffness (REAL_UNITS: N/m). */
+    /** {@return the stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
         return stiffness();
     }
@@ -23,7 +21,7 @@ public abstract class ElasticInteraction extends Interaction {
         stiffness(K);
     }
 
-    /** @return the damping (REAL_UNITS: N·s/m). */
+    /** {@return the damping (REAL_UNITS: N·s/m)} */
     public double getDamping() {
         return damping();
     }
@@ -33,7 +31,7 @@ public abstract class ElasticInteraction extends Interaction {
         damping(Z);
     }
 
-    /** @return the length parameter: rest length, threshold or radius (model length units). */
+    /** {@return the length parameter: rest length, threshold or radius (model length units)} */
     public double getLength() {
         return length();
     }

@@ -1,7 +1,5 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
 
 /**
  * The haptic avatar: a mass-type module whose position follows the device position through an
@@ -9,22 +7,17 @@ import tactus.internal.ModelCore;
  * force the model applies to it, over as many steps as run, until {@link #takeForce()} reads it.
  */
 public final class HapticInput3D extends Mass {
-    HapticInput3D(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    HapticInput3D(ModuleHandles handles, int id, int stamp) {
+        super(handles, id, stamp);
     }
 
     /** Sets the device position the avatar follows, in model units. */
     public void setDevicePosition(Vect3D pos) {
         checkVector("setDevicePosition", "pos", pos);
-        enter();
-        try {
-            core.state.setInputTarget(id, pos.x, pos.y, pos.z);
-        } finally {
-            exit();
-        }
+        calls.setInputTarget(id, stamp, pos);
     }
 
-    /** @return the force accumulated since the last call (REAL_UNITS: N), and resets the accumulator. */
+    /** {@return the force accumulated since the last call (REAL_UNITS: N), and resets the accumulator} */
     public Vect3D takeForce() {
         return takeForce(new Vect3D());
     }
@@ -34,11 +27,7 @@ public final class HapticInput3D extends Mass {
      * resets the accumulator, and returns {@code out}.
      */
     public Vect3D takeForce(Vect3D out) {
-        enter();
-        try {
-            return core.state.takeAvatarForce(id, out);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.takeAvatarForce(id, stamp, out);
     }
 }

@@ -1,7 +1,6 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
+import tactus.internal.calls.ModuleCalls.LinkParam;
 
 /**
  * A handle on one interaction module of a {@link PhysicalModel}: a thin view onto its slot in the
@@ -9,19 +8,14 @@ import tactus.internal.ModelCore;
  * model is cleared; after that every method throws {@link IllegalStateException}.
  */
 public abstract class Interaction extends Module {
-    Interaction(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    Interaction(ModuleHandles handles, int id) {
+        super(handles, id);
     }
-
 
     @Override
     public String getName() {
-        enter();
-        try {
-            return core.dir.linkName(id);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.linkName(id);
     }
 
     @Override
@@ -30,100 +24,61 @@ public abstract class Interaction extends Module {
         return getClass().getSimpleName();
     }
 
-    /** @return the handle of the first mass. */
+    /** {@return the handle of the first mass} */
     public Mass getMass1() {
-        enter();
-        try {
-            return (Mass) core.dir.massHandle(core.engine.linkMassA(id));
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.read(() -> handles.mass(calls.linkEnd(id, false)));
     }
 
-    /** @return the handle of the second mass (the same as the first for a plane contact). */
+    /** {@return the handle of the second mass (the same as the first for a plane contact)} */
     public Mass getMass2() {
-        enter();
-        try {
-            return (Mass) core.dir.massHandle(core.engine.linkMassB(id));
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.read(() -> handles.mass(calls.linkEnd(id, true)));
     }
 
-    /** @return the current distance between the two masses (for a plane contact, the gap to the plane). */
+    /** {@return the current distance between the two masses (for a plane contact, the gap to the plane)} */
     public double getDistance() {
-        enter();
-        try {
-            return core.params.linkDistance(id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.DISTANCE);
     }
 
-    /** @return the distance minus the length parameter (rest length, threshold, radius, offset or limit). */
+    /** {@return the distance minus the length parameter (rest length, threshold, radius, offset or limit)} */
     public double getElongation() {
-        enter();
-        try {
-            return core.params.linkElongation(id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.ELONGATION);
+    }
+
+    /** Reads a number of this interaction (its handle's check first, for a message that names it). */
+    double param(LinkParam p) {
+        checkValid();
+        return calls.linkParam(id, p);
+    }
+
+    /** Sets a parameter of this interaction after checking the value is a number (the room checks the rest). */
+    void set(String op, String param, LinkParam p, double v) {
+        checkFinite(op, param, v);
+        calls.setLinkParam(id, op, p, v);
     }
 
     double stiffness() {
-        enter();
-        try {
-            return core.params.linkStiffness(id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.STIFFNESS);
     }
 
     void stiffness(double K) {
-        checkFinite("setStiffness", "K", K);
-        enter();
-        try {
-            core.params.setLink("setStiffness", id, K, Double.NaN, Double.NaN);
-        } finally {
-            exit();
-        }
+        set("setStiffness", "K", LinkParam.STIFFNESS, K);
     }
 
     double damping() {
-        enter();
-        try {
-            return core.params.linkDamping(id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.DAMPING);
     }
 
     void damping(double Z) {
-        checkFinite("setDamping", "Z", Z);
-        enter();
-        try {
-            core.params.setLink("setDamping", id, Double.NaN, Z, Double.NaN);
-        } finally {
-            exit();
-        }
+        set("setDamping", "Z", LinkParam.DAMPING, Z);
     }
 
     double length() {
-        enter();
-        try {
-            return core.params.linkLength(id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.LENGTH);
     }
 
     void length(String op, double d) {
-        checkFinite(op, "d", d);
-        enter();
-        try {
-            core.params.setLink(op, id, Double.NaN, Double.NaN, d);
-        } finally {
-            exit();
-        }
+        set(op, "d", LinkParam.LENGTH, d);
     }
 }

@@ -1,7 +1,6 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
+import tactus.internal.calls.ModuleCalls;
 
 /**
  * A handle on one mass-type module of a {@link PhysicalModel}: a thin view onto its slot in the
@@ -9,75 +8,53 @@ import tactus.internal.ModelCore;
  * mass is turned into a fixed point; after that every method throws {@link IllegalStateException}.
  */
 public abstract class Mass extends Module {
-    Mass(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
-    }
+    /** The stamp of the module this handle was made for (a mass made fixed keeps its id under a new stamp). */
+    final int stamp;
 
+    Mass(ModuleHandles handles, int id, int stamp) {
+        super(handles, id);
+        this.stamp = stamp;
+    }
 
     @Override
     public String getName() {
-        enter();
-        try {
-            return core.dir.massName(id);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.massName(id, stamp);
     }
 
     @Override
     public String getType() {
-        enter();
-        try {
-            return core.dir.massKind(id).label();
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.massType(id, stamp);
     }
 
-    /** @return a copy of the current position, in model units. */
+    /** {@return a copy of the current position, in model units} */
     public Vect3D getPosition() {
         return getPosition(new Vect3D());
     }
 
     /** Writes the current position into {@code out} without allocating, and returns it. */
     public Vect3D getPosition(Vect3D out) {
-        enter();
-        try {
-            return core.state.position(id, out);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.motion(id, stamp, ModuleCalls.Motion.POSITION, out);
     }
 
-    /** @return the velocity over the last step, in units per second. */
+    /** {@return the velocity over the last step, in units per second} */
     public Vect3D getVelocity() {
-        enter();
-        try {
-            return core.state.velocity(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.motion(id, stamp, ModuleCalls.Motion.VELOCITY, new Vect3D());
     }
 
-    /** @return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N). */
+    /** {@return the force accumulated on this mass by the last interaction phase (REAL_UNITS: N)} */
     public Vect3D getForce() {
-        enter();
-        try {
-            return core.state.force(id, new Vect3D());
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.motion(id, stamp, ModuleCalls.Motion.FORCE, new Vect3D());
     }
 
     /** Moves this mass to a position with zero velocity (see {@link PhysicalModel#setMatPosition}). */
     public void setPosition(Vect3D pos) {
         checkVector("setPosition", "pos", pos);
-        enter();
-        try {
-            core.state.setPosition(id, pos);
-        } finally {
-            exit();
-        }
+        calls.setPosition(id, stamp, pos);
     }
 
     /** Adds a force for the next step only (REAL_UNITS: N). */
@@ -85,11 +62,6 @@ public abstract class Mass extends Module {
         checkFinite("applyForce", "fx", fx);
         checkFinite("applyForce", "fy", fy);
         checkFinite("applyForce", "fz", fz);
-        enter();
-        try {
-            core.state.addImpulse(id, fx, fy, fz);
-        } finally {
-            exit();
-        }
+        calls.applyForce(id, stamp, fx, fy, fz);
     }
 }

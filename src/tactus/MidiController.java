@@ -49,7 +49,7 @@ public class MidiController extends AbstractController {
         return new MidiController(pm, ctrl, min, max, subsetName, param, 1f / pm.getSimRate());
     }
 
-    /** @return the MIDI control-change number this controller listens to. */
+    /** {@return the MIDI control-change number this controller listens to} */
     public int getControlNumber() {
         return ctrl;
     }

@@ -27,6 +27,8 @@ public class ModelLoader {
     private boolean toldNoHandler;
 
     /**
+     * Creates a loader that reads and writes model files for a sketch.
+     *
      * @param parent the sketch ({@code this}); may be null outside Processing, then file names are
      *     taken as they are
      */
@@ -132,7 +134,7 @@ public class ModelLoader {
         }
     }
 
-    /** @return true once a model has been loaded (by {@link #loadModel} or through the file chooser). */
+    /** {@return true once a model has been loaded (by {@link #loadModel} or through the file chooser)} */
     public boolean getIsLoaded() {
         return loaded;
     }

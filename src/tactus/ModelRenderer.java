@@ -85,7 +85,7 @@ public class ModelRenderer implements PConstants {
         }
     }
 
-    /** @return true after {@link #dispose()}. */
+    /** {@return true after {@link #dispose()}} */
     public boolean isDisposed() {
         return drawer.isDisposed();
     }
@@ -228,7 +228,7 @@ public class ModelRenderer implements PConstants {
         drawer.setScale(scale);
     }
 
-    /** @return the uniform scale of the drawing. */
+    /** {@return the uniform scale of the drawing} */
     public float getScale() {
         return drawer.getScale();
     }
@@ -256,7 +256,7 @@ public class ModelRenderer implements PConstants {
         drawer.leaveStyleAsPaperEngine(target);
     }
 
-    /** @return the drawer doing the work: its styles, view and replaceable painters. */
+    /** {@return the drawer doing the work: its styles, view and replaceable painters} */
     public ModelDrawer getDrawer() {
         return drawer;
     }

@@ -45,92 +45,92 @@ public final class ModelSnapshot {
     }
 
     /**
-     * @return true if this copy carries the interactions; false if the reader asked for masses only
-     *     ({@link #requestLinks}), and {@link #getNumberOfLinks()} is then 0
+     * {@return true if this copy carries the interactions; false if the reader asked for masses only
+     *     ({@link #requestLinks}), and {@link #getNumberOfLinks()} is then 0}
      */
     public boolean hasLinks() {
         return buf.hasLinks;
     }
 
     /**
-     * @return true if this copy carries the velocity and force of every mass; false if only the haptic avatars'
-     *         forces (the other masses then read 0)
+     * {@return true if this copy carries the velocity and force of every mass; false if only the haptic avatars'
+     *         forces (the other masses then read 0)}
      */
     public boolean hasMotion() {
         return buf.motion;
     }
 
-    /** @return the step count at which the copy was taken, or -1 before the first publication. */
+    /** {@return the step count at which the copy was taken, or -1 before the first publication} */
     public long getStep() {
         return buf.step;
     }
 
-    /** @return the number of masses in the copy. */
+    /** {@return the number of masses in the copy} */
     public int getNumberOfMats() {
         return buf.masses;
     }
 
-    /** @return the number of interactions in the copy (0 when it carries none: {@link #hasLinks()}). */
+    /** {@return the number of interactions in the copy (0 when it carries none: {@link #hasLinks()})} */
     public int getNumberOfLinks() {
         return buf.links;
     }
 
-    /** @return the x coordinate of mass {@code i}, in model length units. */
+    /** {@return the x coordinate of mass {@code i}, in model length units} */
     public double x(int i) {
         return buf.pos[3 * checkMass(i)];
     }
 
-    /** @return the y coordinate of mass {@code i}. */
+    /** {@return the y coordinate of mass {@code i}} */
     public double y(int i) {
         return buf.pos[3 * checkMass(i) + 1];
     }
 
-    /** @return the z coordinate of mass {@code i}. */
+    /** {@return the z coordinate of mass {@code i}} */
     public double z(int i) {
         return buf.pos[3 * checkMass(i) + 2];
     }
 
-    /** @return the x component of the velocity of mass {@code i}, in length units per second. */
+    /** {@return the x component of the velocity of mass {@code i}, in length units per second} */
     public double vx(int i) {
         return buf.vel[3 * checkMass(i)];
     }
 
-    /** @return the y component of the velocity of mass {@code i}, in length units per second. */
+    /** {@return the y component of the velocity of mass {@code i}, in length units per second} */
     public double vy(int i) {
         return buf.vel[3 * checkMass(i) + 1];
     }
 
-    /** @return the z component of the velocity of mass {@code i}, in length units per second. */
+    /** {@return the z component of the velocity of mass {@code i}, in length units per second} */
     public double vz(int i) {
         return buf.vel[3 * checkMass(i) + 2];
     }
 
-    /** @return the speed of mass {@code i} (the norm of its velocity over the last step), length units per second. */
+    /** {@return the speed of mass {@code i} (the norm of its velocity over the last step), length units per second} */
     public double speed(int i) {
         int q = 3 * checkMass(i);
         return Math.sqrt(buf.vel[q] * buf.vel[q] + buf.vel[q + 1] * buf.vel[q + 1] + buf.vel[q + 2] * buf.vel[q + 2]);
     }
 
     /**
-     * @return the x component of the force of the interactions on mass {@code i} at this step, in the model's
+     * {@return the x component of the force of the interactions on mass {@code i} at this step, in the model's
      *         force unit (newtons in REAL_UNITS); for a haptic avatar, the mean per step since its force was last
-     *         taken (what the device is being sent), for fixed and driven masses 0
+     *         taken (what the device is being sent), for fixed and driven masses 0}
      */
     public double fx(int i) {
         return buf.force[3 * checkMass(i)];
     }
 
-    /** @return the y component of the force on mass {@code i} (see {@link #fx(int)}). */
+    /** {@return the y component of the force on mass {@code i} (see {@link #fx(int)})} */
     public double fy(int i) {
         return buf.force[3 * checkMass(i) + 1];
     }
 
-    /** @return the z component of the force on mass {@code i} (see {@link #fx(int)}). */
+    /** {@return the z component of the force on mass {@code i} (see {@link #fx(int)})} */
     public double fz(int i) {
         return buf.force[3 * checkMass(i) + 2];
     }
 
-    /** @return the norm of the force on mass {@code i} (see {@link #fx(int)}). */
+    /** {@return the norm of the force on mass {@code i} (see {@link #fx(int)})} */
     public double forceNorm(int i) {
         int q = 3 * checkMass(i);
         return Math.sqrt(buf.force[q] * buf.force[q] + buf.force[q + 1] * buf.force[q + 1] + buf.force[q + 2] * buf.force[q + 2]);
@@ -142,26 +142,26 @@ public final class ModelSnapshot {
         return out.set(buf.pos[q], buf.pos[q + 1], buf.pos[q + 2]);
     }
 
-    /** @return the type of mass {@code i}. */
+    /** {@return the type of mass {@code i}} */
     public matModuleType getMatType(int i) {
         return buf.massTypes[checkMass(i)];
     }
 
-    /** @return the index of the first mass of interaction {@code l}. */
+    /** {@return the index of the first mass of interaction {@code l}} */
     public int getLinkMat1Idx(int l) {
         return buf.ends[2 * checkLink(l)];
     }
 
-    /** @return the index of the second mass of interaction {@code l} (the first again for a plane contact). */
+    /** {@return the index of the second mass of interaction {@code l} (the first again for a plane contact)} */
     public int getLinkMat2Idx(int l) {
         return buf.ends[2 * checkLink(l) + 1];
     }
 
     /**
-     * @return the elongation of interaction {@code l}: its distance minus its length parameter, in model length
+     * {@return the elongation of interaction {@code l}: its distance minus its length parameter, in model length
      *     units (for a plane contact its gap to the plane minus its offset; for a 1D spring its z distance), as
      *     the model's own {@code getLinkElongationAt} gives at the copy's step. Computed from the copied positions
-     *     on the reading thread.
+     *     on the reading thread}
      */
     public double getLinkElongation(int l) {
         int k = checkLink(l);
@@ -184,7 +184,7 @@ public final class ModelSnapshot {
         return d - buf.length[k];
     }
 
-    /** @return the type of interaction {@code l}. */
+    /** {@return the type of interaction {@code l}} */
     public linkModuleType getLinkType(int l) {
         return buf.linkTypes[checkLink(l)];
     }

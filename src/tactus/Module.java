@@ -1,8 +1,7 @@
 package tactus;
 
+import tactus.internal.calls.ModuleCalls;
 import tactus.internal.model.Check;
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
 
 /**
  * A handle on one module (a mass or an interaction) of a {@link PhysicalModel}: a thin view onto its slot
@@ -10,29 +9,17 @@ import tactus.internal.ModelCore;
  * mass turned into a fixed point); after that every method throws {@link IllegalStateException}.
  */
 public abstract class Module {
-    /** The model's rooms and its way in: a handle calls them directly, as the facade does. */
-    final ModelCore core;
-    final ModelLock gate;
+    /** The handles of this module's model (the one place that makes them). */
+    final ModuleHandles handles;
+    /** The calls this handle makes, by its module id: the same door the model's own calls go through. */
+    final ModuleCalls calls;
     final int id;
     private volatile boolean valid = true;
 
-    Module(ModelCore core, ModelLock gate, int id) {
-        this.core = core;
-        this.gate = gate;
+    Module(ModuleHandles handles, int id) {
+        this.handles = handles;
+        this.calls = handles.calls;
         this.id = id;
-    }
-
-    /** Enters the model for a call of this handle, and checks, once in, that the module is still part of it. */
-    void enter() {
-        gate.enter();
-        if (!valid) {
-            gate.exit();
-            checkValid();
-        }
-    }
-
-    void exit() {
-        gate.exit();
     }
 
     void invalidate() {
@@ -62,15 +49,15 @@ public abstract class Module {
         }
     }
 
-    /** @return true while the module is part of its model. */
+    /** {@return true while the module is part of its model} */
     public boolean isValid() {
         return valid;
     }
 
-    /** @return the unique name of this module. */
+    /** {@return the unique name of this module} */
     public abstract String getName();
 
-    /** @return the module type, for example "Mass3D" or "SpringDamper3D". */
+    /** {@return the module type, for example "Mass3D" or "SpringDamper3D"} */
     public abstract String getType();
 
     @Override

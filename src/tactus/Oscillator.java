@@ -1,56 +1,38 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
+import tactus.internal.calls.ModuleCalls.MassParam;
+
 
 /**
  * A mass tied to its rest position by an internal spring and damper (Osc3D, Osc1D). Parameter
  * changes take effect at the next step.
  */
 public abstract class Oscillator extends InertialMass {
-    Oscillator(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    Oscillator(ModuleHandles handles, int id, int stamp) {
+        super(handles, id, stamp);
     }
 
-    /** @return the internal stiffness (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
-        enter();
-        try {
-            return core.params.oscStiffness("getStiffness", id);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.massParam(id, stamp, MassParam.STIFFNESS);
     }
 
     /** Sets the internal stiffness (REAL_UNITS: N/m). */
     public void setStiffness(double K) {
         checkFinite("setStiffness", "K", K);
-        enter();
-        try {
-            core.params.setOsc("setStiffness", id, K, Double.NaN);
-        } finally {
-            exit();
-        }
+        calls.setMassParam(id, stamp, MassParam.STIFFNESS, K);
     }
 
-    /** @return the internal damping (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping (REAL_UNITS: N·s/m)} */
     public double getDamping() {
-        enter();
-        try {
-            return core.params.oscDamping("getDamping", id);
-        } finally {
-            exit();
-        }
+        checkValid();
+        return calls.massParam(id, stamp, MassParam.DAMPING);
     }
 
     /** Sets the internal damping (REAL_UNITS: N·s/m). */
     public void setDamping(double Z) {
         checkFinite("setDamping", "Z", Z);
-        enter();
-        try {
-            core.params.setOsc("setDamping", id, Double.NaN, Z);
-        } finally {
-            exit();
-        }
+        calls.setMassParam(id, stamp, MassParam.DAMPING, Z);
     }
 }

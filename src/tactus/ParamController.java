@@ -134,7 +134,7 @@ public class ParamController extends AbstractController {
     }
 
 
-    /** @return true while a ramp is running. */
+    /** {@return true while a ramp is running} */
     public boolean isRamping() {
         return ramping;
     }

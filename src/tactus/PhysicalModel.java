@@ -4,6 +4,7 @@ import java.util.concurrent.locks.Lock;
 import processing.core.PVector;
 import tactus.internal.model.Check;
 import tactus.internal.calls.BuildCalls;
+import tactus.internal.calls.ModuleCalls;
 import tactus.internal.calls.ParamCalls;
 import tactus.internal.calls.QueryCalls;
 import tactus.internal.calls.SettingsCalls;
@@ -12,7 +13,6 @@ import tactus.internal.model.ApiAccess;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.realtime.Stepping;
 import tactus.internal.ModelCore;
-import tactus.internal.calls.ControllerBook;
 
 /**
  * A mass-interaction physical model: masses and interactions addressed by name, simulated at a fixed rate with
@@ -41,8 +41,8 @@ import tactus.internal.calls.ControllerBook;
  * machinery in {@code tactus.internal} (not API; docs/architecture.md, "Inside tactus").
  */
 public class PhysicalModel {
-    /** The library version. */
-    public static final String VERSION = "0.2.0";
+    /** The library version, such as "0.3.0" (the release's, read from the library's resources when it loads). */
+    public static final String VERSION = tactus.internal.LibraryVersion.read();
 
     static {
         ApiAccess.install(new ApiDoors());
@@ -53,9 +53,13 @@ public class PhysicalModel {
     final ModelLock gate;
     /** The stepping calls, in both modes. */
     private final Stepping stepping;
+    /** The one warning of a model stepped before init(). */
+    private final tactus.internal.model.InitNotice initNotice = new tactus.internal.model.InitNotice();
     /** The rest of each call, by concern: once in the model, each hands the work to its room. */
     private final SettingsCalls settings;
     private final BuildCalls build;
+    /** The handles of this model's modules, by id (the one place that makes them). */
+    private final ModuleHandles handles;
     private final QueryCalls query;
     private final StateCalls state;
     private final ParamCalls param;
@@ -81,13 +85,13 @@ public class PhysicalModel {
         ModuleHandles handles = new ModuleHandles();
         core = new ModelCore(system, simRate, displayRate, handles);
         gate = new ModelLock(core);
-        handles.core = core;
-        handles.gate = gate;
+        handles.calls = new ModuleCalls(core, gate);
+        this.handles = handles;
         core.ramps = controllers;
         stepping = new Stepping(core, gate);
         settings = new SettingsCalls(core, gate);
         build = new BuildCalls(core, gate);
-        query = new QueryCalls(core, gate, controllers);
+        query = new QueryCalls(core, gate);
         state = new StateCalls(core, gate);
         param = new ParamCalls(core, gate);
     }
@@ -107,22 +111,22 @@ public class PhysicalModel {
         this(simRate, 30, system);
     }
 
-    /** @return the library version string. */
+    /** {@return the library version string} */
     public static String version() {
         return VERSION;
     }
 
     /**
-     * @return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
+     * {@return the model's lock; hold it ({@code lock()} ... {@code finally unlock()}) to make several calls
      *     atomic with respect to other threads (while the model is stepped in realtime, with respect to other
      *     editors only: the stepping thread never takes it, and every call made while holding it is queued like any
-     *     other, in call order)
+     *     other, in call order)}
      */
     public Lock getLock() {
         return gate.lock();
     }
 
-    /** @return the unit system of this model. */
+    /** {@return the unit system of this model} */
     public paramSystem getParamSystem() {
         return settings.getParamSystem();
     }
@@ -166,9 +170,9 @@ public class PhysicalModel {
     }
 
     /**
-     * @return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
+     * {@return the thread that steps this model in realtime (the owner, see {@link #beginRealtimeStepping()}), or null
      *     when the model is not stepped in realtime or no thread has taken the role yet (or since the last owner
-     *     gave it up)
+     *     gave it up)}
      */
     public Thread getRealtimeOwner() {
         return gate.owner();
@@ -217,23 +221,23 @@ public class PhysicalModel {
     }
 
     /**
-     * @return the number of queued changes (over the life of the model) that found one of their targets removed
+     * {@return the number of queued changes (over the life of the model) that found one of their targets removed
      *     when the stepping thread applied them, for example a {@code setLinkStiffness} queued just before a
      *     {@link DivergenceListener} on the audio thread removed that link: the writes to the removed modules were
-     *     skipped (the others applied) and nothing was thrown
+     *     skipped (the others applied) and nothing was thrown}
      */
     public long getDroppedCommands() {
         return gate.droppedCommands();
     }
 
-    /** @return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()}). */
+    /** {@return true while the model is stepped in realtime (see {@link #beginRealtimeStepping()})} */
     public boolean isRealtimeStepping() {
         return gate.mode() != null;
     }
 
     // =================================================================== rates and stepping
 
-    /** @return the simulation rate, in steps per second. */
+    /** {@return the simulation rate, in steps per second} */
     public int getSimRate() {
         return settings.getSimRate();
     }
@@ -270,7 +274,7 @@ public class PhysicalModel {
         return stepping.holdSimRate(holder);
     }
 
-    /** @return the display rate, in frames per second. */
+    /** {@return the display rate, in frames per second} */
     public int getDisplayRate() {
         return settings.getDisplayRate();
     }
@@ -298,11 +302,13 @@ public class PhysicalModel {
      * @return the number of steps of this frame
      */
     public int draw_physics() {
+        initNotice.check(core.initialized, "draw_physics()");
         return stepping.frame();
     }
 
     /** Runs one simulation step. */
     public void computeStep() {
+        initNotice.check(core.initialized, "computeStep()");
         stepping.step();
     }
 
@@ -311,6 +317,7 @@ public class PhysicalModel {
         if (n < 0) {
             throw new IllegalArgumentException("computeNSteps: the step count must be >= 0, got " + n);
         }
+        initNotice.check(core.initialized, "computeNSteps()");
         stepping.steps(n);
     }
 
@@ -327,20 +334,20 @@ public class PhysicalModel {
         settings.setThreads(threads);
     }
 
-    /** @return the number of threads large models may use. */
+    /** {@return the number of threads large models may use} */
     public int getThreads() {
         return settings.getThreads();
     }
 
-    /** @return the number of steps simulated since the model was created. */
+    /** {@return the number of steps simulated since the model was created} */
     public long getStepCount() {
         return settings.getStepCount();
     }
 
     /**
-     * @return what one step computes, in order, one label per computation the compiled plan runs (for example
+     * {@return what one step computes, in order, one label per computation the compiled plan runs (for example
      *     "free 3D masses", "3D masses with gravity or friction", "fixed points", "springs"): a scene pays only
-     *     for the effects it has
+     *     for the effects it has}
      */
     public String[] getSimulatedEffects() {
         return settings.getSimulatedEffects();
@@ -379,7 +386,7 @@ public class PhysicalModel {
      * @return the newest snapshot (empty, with step -1, before {@link #init()})
      */
     public ModelSnapshot getSnapshot() {
-        return (ModelSnapshot) stepping.snapshot().view;
+        return stepping.snapshot().view;
     }
 
     // =================================================================== global medium
@@ -394,7 +401,7 @@ public class PhysicalModel {
         settings.setGravity(magnitude);
     }
 
-    /** @return the gravity magnitude in model units. */
+    /** {@return the gravity magnitude in model units} */
     public double getGravity() {
         return settings.getGravity();
     }
@@ -402,6 +409,15 @@ public class PhysicalModel {
     /** Sets the gravity direction ("up"); it is normalised. Masses accelerate along its opposite. */
     public void setGravityDirection(Vect3D direction) {
         settings.setGravityDirection(direction);
+    }
+
+    /**
+     * Sets the gravity direction ("up") from its three components; it is normalised. The same as
+     * {@link #setGravityDirection(Vect3D)}, for a program without Processing core on the class path: there javac
+     * cannot choose between the one-argument forms, since one of them takes a {@code PVector}.
+     */
+    public void setGravityDirection(double x, double y, double z) {
+        setGravityDirection(new Vect3D(x, y, z));
     }
 
     /** Sets the gravity direction ("up") from a Processing vector; see {@link #setGravityDirection(Vect3D)}. */
@@ -412,7 +428,7 @@ public class PhysicalModel {
         setGravityDirection(new Vect3D(direction.x, direction.y, direction.z));
     }
 
-    /** @return a copy of the normalised gravity direction. */
+    /** {@return a copy of the normalised gravity direction} */
     public Vect3D getGravityDirection() {
         return settings.getGravityDirection();
     }
@@ -422,7 +438,7 @@ public class PhysicalModel {
         settings.setFriction(f);
     }
 
-    /** @return the air friction in model units. */
+    /** {@return the air friction in model units} */
     public double getFriction() {
         return settings.getFriction();
     }
@@ -439,32 +455,32 @@ public class PhysicalModel {
      * @return the new module's handle
      */
     public Mass3D addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass3D(name, mass, initPos, initVel);
+        return handles.mass(build.addMass3D(name, mass, initPos, initVel));
     }
 
     /** Adds a free 3D mass that ignores air friction and gravity: only its interactions move it. */
     public Mass3DSimple addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass3DSimple(name, mass, initPos, initVel);
+        return handles.mass(build.addMass3DSimple(name, mass, initPos, initVel));
     }
 
     /** Adds a mass that moves in its initial z plane only (see {@link #addMass3D}). */
     public Mass2DPlane addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass2DPlane(name, mass, initPos, initVel);
+        return handles.mass(build.addMass2DPlane(name, mass, initPos, initVel));
     }
 
     /** Adds a mass that moves along z only (see {@link #addMass3D}). */
     public Mass1D addMass1D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return build.addMass1D(name, mass, initPos, initVel);
+        return handles.mass(build.addMass1D(name, mass, initPos, initVel));
     }
 
     /** Adds a fixed point in 3D. */
     public Ground3D addGround3D(String name, Vect3D initPos) {
-        return build.addGround3D(name, initPos);
+        return handles.mass(build.addGround3D(name, initPos));
     }
 
     /** Adds a fixed point for 1D models. */
     public Ground1D addGround1D(String name, Vect3D initPos) {
-        return build.addGround1D(name, initPos);
+        return handles.mass(build.addGround1D(name, initPos));
     }
 
     /**
@@ -472,12 +488,12 @@ public class PhysicalModel {
      * (REAL_UNITS: N/m and N·s/m), also subject to air friction and gravity.
      */
     public Osc3D addOsc3D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc3D(name, mass, K, Z, initPos, initVel);
+        return handles.mass(build.addOsc3D(name, mass, K, Z, initPos, initVel));
     }
 
     /** Adds an oscillator that moves along z only (see {@link #addOsc3D}). */
     public Osc1D addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc1D(name, mass, K, Z, initPos, initVel);
+        return handles.mass(build.addOsc1D(name, mass, K, Z, initPos, initVel));
     }
 
     /**
@@ -490,12 +506,12 @@ public class PhysicalModel {
      * @param t60 60 dB decay time in seconds, &gt; 0 ({@code Double.POSITIVE_INFINITY} for none)
      */
     public Osc3D addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc3DTuned(name, mass, freqHz, t60, initPos, initVel);
+        return handles.mass(build.addOsc3DTuned(name, mass, freqHz, t60, initPos, initVel));
     }
 
     /** Adds a 1D oscillator tuned by its pitch and decay (see {@link #addOsc3DTuned}). */
     public Osc1D addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return build.addOsc1DTuned(name, mass, freqHz, t60, initPos, initVel);
+        return handles.mass(build.addOsc1DTuned(name, mass, freqHz, t60, initPos, initVel));
     }
 
     /** Retunes an oscillator to ring at exactly {@code freqHz} and decay by 60 dB in {@code t60} seconds. */
@@ -503,12 +519,12 @@ public class PhysicalModel {
         build.tuneOsc(name, freqHz, t60);
     }
 
-    /** @return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included. */
+    /** {@return the frequency (Hz) at which an oscillator actually rings in this scheme, friction included} */
     public double getOscFrequency(String name) {
         return build.getOscFrequency(name);
     }
 
-    /** @return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included. */
+    /** {@return the 60 dB decay time (seconds) of an oscillator in this scheme, friction included} */
     public double getOscT60(String name) {
         return build.getOscT60(name);
     }
@@ -521,84 +537,91 @@ public class PhysicalModel {
      * @param smoothing EWMA length in steps, &ge; 1 (1 means no smoothing)
      */
     public HapticInput3D addHapticInput3D(String name, Vect3D initPos, int smoothing) {
-        return build.addHapticInput3D(name, initPos, smoothing);
+        return handles.mass(build.addHapticInput3D(name, initPos, smoothing));
     }
 
     /** Adds a kinematic position driver that follows its target through an EWMA (weight 1/smoothing). */
     public PosInput3D addPosInput3D(String name, Vect3D initPos, int smoothing) {
-        return build.addPosInput3D(name, initPos, smoothing);
+        return handles.mass(build.addPosInput3D(name, initPos, smoothing));
     }
 
     // =================================================================== adding interactions
 
     /** Adds a spring: force -K (d - dist) along the line between the masses (REAL_UNITS: K in N/m). */
     public Spring3D addSpring3D(String name, double dist, double K, String m1, String m2) {
-        return build.addSpring3D(name, dist, K, m1, m2);
+        return handles.link(build.addSpring3D(name, dist, K, m1, m2));
     }
 
     /** Adds a spring between two mass handles (see {@link #addSpring3D(String, double, double, String, String)}). */
     public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return build.addSpring3D(name, dist, K, m1, m2);
+        String[] n = handles.distinct("addSpring3D", name, m1, m2);
+        return addSpring3D(name, dist, K, n[0], n[1]);
     }
 
     /** Adds a damper: force -Z (d(n) - d(n-1)) along the line between the masses (REAL_UNITS: N·s/m). */
     public Damper3D addDamper3D(String name, double Z, String m1, String m2) {
-        return build.addDamper3D(name, Z, m1, m2);
+        return handles.link(build.addDamper3D(name, Z, m1, m2));
     }
 
     /** Adds a damper between two mass handles. */
     public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return build.addDamper3D(name, Z, m1, m2);
+        String[] n = handles.distinct("addDamper3D", name, m1, m2);
+        return addDamper3D(name, Z, n[0], n[1]);
     }
 
     /** Adds a spring and damper in parallel, with rest length {@code dist}. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addSpringDamper3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a spring-damper between two mass handles. */
     public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addSpringDamper3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addSpringDamper3D", name, m1, m2);
+        return addSpringDamper3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a spring-damper that acts along z only, on the signed difference z1 - z2 with rest value {@code dist}. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addSpringDamper1D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a 1D spring-damper between two mass handles. */
     public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addSpringDamper1D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addSpringDamper1D", name, m1, m2);
+        return addSpringDamper1D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a rope: a spring-damper that acts only while the masses are farther apart than {@code dist}. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addRope3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addRope3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a rope between two mass handles. */
     public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addRope3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addRope3D", name, m1, m2);
+        return addRope3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a contact: a spring-damper that acts only while the masses are closer than the threshold {@code dist}. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addContact3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addContact3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a contact between two mass handles. */
     public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addContact3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addContact3D", name, m1, m2);
+        return addContact3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /** Adds a bubble: keeps m1 within radius {@code dist} of m2 with a spring-damper acting only outside it. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return build.addBubble3D(name, dist, K, Z, m1, m2);
+        return handles.link(build.addBubble3D(name, dist, K, Z, m1, m2));
     }
 
     /** Adds a bubble between two mass handles. */
     public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return build.addBubble3D(name, dist, K, Z, m1, m2);
+        String[] n = handles.distinct("addBubble3D", name, m1, m2);
+        return addBubble3D(name, dist, K, Z, n[0], n[1]);
     }
 
     /**
@@ -608,13 +631,13 @@ public class PhysicalModel {
      */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, String m1) {
-        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
+        return handles.link(build.addPlaneContact(name, l0, K, Z, orientation, pos, m1));
     }
 
     /** Adds a plane contact on a mass handle. */
     public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation,
                                           double pos, Mass m1) {
-        return build.addPlaneContact(name, l0, K, Z, orientation, pos, m1);
+        return addPlaneContact(name, l0, K, Z, orientation, pos, handles.nameOf(m1));
     }
 
     /**
@@ -623,89 +646,90 @@ public class PhysicalModel {
      * keeps it bounded by attr / dLim².
      */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
-        return build.addAttractor3D(name, dLim, attr, m1, m2);
+        return handles.link(build.addAttractor3D(name, dLim, attr, m1, m2));
     }
 
     /** Adds an attractor between two mass handles. */
     public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return build.addAttractor3D(name, dLim, attr, m1, m2);
+        String[] n = handles.distinct("addAttractor3D", name, m1, m2);
+        return addAttractor3D(name, dLim, attr, n[0], n[1]);
     }
 
     // =================================================================== look-up
 
-    /** @return true when a mass with this name exists. */
+    /** {@return true when a mass with this name exists} */
     public boolean matExists(String name) {
         return query.matExists(name);
     }
 
-    /** @return true when at least one interaction with this name exists. */
+    /** {@return true when at least one interaction with this name exists} */
     public boolean linkExists(String name) {
         return query.linkExists(name);
     }
 
-    /** @return the number of masses. */
+    /** {@return the number of masses} */
     public int getNumberOfMats() {
         return query.getNumberOfMats();
     }
 
-    /** @return the number of interactions. */
+    /** {@return the number of interactions} */
     public int getNumberOfLinks() {
         return query.getNumberOfLinks();
     }
 
-    /** @return the index of a mass in insertion order (indices shift down after removals), or -1. */
+    /** {@return the index of a mass in insertion order (indices shift down after removals), or -1} */
     public int getMatIndex(String name) {
         return query.getMatIndex(name);
     }
 
-    /** @return the index of the first interaction with this name, in insertion order, or -1. */
+    /** {@return the index of the first interaction with this name, in insertion order, or -1} */
     public int getLinkIndex(String name) {
         return query.getLinkIndex(name);
     }
 
-    /** @return the handle of a mass by name. */
+    /** {@return the handle of a mass by name} */
     public Mass getMass(String name) {
-        return query.getMass(name);
+        return query.read(() -> handles.mass(query.getMass(name))); // the id and its handle, read together
     }
 
-    /** @return the handle of the first interaction with this name. */
+    /** {@return the handle of the first interaction with this name} */
     public Interaction getInteraction(String name) {
-        return query.getInteraction(name);
+        return query.read(() -> handles.link(query.getInteraction(name)));
     }
 
-    /** @return the handle of the interaction at an index (interaction names may repeat; indices do not). */
+    /** {@return the handle of the interaction at an index (interaction names may repeat; indices do not)} */
     public Interaction getInteractionAt(int i) {
-        return query.getInteractionAt(i);
+        return query.read(() -> handles.link(query.getInteractionAt(i)));
     }
 
-    /** @return the name of the mass at an index. */
+    /** {@return the name of the mass at an index} */
     public String getMatNameAt(int i) {
         return query.getMatNameAt(i);
     }
 
-    /** @return the name of the interaction at an index. */
+    /** {@return the name of the interaction at an index} */
     public String getLinkNameAt(int i) {
         return query.getLinkNameAt(i);
     }
 
-    /** @return the module type of the mass at an index, for example {@code matModuleType.Mass3D}. */
+    /** {@return the module type of the mass at an index, for example {@code matModuleType.Mass3D}} */
     public matModuleType getMatTypeAt(int i) {
         return query.getMatTypeAt(i);
     }
 
-    /** @return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}. */
+    /** {@return the module type of the interaction at an index, for example {@code linkModuleType.SpringDamper3D}} */
     public linkModuleType getLinkTypeAt(int i) {
         return query.getLinkTypeAt(i);
     }
 
-    /** @return the names of the two masses of an interaction (the same name twice for a plane contact). */
+    /** {@return the names of the two masses of an interaction (the same name twice for a plane contact)} */
     public String[] getLinkMatNames(String name) {
         return query.getLinkMatNames(name);
     }
 
     // =================================================================== mass state
 
-    /** @return a copy of the position of a mass. */
+    /** {@return a copy of the position of a mass} */
     public Vect3D getMatPosition(String name) {
         return getMatPosition(name, new Vect3D());
     }
@@ -715,37 +739,37 @@ public class PhysicalModel {
         return state.getMatPosition(name, out);
     }
 
-    /** @return the position of a mass as a Processing {@code PVector} (float precision). */
+    /** {@return the position of a mass as a Processing {@code PVector} (float precision)} */
     public PVector getMatPVector(String name) {
         return getMatPosition(name).toPVector();
     }
 
-    /** @return the position of the mass at an index. */
+    /** {@return the position of the mass at an index} */
     public Vect3D getMatPosAt(int i) {
         return state.getMatPosAt(i);
     }
 
-    /** @return the velocity of a mass, in units per second (backward difference over the last step). */
+    /** {@return the velocity of a mass, in units per second (backward difference over the last step)} */
     public Vect3D getMatVelocity(String name) {
         return state.getMatVelocity(name);
     }
 
-    /** @return the velocity of the mass at an index, in units per second. */
+    /** {@return the velocity of the mass at an index, in units per second} */
     public Vect3D getMatVelAt(int i) {
         return state.getMatVelAt(i);
     }
 
-    /** @return the force accumulated on a mass by the last interaction phase (REAL_UNITS: N). */
+    /** {@return the force accumulated on a mass by the last interaction phase (REAL_UNITS: N)} */
     public Vect3D getMatForce(String name) {
         return state.getMatForce(name);
     }
 
-    /** @return the force on the mass at an index. */
+    /** {@return the force on the mass at an index} */
     public Vect3D getMatFrcAt(int i) {
         return state.getMatFrcAt(i);
     }
 
-    /** @return the force on a mass as a Processing {@code PVector}. */
+    /** {@return the force on a mass as a Processing {@code PVector}} */
     public PVector getMatForcePVector(String name) {
         return getMatForce(name).toPVector();
     }
@@ -787,7 +811,7 @@ public class PhysicalModel {
         state.setMoveKeepsLinkHistory(keep);
     }
 
-    /** @return true when a position move keeps the link history, as the paper's engine did (false by default). */
+    /** {@return true when a position move keeps the link history, as the paper's engine did (false by default)} */
     public boolean getMoveKeepsLinkHistory() {
         return state.getMoveKeepsLinkHistory();
     }
@@ -834,60 +858,60 @@ public class PhysicalModel {
 
     // =================================================================== the paper engine's index queries
 
-    /** @return the position of the first mass of the interaction at an index (a copy). */
+    /** {@return the position of the first mass of the interaction at an index (a copy)} */
     public Vect3D getLinkPos1At(int i) {
         return query.getLinkPos1At(i);
     }
 
     /**
-     * @return the position of the second mass of the interaction at an index (a copy); for a plane contact, the
-     *     foot of its mass on the plane
+     * {@return the position of the second mass of the interaction at an index (a copy); for a plane contact, the
+     *     foot of its mass on the plane}
      */
     public Vect3D getLinkPos2At(int i) {
         return query.getLinkPos2At(i);
     }
 
-    /** @return the index of the first mass of the interaction at an index. */
+    /** {@return the index of the first mass of the interaction at an index} */
     public int getLinkMat1IdxAt(int i) {
         return query.getLinkMat1IdxAt(i);
     }
 
-    /** @return the index of the second mass of the interaction at an index, or -1 for a plane contact. */
+    /** {@return the index of the second mass of the interaction at an index, or -1 for a plane contact} */
     public int getLinkMat2IdxAt(int i) {
         return query.getLinkMat2IdxAt(i);
     }
 
-    /** @return the name of the first mass of the interaction at an index. */
+    /** {@return the name of the first mass of the interaction at an index} */
     public String getLinkMat1NameAt(int i) {
         return query.getLinkMat1NameAt(i);
     }
 
-    /** @return the name of the second mass of the interaction at an index, or "" for a plane contact. */
+    /** {@return the name of the second mass of the interaction at an index, or "" for a plane contact} */
     public String getLinkMat2NameAt(int i) {
         return query.getLinkMat2NameAt(i);
     }
 
-    /** @return the position the mass at an index had one step before (a copy). */
+    /** {@return the position the mass at an index had one step before (a copy)} */
     public Vect3D getMatDelayedPosAt(int i) {
         return query.getMatDelayedPosAt(i);
     }
 
-    /** @return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N). */
+    /** {@return the force on the mass at an index as a Processing {@code PVector} (REAL_UNITS: N)} */
     public PVector getMatForcePVector(int i) {
         return query.getMatForcePVector(i);
     }
 
-    /** @return the distance (length units) of the oscillator at an index from its rest point. */
+    /** {@return the distance (length units) of the oscillator at an index from its rest point} */
     public double getOsc3DDeltaPos(int i) {
         return query.getOsc3DDeltaPos(i);
     }
 
-    /** @return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index. */
+    /** {@return the axis (0 = x, 1 = y, 2 = z) of the plane contact at an index} */
     public int getPlaneOrientationAt(int i) {
         return query.getPlaneOrientationAt(i);
     }
 
-    /** @return the coordinate, on its axis, of the plane of the plane contact at an index. */
+    /** {@return the coordinate, on its axis, of the plane of the plane contact at an index} */
     public double getPlanePositionAt(int i) {
         return query.getPlanePositionAt(i);
     }
@@ -895,20 +919,20 @@ public class PhysicalModel {
     // ------------------------------------------------------------- read-only queries for exporters (tactus.export)
 
     /**
-     * @return the rest point of an oscillator ({@code Osc3D} or {@code Osc1D}), in length units (a copy): the
-     *     point its internal spring pulls it toward
+     * {@return the rest point of an oscillator ({@code Osc3D} or {@code Osc1D}), in length units (a copy): the
+     *     point its internal spring pulls it toward}
      * @throws IllegalArgumentException if the name is unknown or the mass is not an oscillator
      */
     public Vect3D getOscRestPosition(String name) {
         return query.getOscRestPosition(name);
     }
 
-    /** @return true while the mass is under velocity control ({@link #triggerVelocityControl}) */
+    /** {@return true while the mass is under velocity control ({@link #triggerVelocityControl})} */
     public boolean isVelocityControlled(String name) {
         return query.isVelocityControlled(name);
     }
 
-    /** @return the names of the mass subsets that have a contact group, in creation order (a new array) */
+    /** {@return the names of the mass subsets that have a contact group, in creation order (a new array)} */
     public String[] getContactGroupSubsets() {
         return query.getContactGroupSubsets();
     }
@@ -974,12 +998,16 @@ public class PhysicalModel {
      */
     public void addParamController(String name, String subsetName, String paramName, float rampTime) {
         Check.name("addParamController", name);
-        query.addParamController(name, new ParamController(this, rampTime, subsetName, paramName));
+        ParamController pc = new ParamController(this, rampTime, subsetName, paramName);
+        query.read(() -> {
+            controllers.put(name, pc);
+            return null;
+        });
     }
 
-    /** @return the named parameter controller, or null when there is none. */
+    /** {@return the named parameter controller, or null when there is none} */
     public ParamController getParamController(String name) {
-        return query.getParamController(name);
+        return query.read(() -> controllers.get(name));
     }
 
     /** The spelling of {@link #addParamController} used by the paper-era example sketches. */
@@ -999,12 +1027,12 @@ public class PhysicalModel {
 
     // =================================================================== mass parameters
 
-    /** @return the inertia of a mass (REAL_UNITS: kg). */
+    /** {@return the inertia of a mass (REAL_UNITS: kg)} */
     public double getMatMass(String name) {
         return param.getMatMass(name);
     }
 
-    /** @return the inertia of the mass at an index. */
+    /** {@return the inertia of the mass at an index} */
     public double getMatMassAt(int i) {
         return param.getMatMassAt(i);
     }
@@ -1039,74 +1067,74 @@ public class PhysicalModel {
         param.setMatDampingAt(i, Z);
     }
 
-    /** @return the internal stiffness of an oscillator (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness of an oscillator (REAL_UNITS: N/m)} */
     public double getMatStiffness(String name) {
         return param.getMatStiffness(name);
     }
 
-    /** @return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m). */
+    /** {@return the internal stiffness of the oscillator at an index (REAL_UNITS: N/m)} */
     public double getMatStiffnessAt(int i) {
         return param.getMatStiffnessAt(i);
     }
 
-    /** @return the internal damping of an oscillator (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping of an oscillator (REAL_UNITS: N·s/m)} */
     public double getMatDamping(String name) {
         return param.getMatDamping(name);
     }
 
-    /** @return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m). */
+    /** {@return the internal damping of the oscillator at an index (REAL_UNITS: N·s/m)} */
     public double getMatDampingAt(int i) {
         return param.getMatDampingAt(i);
     }
 
     // =================================================================== interaction state and parameters
 
-    /** @return the current distance between the masses of an interaction (for a plane contact, the gap to the plane). */
+    /** {@return the current distance between the masses of an interaction (for a plane contact, the gap to the plane)} */
     public double getLinkDistance(String name) {
         return param.getLinkDistance(name);
     }
 
-    /** @return the distance of the interaction at an index. */
+    /** {@return the distance of the interaction at an index} */
     public double getLinkDistanceAt(int i) {
         return param.getLinkDistanceAt(i);
     }
 
-    /** @return the elongation of an interaction: its distance minus its length parameter. */
+    /** {@return the elongation of an interaction: its distance minus its length parameter} */
     public double getLinkElongation(String name) {
         return param.getLinkElongation(name);
     }
 
-    /** @return the elongation of the interaction at an index. */
+    /** {@return the elongation of the interaction at an index} */
     public double getLinkElongationAt(int i) {
         return param.getLinkElongationAt(i);
     }
 
-    /** @return the stiffness of an interaction (REAL_UNITS: N/m). */
+    /** {@return the stiffness of an interaction (REAL_UNITS: N/m)} */
     public double getLinkStiffness(String name) {
         return param.getLinkStiffness(name);
     }
 
-    /** @return the stiffness of the interaction at an index (REAL_UNITS: N/m). */
+    /** {@return the stiffness of the interaction at an index (REAL_UNITS: N/m)} */
     public double getLinkStiffnessAt(int i) {
         return param.getLinkStiffnessAt(i);
     }
 
-    /** @return the damping of an interaction (REAL_UNITS: N·s/m). */
+    /** {@return the damping of an interaction (REAL_UNITS: N·s/m)} */
     public double getLinkDamping(String name) {
         return param.getLinkDamping(name);
     }
 
-    /** @return the damping of the interaction at an index (REAL_UNITS: N·s/m). */
+    /** {@return the damping of the interaction at an index (REAL_UNITS: N·s/m)} */
     public double getLinkDampingAt(int i) {
         return param.getLinkDampingAt(i);
     }
 
-    /** @return the length parameter of an interaction: rest length, threshold, radius, plane offset or limit. */
+    /** {@return the length parameter of an interaction: rest length, threshold, radius, plane offset or limit} */
     public double getLinkDRest(String name) {
         return param.getLinkDRest(name);
     }
 
-    /** @return the length parameter of the interaction at an index. */
+    /** {@return the length parameter of the interaction at an index} */
     public double getLinkDRestAt(int i) {
         return param.getLinkDRestAt(i);
     }
@@ -1207,7 +1235,7 @@ public class PhysicalModel {
      * @return the handle of the new fixed point
      */
     public Ground3D changeToFixedPoint(String name) {
-        return build.changeToFixedPoint(name);
+        return handles.mass(build.changeToFixedPoint(name));
     }
 
     /** Removes every mass, interaction, subset and contact group; names become free again, and a diverged model may run again. */
@@ -1257,7 +1285,7 @@ public class PhysicalModel {
         build.removeLinkFromSubset(link, subset);
     }
 
-    /** @return the names of the members of a mass or link subset, in the order they were added. */
+    /** {@return the names of the members of a mass or link subset, in the order they were added} */
     public String[] getSubsetMembers(String subset) {
         return build.getSubsetMembers(subset);
     }
@@ -1301,12 +1329,12 @@ public class PhysicalModel {
         changeParamOfSubset((double) value, subset, param);
     }
 
-    /** @return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset. */
+    /** {@return the value of a parameter ("mass", "stiffness", "damping", "dist") for the first member of a subset} */
     public double getParamValueOfSubset(String subset, String param) {
         return build.getParamValueOfSubset(subset, param);
     }
 
-    /** @return the mean position of the masses of a mass subset. */
+    /** {@return the mean position of the masses of a mass subset} */
     public Vect3D getBarycenterOfSubset(String subset) {
         return build.getBarycenterOfSubset(subset);
     }
@@ -1339,7 +1367,7 @@ public class PhysicalModel {
         build.removeContactGroup(subset);
     }
 
-    /** @return true when the mass subset has a contact group. */
+    /** {@return true when the mass subset has a contact group} */
     public boolean hasContactGroup(String subset) {
         return build.hasContactGroup(subset);
     }
@@ -1374,7 +1402,7 @@ public class PhysicalModel {
         settings.setStrict(strict);
     }
 
-    /** @return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)}). */
+    /** {@return true when the paper's API throws where the paper's engine forgave (see {@link #setStrict(boolean)})} */
     public boolean isStrict() {
         return settings.isStrict();
     }
@@ -1389,7 +1417,7 @@ public class PhysicalModel {
         settings.setStabilityPolicy(policy);
     }
 
-    /** @return the current stability policy (WARN by default). */
+    /** {@return the current stability policy (WARN by default)} */
     public StabilityPolicy getStabilityPolicy() {
         return settings.getStabilityPolicy();
     }
@@ -1402,12 +1430,12 @@ public class PhysicalModel {
         settings.setMaxContactsPerMass(n);
     }
 
-    /** @return the stability analysis of the model as it is now (see {@link StabilityReport}). */
+    /** {@return the stability analysis of the model as it is now (see {@link StabilityReport})} */
     public StabilityReport getStabilityReport() {
         return settings.getStabilityReport();
     }
 
-    /** @return one line describing the model's stability: the margin, or the offending module and its limit. */
+    /** {@return one line describing the model's stability: the margin, or the offending module and its limit} */
     public String describeStability() {
         return settings.describeStability();
     }
@@ -1430,7 +1458,7 @@ public class PhysicalModel {
         settings.setDivergenceLimit(limit);
     }
 
-    /** @return true when the model has diverged and is frozen. */
+    /** {@return true when the model has diverged and is frozen} */
     public boolean isDiverged() {
         return settings.isDiverged();
     }
@@ -1454,17 +1482,17 @@ public class PhysicalModel {
 
     // =================================================================== energy
 
-    /** @return the kinetic energy of the model (REAL_UNITS: J), from backward-difference velocities. */
+    /** {@return the kinetic energy of the model (REAL_UNITS: J), from backward-difference velocities} */
     public double getKineticEnergy() {
         return query.getKineticEnergy();
     }
 
-    /** @return the potential energy stored in engaged springs, oscillators, attractors and gravity (REAL_UNITS: J). */
+    /** {@return the potential energy stored in engaged springs, oscillators, attractors and gravity (REAL_UNITS: J)} */
     public double getPotentialEnergy() {
         return query.getPotentialEnergy();
     }
 
-    /** @return kinetic plus potential energy (REAL_UNITS: J). */
+    /** {@return kinetic plus potential energy (REAL_UNITS: J)} */
     public double getTotalEnergy() {
         return query.getTotalEnergy();
     }

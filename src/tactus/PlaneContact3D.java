@@ -1,7 +1,7 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
+import tactus.internal.calls.ModuleCalls.LinkParam;
+
 
 /**
  * A one-sided contact between a mass and an axis-aligned plane: while the mass coordinate q on
@@ -9,37 +9,23 @@ import tactus.internal.ModelCore;
  * {@code -K t - Z (q(n) - q(n-1))}, where {@code t = q - position - l0}.
  */
 public final class PlaneContact3D extends ElasticInteraction {
-    PlaneContact3D(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    PlaneContact3D(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
-    /** @return the plane's coordinate on its axis. */
+    /** {@return the plane's coordinate on its axis} */
     public double getPlanePosition() {
-        enter();
-        try {
-            return core.params.planePosition("getPlanePosition", id);
-        } finally {
-            exit();
-        }
+        return param(LinkParam.PLANE_POSITION);
     }
 
     /** Moves the plane along its axis. */
     public void setPlanePosition(double pos) {
-        enter();
-        try {
-            core.params.setPlanePosition("setPlanePosition", id, pos);
-        } finally {
-            exit();
-        }
+        checkValid();
+        calls.setLinkParam(id, "setPlanePosition", LinkParam.PLANE_POSITION, pos);
     }
 
-    /** @return the plane's axis: 0 (x), 1 (y) or 2 (z). */
+    /** {@return the plane's axis: 0 (x), 1 (y) or 2 (z)} */
     public int getOrientation() {
-        enter();
-        try {
-            return core.params.planeAxis("getOrientation", id);
-        } finally {
-            exit();
-        }
+        return (int) param(LinkParam.PLANE_AXIS);
     }
 }

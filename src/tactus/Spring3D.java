@@ -1,15 +1,13 @@
 package tactus;
 
-import tactus.internal.realtime.ModelLock;
-import tactus.internal.ModelCore;
 
 /** A linear spring: f = -K (d - l0) along the line between the masses, with no damping. */
 public final class Spring3D extends Interaction {
-    Spring3D(ModelCore core, ModelLock gate, int id) {
-        super(core, gate, id);
+    Spring3D(ModuleHandles handles, int id) {
+        super(handles, id);
     }
 
-    /** @return the stiffness (REAL_UNITS: N/m). */
+    /** {@return the stiffness (REAL_UNITS: N/m)} */
     public double getStiffness() {
         return stiffness();
     }
@@ -19,7 +17,7 @@ public final class Spring3D extends Interaction {
         stiffness(K);
     }
 
-    /** @return the rest length. */
+    /** {@return the rest length} */
     public double getLength() {
         return length();
     }

@@ -31,64 +31,64 @@ public final class StabilityReport {
         this.negativeDamping = negativeDamping;
     }
 
-    /** @return the estimate of {@code λmax(M⁻¹(K + 2Z))} used for the verdict (links plus contacts), per step². */
+    /** {@return the estimate of {@code λmax(M⁻¹(K + 2Z))} used for the verdict (links plus contacts), per step²} */
     public double lambda() {
         return lambda;
     }
 
-    /** @return a guaranteed upper bound of {@code λmax(M⁻¹(K + 2Z))} from Gershgorin row sums. */
+    /** {@return a guaranteed upper bound of {@code λmax(M⁻¹(K + 2Z))} from Gershgorin row sums} */
     public double gershgorinBound() {
         return gershgorin;
     }
 
-    /** @return the part of {@link #lambda()} due to permanent links, oscillators and friction. */
+    /** {@return the part of {@link #lambda()} due to permanent links, oscillators and friction} */
     public double lambdaLinks() {
         return lambdaLinks;
     }
 
-    /** @return the bound added for contacts counted as engaged. */
+    /** {@return the bound added for contacts counted as engaged} */
     public double lambdaContacts() {
         return lambdaContacts;
     }
 
-    /** @return {@code LIMIT - lambda}; positive means the scheme is stable for this network. */
+    /** {@return {@code LIMIT - lambda}; positive means the scheme is stable for this network} */
     public double margin() {
         return LIMIT - lambda;
     }
 
-    /** @return true when the network is inside the stable region (negative damping aside). */
+    /** {@return true when the network is inside the stable region (negative damping aside)} */
     public boolean isStable() {
         return lambda < LIMIT;
     }
 
-    /** @return true when the eigenvalue iteration converged; otherwise {@link #gershgorinBound()} is the safe figure. */
+    /** {@return true when the eigenvalue iteration converged; otherwise {@link #gershgorinBound()} is the safe figure} */
     public boolean isConverged() {
         return converged;
     }
 
     /**
-     * @return the factor by which every stiffness and damping of the network could be multiplied and stay
-     *     stable: {@code LIMIT / lambda} (infinite for a network with nothing that can go unstable)
+     * {@return the factor by which every stiffness and damping of the network could be multiplied and stay
+     *     stable: {@code LIMIT / lambda} (infinite for a network with nothing that can go unstable)}
      */
     public double headroom() {
         return lambda > 0 ? LIMIT / lambda : Double.POSITIVE_INFINITY;
     }
 
     /**
-     * @return the module where the bound is tightest, as {@code Type "name"} (for example
+     * {@return the module where the bound is tightest, as {@code Type "name"} (for example
      *     {@code SpringDamper3D "s12"} or {@code the contact group of subset "marbles"}), or null for a trivial
-     *     network
+     *     network}
      */
     public String getCulprit() {
         return culprit;
     }
 
-    /** @return true when some damping coefficient is negative: oscillations are sustained or grow. */
+    /** {@return true when some damping coefficient is negative: oscillations are sustained or grow} */
     public boolean hasNegativeDamping() {
         return negativeDamping != null;
     }
 
-    /** @return the first module with negative damping, as {@code Type "name"}, or null. */
+    /** {@return the first module with negative damping, as {@code Type "name"}, or null} */
     public String getNegativeDampingModule() {
         return negativeDamping;
     }

@@ -14,7 +14,7 @@ public class UnstableModelException extends IllegalStateException {
         this.report = report;
     }
 
-    /** @return the analysis that found the model unstable. */
+    /** {@return the analysis that found the model unstable} */
     public StabilityReport getReport() {
         return report;
     }

@@ -29,17 +29,17 @@ public final class Vect3D {
         this(v.x, v.y, v.z);
     }
 
-    /** @return the x component. */
+    /** {@return the x component} */
     public double x() {
         return x;
     }
 
-    /** @return the y component. */
+    /** {@return the y component} */
     public double y() {
         return y;
     }
 
-    /** @return the z component. */
+    /** {@return the z component} */
     public double z() {
         return z;
     }
@@ -84,23 +84,23 @@ public final class Vect3D {
         return set(x / s, y / s, z / s);
     }
 
-    /** @return the Euclidean length of this vector. */
+    /** {@return the Euclidean length of this vector} */
     public double norm() {
         return Math.sqrt(x * x + y * y + z * z);
     }
 
-    /** @return the squared length of this vector. */
+    /** {@return the squared length of this vector} */
     public double sqNorm() {
         return x * x + y * y + z * z;
     }
 
-    /** @return the distance between this point and another. */
+    /** {@return the distance between this point and another} */
     public double dist(Vect3D v) {
         double dx = x - v.x, dy = y - v.y, dz = z - v.z;
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
-    /** @return the squared distance between this point and another. */
+    /** {@return the squared distance between this point and another} */
     public double sqDist(Vect3D v) {
         double dx = x - v.x, dy = y - v.y, dz = z - v.z;
         return dx * dx + dy * dy + dz * dz;
@@ -117,13 +117,16 @@ public final class Vect3D {
         return v != null && x == v.x && y == v.y && z == v.z;
     }
 
-    /** @return true when all three components are finite. */
+    /** {@return true when all three components are finite} */
     public boolean isFinite() {
         return Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z);
     }
 
-    /** @return a new Processing {@code PVector} with this vector's components as floats. */
+    /** {@return a new Processing {@code PVector} with this vector's components as floats} */
     public PVector toPVector() {
+        tactus.internal.model.OptionalLibrary.PROCESSING_CORE.require("a PVector call (toPVector, getMatPVector, "
+                + "getMatForcePVector)", "without Processing core read the same values as a Vect3D: getMatPosition(name), "
+                + "getMatForce(name), and their fields x, y, z");
         return new PVector((float) x, (float) y, (float) z);
     }
 

@@ -22,6 +22,7 @@
 
 import tactus.*;
 import tactus.haptics.*;
+import tactus.haptics.passivity.*;
 
 PhysicalModel mdl;
 HapticSession haptics;

@@ -27,6 +27,7 @@
 import tactus.*;
 import tactus.haptics.*;
 import tactus.haptics.emulator.*;
+import tactus.haptics.passivity.*;
 
 PhysicalModel mdl;
 HapticSession3D haptics;

@@ -76,15 +76,15 @@ public final class AudioScheduling {
         priority = p;
     }
 
-    /** @return the priority asked for output threads: 0 (off) or 1..99. */
+    /** {@return the priority asked for output threads: 0 (off) or 1..99} */
     public static int realtimePriority() {
         return priority;
     }
 
     /**
-     * @return how the latest output thread that played a PhyUGen is scheduled: "real-time (SCHED_FIFO 45 for thread
+     * {@return how the latest output thread that played a PhyUGen is scheduled: "real-time (SCHED_FIFO 45 for thread
      *     "...", VM and GC threads at 46 or above, JIT compilers at 1 or above)", "normal priority (real-time
-     *     refused: why)", "normal priority (real-time not requested)", or that none has played yet
+     *     refused: why)", "normal priority (real-time not requested)", or that none has played yet}
      */
     public static String status() {
         return status;

@@ -106,7 +106,7 @@ public final class AvatarExchange {
         this.mode = mode;
     }
 
-    /** @return the force mode. */
+    /** {@return the force mode} */
     public ForceMode forceMode() {
         return mode;
     }
@@ -245,7 +245,7 @@ public final class AvatarExchange {
         FORCE_SEQ.setRelease(this, s + 2);
     }
 
-    /** @return the number of steps the audio side has reported so far (any thread; for latency checks). */
+    /** {@return the number of steps the audio side has reported so far (any thread; for latency checks)} */
     public long audioSteps() {
         while (true) {
             long s1 = (long) FORCE_SEQ.getAcquire(this);

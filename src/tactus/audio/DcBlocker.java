@@ -10,7 +10,11 @@ public final class DcBlocker {
     private double lastIn;
     private double lastOut;
 
-    /** @param r the pole, 0 &le; r &lt; 1 */
+    /**
+     * Creates a DC blocker with pole r.
+     *
+     * @param r the pole, 0 &le; r &lt; 1
+     */
     public DcBlocker(double r) {
         setCoefficient(r);
     }
@@ -23,7 +27,7 @@ public final class DcBlocker {
         this.r = r;
     }
 
-    /** @return the pole r. */
+    /** {@return the pole r} */
     public double coefficient() {
         return r;
     }
@@ -43,8 +47,8 @@ public final class DcBlocker {
     }
 
     /**
-     * @return the -3 dB corner in Hz at a sample rate, from the exact response
-     *     |H|^2 = 2 (1 - cos w) / (1 + r^2 - 2 r cos w), which gives cos w = (3 - r^2) / (4 - 2 r)
+     * {@return the -3 dB corner in Hz at a sample rate, from the exact response
+     *     |H|^2 = 2 (1 - cos w) / (1 + r^2 - 2 r cos w), which gives cos w = (3 - r^2) / (4 - 2 r)}
      */
     public static double cornerHz(double r, double sampleRate) {
         double cosW = (3 - r * r) / (4 - 2 * r);

@@ -33,17 +33,17 @@ public final class DecimationFilter {
         this.ring = new double[2 * taps.length];
     }
 
-    /** @return the decimation factor k. */
+    /** {@return the decimation factor k} */
     public int factor() {
         return factor;
     }
 
-    /** @return a copy of the impulse response (DC gain 1). */
+    /** {@return a copy of the impulse response (DC gain 1)} */
     public double[] taps() {
         return taps.clone();
     }
 
-    /** @return the delay in input samples (model steps). */
+    /** {@return the delay in input samples (model steps)} */
     public double delaySteps() {
         return (taps.length - 1) / 2.0;
     }
@@ -65,7 +65,7 @@ public final class DecimationFilter {
         return false;
     }
 
-    /** @return the filtered value at the latest input: sum of taps[j] x(n - j). */
+    /** {@return the filtered value at the latest input: sum of taps[j] x(n - j)} */
     public double output() {
         double[] h = taps;
         double[] r = ring;
@@ -84,7 +84,7 @@ public final class DecimationFilter {
     }
 
     /**
-     * @return |H(f)| of impulse response h at frequency f, given as a fraction of the rate h runs at
+     * {@return |H(f)| of impulse response h at frequency f, given as a fraction of the rate h runs at}
      */
     public static double magnitude(double[] h, double f) {
         double re = 0;

@@ -21,6 +21,8 @@ public final class ExchangeAvatarLink implements AvatarLink {
     private final AvatarExchange exchange;
 
     /**
+     * Creates a link that hands the haptic loop the avatar force a {@link PhyUGen} accumulated.
+     *
      * @param exchange the exchange that a {@link PhyUGen} was given with {@link PhyUGen#attachAvatar}; either
      *     force mode works (the link always hands the loop the sum and its step count)
      */

@@ -23,6 +23,8 @@ public final class LineOut {
     }
 
     /**
+     * Opens Minim's line out, or a silent real-time output where the machine has no sound device.
+     *
      * @param type {@code Minim.MONO} or {@code Minim.STEREO}
      * @param bufferSize frames per buffer
      * @param sampleRate frames per second
@@ -48,8 +50,8 @@ public final class LineOut {
     }
 
     /**
-     * @return {@code out} if it is not null, otherwise a silent real-time output with the given format (for
-     *     sketches that call {@code minim.getLineOut()} themselves)
+     * {@return {@code out} if it is not null, otherwise a silent real-time output with the given format (for
+     *     sketches that call {@code minim.getLineOut()} themselves)}
      */
     public static AudioOutput orSilent(AudioOutput out, int type, int bufferSize, float sampleRate) {
         return out != null ? out : silent(type, bufferSize, sampleRate, System.err);

@@ -62,27 +62,27 @@ public final class ListeningPoint {
         return new Gains(gain, pan);
     }
 
-    /** @return what this point reads. */
+    /** {@return what this point reads} */
     public Kind kind() {
         return kind;
     }
 
-    /** @return the name of the mass or interaction it reads. */
+    /** {@return the name of the mass or interaction it reads} */
     public String element() {
         return element;
     }
 
-    /** @return the axis (0 = x, 1 = y, 2 = z) of a displacement point, -1 for interactions. */
+    /** {@return the axis (0 = x, 1 = y, 2 = z) of a displacement point, -1 for interactions} */
     public int axis() {
         return axis;
     }
 
-    /** @return the gain (output units per model unit). */
+    /** {@return the gain (output units per model unit)} */
     public double gain() {
         return gains.gain;
     }
 
-    /** @return the pan, from -1 (left) through 0 (centre) to 1 (right). */
+    /** {@return the pan, from -1 (left) through 0 (centre) to 1 (right)} */
     public double pan() {
         return gains.pan;
     }
@@ -120,8 +120,8 @@ public final class ListeningPoint {
     }
 
     /**
-     * @return true while this point outputs 0 because its mass or interaction is no longer in the model (removed,
-     *     or the model cleared); it sounds again, from its first origin, once an element with its name is back
+     * {@return true while this point outputs 0 because its mass or interaction is no longer in the model (removed,
+     *     or the model cleared); it sounds again, from its first origin, once an element with its name is back}
      */
     public boolean isSilent() {
         return silent;

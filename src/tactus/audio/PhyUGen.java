@@ -207,9 +207,9 @@ public class PhyUGen extends UGen {
     }
 
     /**
-     * @return the model this unit generator plays ({@link #mdl}), for the sketch's other threads: its changes are
+     * {@return the model this unit generator plays ({@link #mdl}), for the sketch's other threads: its changes are
      *     queued for the audio thread, and {@code getSnapshot()} gives positions to draw; null for a
-     *     {@link SteppedModel} that is not a {@code PhysicalModel}
+     *     {@link SteppedModel} that is not a {@code PhysicalModel}}
      */
     public PhysicalModel getModel() {
         return mdl;
@@ -272,7 +272,7 @@ public class PhyUGen extends UGen {
         throw new IllegalArgumentException("removeListeningPoint: " + p + " is not a listening point of this PhyUGen");
     }
 
-    /** @return the listening points, in the order they were added. */
+    /** {@return the listening points, in the order they were added} */
     public ListeningPoint[] listeningPoints() {
         return points.clone();
     }
@@ -298,7 +298,7 @@ public class PhyUGen extends UGen {
         dcEnabled = enabled;
     }
 
-    /** @return the pole of the DC blocker. */
+    /** {@return the pole of the DC blocker} */
     public double dcBlockerCoefficient() {
         return dcCoefficient;
     }
@@ -324,13 +324,13 @@ public class PhyUGen extends UGen {
         }
     }
 
-    /** @return the oversampling factor k (model steps per audio sample). */
+    /** {@return the oversampling factor k (model steps per audio sample)} */
     public int oversampling() {
         Oversampler o = oversampler;
         return o == null ? 1 : o.factor;
     }
 
-    /** @return the group delay of the decimation filter, in audio samples (0 without oversampling). */
+    /** {@return the group delay of the decimation filter, in audio samples (0 without oversampling)} */
     public double decimationDelaySamples() {
         Oversampler o = oversampler;
         return o == null ? 0 : o.left.delaySteps() / o.factor;
@@ -365,27 +365,27 @@ public class PhyUGen extends UGen {
     // ------------------------------------------------------------------ faults
 
     /**
-     * @return true while the whole output is silent because the model cannot step: it diverged (until
-     *     {@code clearDivergence()}), or its steps throw (retried about 20 times a second)
+     * {@return true while the whole output is silent because the model cannot step: it diverged (until
+     *     {@code clearDivergence()}), or its steps throw (retried about 20 times a second)}
      */
     public boolean isSilenced() {
         return faults.isSilenced();
     }
 
     /**
-     * @return the last error the audio thread met (a step, a listening point, the avatar, or this PhyUGen), or null
-     *     if none; kept after the PhyUGen recovers
+     * {@return the last error the audio thread met (a step, a listening point, the avatar, or this PhyUGen), or null
+     *     if none; kept after the PhyUGen recovers}
      */
     public Throwable getLastError() {
         return faults.lastError();
     }
 
-    /** @return true while the attached avatar has left the model: its exchange gets zero force until it is back. */
+    /** {@return true while the attached avatar has left the model: its exchange gets zero force until it is back} */
     public boolean isAvatarLost() {
         return faults.isAvatarLost();
     }
 
-    /** @return how many faults the audio thread has met (the model silenced, a point or the avatar lost, a bug). */
+    /** {@return how many faults the audio thread has met (the model silenced, a point or the avatar lost, a bug)} */
     public long getFaultCount() {
         return faults.faultCount();
     }

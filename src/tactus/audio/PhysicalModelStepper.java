@@ -105,7 +105,7 @@ public final class PhysicalModelStepper implements SteppedModel {
     /** A lock that is never contended: realtime stepping needs none around a sample. */
     private static final java.util.concurrent.locks.Lock NO_LOCK = new NoLock();
 
-    /** @return the wrapped model. */
+    /** {@return the wrapped model} */
     public PhysicalModel model() {
         return model;
     }
@@ -153,14 +153,14 @@ public final class PhysicalModelStepper implements SteppedModel {
         }
     }
 
-    /** @return how many times this stepper put the model back in realtime stepping after the mode ended. */
+    /** {@return how many times this stepper put the model back in realtime stepping after the mode ended} */
     public long realtimeResumes() {
         return resumes;
     }
 
     /**
-     * @return true while the model has diverged and is frozen (until {@code clearDivergence()}); a lock-free read
-     *     ({@link PhysicalModel#isDivergedNow()}) that never waits for a thread holding the model
+     * {@return true while the model has diverged and is frozen (until {@code clearDivergence()}); a lock-free read
+     *     ({@link PhysicalModel#isDivergedNow()}) that never waits for a thread holding the model}
      */
     @Override
     public boolean isHalted() {

@@ -29,6 +29,8 @@ public final class SilentAudioOut implements AudioOut {
     private Thread thread;
 
     /**
+     * Creates a silent output that consumes samples in real time, for machines with no sound device.
+     *
      * @param channels 1 (mono) or 2 (stereo)
      * @param bufferSize frames per buffer (&gt; 0)
      * @param sampleRate frames per second (&gt; 0)
@@ -78,7 +80,7 @@ public final class SilentAudioOut implements AudioOut {
         }
     }
 
-    /** @return the number of buffers computed so far. */
+    /** {@return the number of buffers computed so far} */
     public long buffersRendered() {
         return buffersRendered;
     }

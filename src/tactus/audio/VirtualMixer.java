@@ -112,7 +112,48 @@ final class VirtualMixer extends BareLine implements Mixer {
                 }
             }
         }
+        if (!namedByProperty()) { // a program that named the virtual output asked for it: nothing to say
+            tellOnce(System.err);
+        }
         return new VirtualSourceLine(SOURCE, f);
+    }
+
+    /** Whether the line saying that the sound goes nowhere was printed in this JVM. */
+    private static final java.util.concurrent.atomic.AtomicBoolean TOLD = new java.util.concurrent.atomic.AtomicBoolean();
+
+    /**
+     * Prints, the first time in the JVM that a line of the virtual output is handed out, one line saying that the
+     * sound goes nowhere and how to render a WAV instead.
+     *
+     * @return true if it printed now
+     */
+    static boolean tellOnce(java.io.PrintStream out) {
+        if (!TOLD.compareAndSet(false, true)) {
+            return false;
+        }
+        out.println(notice(System.getProperty(HeadlessRecording.PROPERTY)));
+        out.flush();
+        return true;
+    }
+
+    /**
+     * The line of {@link #tellOnce}.
+     *
+     * @param record the value of {@value HeadlessRecording#PROPERTY}, or null
+     */
+    static String notice(String record) {
+        String start = "Tactus audio: no sound device, so the sound plays into Tactus's virtual output";
+        if (record != null && !record.trim().isEmpty()) {
+            return start + " and is recorded to " + new java.io.File(record.trim()).getAbsolutePath() + " ("
+                    + HeadlessRecording.PROPERTY + ")";
+        }
+        return start + " and goes nowhere. To hear it, render a WAV: run with -D" + HeadlessRecording.PROPERTY
+                + "=out.wav to record this output, or render offline with tactus.audio.OfflineRenderer.renderToWav";
+    }
+
+    /** Lets a test see the line printed again. */
+    static void forgetToldForTests() {
+        TOLD.set(false);
     }
 
     @Override

@@ -14,7 +14,7 @@ public final class FaustExportException extends RuntimeException {
         this.module = module;
     }
 
-    /** @return the name of the module or option that cannot be exported */
+    /** {@return the name of the module or option that cannot be exported} */
     public String getModule() {
         return module;
     }

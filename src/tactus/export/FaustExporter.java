@@ -36,7 +36,7 @@ public final class FaustExporter {
     }
 
     /**
-     * @return the Faust program of the model as it is now
+     * {@return the Faust program of the model as it is now}
      * @throws FaustExportException if a module or an option cannot be exported
      */
     public static String toDsp(PhysicalModel model, FaustExportOptions options) {

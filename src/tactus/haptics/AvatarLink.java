@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.loop.DecoupledAvatar;
+
 /**
  * What the haptic loop needs from a physical model: set the avatar's target position, take the force the
  * model has put on the avatar, and step the model. Implementations must not allocate in these calls.

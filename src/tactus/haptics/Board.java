@@ -6,6 +6,12 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import tactus.haptics.safety.GuardHeartbeat;
+import tactus.haptics.safety.MotorGuard;
+import tactus.haptics.safety.MotorGuardLink;
+import tactus.haptics.transport.SerialTransport;
+import tactus.haptics.transport.Transport;
+import tactus.haptics.transport.WireFormat;
 
 /**
  * The serial link to a Haply board (hAPI 2.x compatible), speaking the V2 wire protocol over a
@@ -648,8 +654,8 @@ public class Board implements AutoCloseable {
 
     // ------------------------------------------------------------------------------------------ for Device
 
-    /** The motor guard's link ({@link MotorGuardLink#NONE} without a guard; for tests). */
-    MotorGuardLink guardLink() {
+    /** The motor guard's link ({@link MotorGuardLink#NONE} without a guard). Not API: a test hook of the safety room. */
+    public MotorGuardLink guardLink() {
         return guard;
     }
 

@@ -3,6 +3,7 @@ package tactus.haptics;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import tactus.haptics.transport.WireFormat;
 
 /**
  * One mechanism on a Haply board (hAPI 2.x compatible): its motors, encoders, analog inputs and PWM pins,
@@ -467,13 +468,19 @@ public class Device {
         }
     }
 
-    /** Length in bytes of this device's reply to a write (0 before the setup). */
-    int replyBytes() {
+    /**
+     * Length in bytes of this device's reply to a write (0 before the setup). Not API: for the motor guard in
+     * {@code tactus.haptics.safety}.
+     */
+    public int replyBytes() {
         return frame == null ? 0 : WireFormat.replyLength(frame.length);
     }
 
-    /** The write message with zero torques and zero PWM, or null before the setup. */
-    byte[] zeroMessage() {
+    /**
+     * The write message with zero torques and zero PWM, or null before the setup. Not API: for the motor guard in
+     * {@code tactus.haptics.safety}.
+     */
+    public byte[] zeroMessage() {
         return zeroMessage;
     }
 

@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.pantograph.PantographKinematics;
+
 /**
  * Known Haply pantograph hardware: link lengths, motor and encoder wiring, encoder calibration, and the
  * mechanism the original sketches used. Every value can still be set by hand on {@link Device} and

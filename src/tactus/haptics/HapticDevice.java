@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.pantograph.PantographDevice;
+
 /**
  * A haptic device as the {@link HapticLoop} sees it: the handle's position and velocity in metres (device axes)
  * in, a force in newtons out, one exchange per tick. Implemented by {@link PantographDevice} (the 2-DoF Haply
@@ -50,6 +52,27 @@ public interface HapticDevice extends AutoCloseable {
      * @throws HaplyLinkException when the link to the device is lost
      */
     void sendForce(double fx, double fy, double fz);
+
+    /**
+     * Whether the device can render a force where its handle is now: false at a pose its kinematics cannot reach (the
+     * loop then counts a fault and sends zero force). The default is true.
+     */
+    default boolean canRender() {
+        return true;
+    }
+
+    /**
+     * The share of the last {@link #sendForce} that reached the handle (1: as asked; less when the device scaled it to
+     * its limits or applied a gain; 0 when it sent none), for the loop's passivity account. The default is 1.
+     */
+    default double renderedShare() {
+        return 1;
+    }
+
+    /** How many forces the device has scaled down to its limits since it was opened. The default is 0. */
+    default long limitedForces() {
+        return 0;
+    }
 
     /** Sends zero force, from any thread, best effort and bounded in time; never throws. */
     void zeroForce();

@@ -6,6 +6,15 @@ import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import java.util.regex.Pattern;
 import tactus.scheduling.RealtimeThreads;
+import tactus.haptics.loop.DecoupledAvatar;
+import tactus.haptics.loop.HeapWarmup;
+import tactus.haptics.loop.WindowHistogram;
+import tactus.haptics.pantograph.PantographDevice;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.passivity.HapticPort;
+import tactus.haptics.passivity.FrictionCompensation;
+import tactus.haptics.passivity.PassivityObserver;
+import tactus.haptics.passivity.VirtualCoupling;
 
 /**
  * The haptic loop: a dedicated thread at a fixed rate (1 kHz by default) that, each tick, reads the device,
@@ -56,12 +65,15 @@ public final class HapticLoop implements AutoCloseable {
         AUDIO
     }
 
-    private final Device device;                 // the board path (first constructor), or null
-    private final PantographKinematics kin;
-    private final HapticDevice spatial;          // the device path (second constructor), or null
+    /** The device every tick runs through: the one given, or the loop's own {@link PantographDevice} over a Device. */
+    private final HapticDevice spatial;
+    /** The loop's own pantograph when it was built on a {@link Device} (the loop then sets its torque gain and limit), else null. */
+    private final PantographDevice board;
+    /** The device as a pantograph (the loop's own or one given), for the joint torques; else null. */
+    private final PantographDevice pantograph;
     private final AvatarLink avatar;
-    private WorkspaceMapping explicitMapping;    // device path: set by setWorkspaceMapping, or null
-    private WorkspaceMapping mapping;            // device path: the mapping in use, fixed at start()
+    private WorkspaceMapping explicitMapping;    // set by setWorkspaceMapping, or null
+    private WorkspaceMapping mapping;            // the mapping in use, fixed at start()
 
     private volatile double rateHz = 1000;
     private Mode mode = Mode.HAPTICS_ONLY;
@@ -110,42 +122,38 @@ public final class HapticLoop implements AutoCloseable {
     private long computeMax;
     private long stale;
     private long faults;
-    private long clamped;
     private volatile long watchdogTrips;
 
     // per-tick state, loop thread only
     private final double[] force = new double[3];
-    private final double[] held = new double[2];   // the force per step being rendered (model units)
-    private final double[] tau = new double[2];
     private final double[] portTarget = new double[3];
-    private final double[] portForce = new double[3];
-    private volatile double devX = Double.NaN;
-    private volatile double devY = Double.NaN;
-    private volatile double torque1;
-    private volatile double torque2;
-    private volatile double forceX;
-    private volatile double forceY;
-    private int staleRun;
-    // device path, loop thread only
     private final double[] pos3 = new double[3];
     private final double[] model3 = new double[3];
-    private final double[] held3 = new double[3];
+    private final double[] held3 = new double[3];   // the force per step being rendered (model units)
     private final double[] force3 = new double[3];
+    private int staleRun;
+    // the last tick's handle and force, read by anyone
+    private volatile double devX = Double.NaN;
+    private volatile double devY = Double.NaN;
     private volatile double devZ = Double.NaN;
+    private volatile double forceX;
+    private volatile double forceY;
     private volatile double forceZ;
 
     /**
      * Creates a loop over a configured device (encoders 1, 2 give theta1, theta2; actuators 1, 2 take tau1,
-     * tau2), the pantograph kinematics, and a model's avatar.
+     * tau2), the pantograph kinematics, and a model's avatar. The loop drives them as a {@link PantographDevice}
+     * of its own, with its own torque gain and limit ({@link #setTorqueGain}, {@link #setTorqueLimit}) and the
+     * paper's mapping (alpha, beta, origin, mirrored x).
      */
     public HapticLoop(Device device, PantographKinematics kinematics, AvatarLink avatar) {
         if (device == null || kinematics == null || avatar == null) {
             throw new IllegalArgumentException("HapticLoop: device, kinematics and avatar must not be null, got "
                     + device + ", " + kinematics + ", " + avatar);
         }
-        this.device = device;
-        this.kin = kinematics;
-        this.spatial = null;
+        this.board = new PantographDevice(device, kinematics);
+        this.spatial = board;
+        this.pantograph = board;
         this.avatar = avatar;
     }
 
@@ -156,7 +164,7 @@ public final class HapticLoop implements AutoCloseable {
      * {@linkplain HapticDevice#defaultMapping() default axes} with scale alpha ({@link #setPositionGain}) and
      * the offset of {@link #setOrigin} ({@link #setMirrorX} applies to a planar device, whose default axes are the
      * paper's mirrored ones, and not to a 3-D device, whose axes say it). Forces go back along
-     * the same axes times beta ({@link #setForceGain}); the safety rules are those of the board path: a
+     * the same axes times beta ({@link #setForceGain}); the safety rules are those of every loop: a
      * non-finite force or one above the runaway limit gives zero force in the same tick, a model that throws
      * gives zero force and stops the loop, the watchdog zeroes the force, and a lost link or a device silent for
      * the link timeout stops the loop with a message.
@@ -165,17 +173,17 @@ public final class HapticLoop implements AutoCloseable {
         if (device == null || avatar == null) {
             throw new IllegalArgumentException("HapticLoop: device and avatar must not be null, got " + device + ", " + avatar);
         }
-        this.device = null;
-        this.kin = null;
+        this.board = null;
         this.spatial = device;
+        this.pantograph = device instanceof PantographDevice ? (PantographDevice) device : null;
         this.avatar = avatar;
         int bound = device.lateAnswerBound();
         port.setLateBound(Math.max(0, Math.min(bound, HapticPort.MAX_LATE)));
     }
 
     /**
-     * Sets how the device's metres map into the model (device path only; units per metre, offset in model units),
-     * replacing the default axes, alpha and origin. {@link #useRealUnits()} then keeps its axes and offset and
+     * Sets how the device's metres map into the model (a loop built on a {@link HapticDevice} only; units per metre,
+     * offset in model units), replacing the default axes, alpha and origin. {@link #useRealUnits()} then keeps its axes and offset and
      * sets its scale to 1.
      */
     public void setWorkspaceMapping(WorkspaceMapping m) {
@@ -183,7 +191,7 @@ public final class HapticLoop implements AutoCloseable {
         if (m == null) {
             throw new IllegalArgumentException("HapticLoop.setWorkspaceMapping: mapping must not be null");
         }
-        if (spatial == null) {
+        if (board != null) {
             throw new IllegalStateException("HapticLoop.setWorkspaceMapping: this loop drives a Device through its "
                     + "pantograph kinematics; use setPositionGain, setOrigin and setMirrorX, or build the loop on a HapticDevice");
         }
@@ -195,7 +203,7 @@ public final class HapticLoop implements AutoCloseable {
      * once started, else the one {@code start()} would use; null for a loop built on a {@link Device}.
      */
     public WorkspaceMapping workspaceMapping() {
-        if (spatial == null) {
+        if (board != null) {
             return null;
         }
         WorkspaceMapping m = mapping;
@@ -207,13 +215,13 @@ public final class HapticLoop implements AutoCloseable {
             return realUnits ? explicitMapping.withScale(1) : explicitMapping;
         }
         WorkspaceMapping m = spatial.defaultMapping().withScale(alpha).withOffset(ox, oy, oz);
-        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them, as on the board path
+        // a planar device's default axes are the paper's (x mirrored); setMirrorX(false) unmirrors them
         return spatial.dimensions() == 2 && !mirrorX ? m.mirrored(0) : m;
     }
 
     /** The device of a loop built on a {@link HapticDevice}, or null for one built on a {@link Device}. */
     public HapticDevice hapticDevice() {
-        return spatial;
+        return board != null ? null : spatial;
     }
 
     /** Sets the rate in Hz (1..10000; default 1000). */
@@ -454,12 +462,14 @@ public final class HapticLoop implements AutoCloseable {
             throw new IllegalStateException("HapticLoop.start: already started");
         }
         if (!deviceReady()) {
-            throw new IllegalStateException(spatial == null
+            throw new IllegalStateException(board != null
                     ? "HapticLoop.start: call device_set_parameters() on the device first"
                     : "HapticLoop.start: the device is not ready: " + spatial.describe() + ", " + spatial.status());
         }
-        if (spatial != null) {
-            mapping = effectiveMapping();
+        mapping = effectiveMapping();
+        if (board != null) {
+            board.setTorqueGain(torqueGain);
+            board.setTorqueLimit(torqueLimit);
         }
         port.start(1.0 / rateHz);
         if (mode == Mode.AUDIO && decoupleInAudioMode && !(avatar instanceof DecoupledAvatar) && !avatar.neverWaits()) {
@@ -588,7 +598,7 @@ public final class HapticLoop implements AutoCloseable {
         out[0] = devX;
         out[1] = devY;
         if (out.length > 2) {
-            out[2] = spatial != null ? devZ : Double.isNaN(devX) ? Double.NaN : 0;
+            out[2] = devZ;
         }
     }
 
@@ -600,13 +610,13 @@ public final class HapticLoop implements AutoCloseable {
         out[0] = forceX;
         out[1] = forceY;
         if (out.length > 2) {
-            out[2] = spatial != null ? forceZ : 0;
+            out[2] = forceZ;
         }
     }
 
     /** The torque (N m) sent to joint j (1 or 2) at the last tick. */
     public double torque(int joint) {
-        return joint == 1 ? torque1 : torque2;
+        return pantograph != null ? pantograph.torque(joint) : 0;
     }
 
     /**
@@ -783,7 +793,7 @@ public final class HapticLoop implements AutoCloseable {
         return new HapticTelemetry(rateHz, n, (lastNanos - startNanos) / 1e9, missed,
                 jitters.percentile(0.50), jitters.percentile(0.99), jitterMax,
                 computes.percentile(0.50), computes.percentile(0.99), computeMax,
-                stale, faults, clamped, watchdogTrips);
+                stale, faults, spatial.limitedForces(), watchdogTrips);
     }
 
     /** Prints the telemetry and the scheduling to standard output. */
@@ -875,124 +885,6 @@ public final class HapticLoop implements AutoCloseable {
         running = false;
     }
 
-    /** One tick; returns false if the loop must stop. */
-    private boolean tick(long period) {
-        if (spatial != null) {
-            return tickDevice(period);
-        }
-        boolean fresh;
-        try {
-            fresh = device.poll_data();
-        } catch (HaplyLinkException e) {
-            fail(e.getMessage());
-            return false;
-        }
-        if (fresh) {
-            staleRun = 0;
-            double th1 = Math.toRadians(device.angle(1));
-            double th2 = Math.toRadians(device.angle(2));
-            if (kin.forward(th1, th2)) {
-                devX = kin.x();
-                devY = kin.y();
-            }
-        } else {
-            stale++;
-            staleRun++;
-            if ((long) staleRun * period > linkTimeoutMillis * 1_000_000L) {
-                device.board().close();
-                fail("no reply from the Haply board on " + device.board().describe() + " for " + linkTimeoutMillis
-                        + " ms: check the USB cable and the board's power; the motors were sent zero torque");
-                return false;
-            }
-        }
-        double sx = mirrorX ? -1 : 1;
-        double x = devX;
-        double y = devY;
-        boolean poseOk = !Double.isNaN(x) && kin.isValid();
-        long steps;
-        try {
-            if (poseOk) {
-                port.sense(x, y, 0, fresh, portTarget);
-                active.setTarget(sx * alpha * portTarget[0] + ox, alpha * portTarget[1] + oy, oz);
-            }
-            if (mode == Mode.HAPTICS_ONLY) {
-                active.step(stepsPerTick);
-            }
-            steps = active.takeForceCounted(force);
-        } catch (RuntimeException e) {
-            writeTorques(0, 0);
-            fail("the model failed in the haptic loop, zero torque sent: " + e);
-            return false;
-        }
-        // The avatar force is summed over the steps since the last tick: render its mean per step. In audio
-        // mode the audio thread runs a buffer's steps in one burst (1024 steps every 23 ms), so most ticks see
-        // no step at all and a few see hundreds: the mean of the last steps is held in between.
-        if (mode == Mode.HAPTICS_ONLY) {
-            double k = 1.0 / stepsPerTick;
-            held[0] = force[0] * k;
-            held[1] = force[1] * k;
-        } else if (steps > 0) {
-            held[0] = force[0] / steps;
-            held[1] = force[1] / steps;
-        } else if (steps < 0) {
-            held[0] = force[0];              // the link cannot count its steps: render the sum, as it comes
-            held[1] = force[1];
-        }                                    // steps == 0: no step ran since the last tick, keep the mean
-        // the force goes back along the axes the position came from: a negative gain flips them both
-        double gy = alpha < 0 ? -1 : 1;
-        double fx = sx * gy * beta * held[0];
-        double fy = gy * beta * held[1];
-        if (Double.isNaN(x)) {
-            forceX = 0;                      // no position yet (start-up): nothing to render
-            forceY = 0;
-            port.sent(0);
-            return writeTorques(0, 0);
-        }
-        if (poseOk && Double.isFinite(fx) && Double.isFinite(fy)) {
-            portForce[0] = fx;
-            portForce[1] = fy;
-            portForce[2] = 0;
-            port.command(portForce);
-            fx = portForce[0];
-            fy = portForce[1];
-        }
-        if (!poseOk || !Double.isFinite(fx) || !Double.isFinite(fy) || Math.hypot(fx, fy) > forceLimit) {
-            faults++;
-            forceX = 0;
-            forceY = 0;
-            port.sent(0);
-            return writeTorques(0, 0);
-        }
-        forceX = fx;
-        forceY = fy;
-        kin.torques(fx, fy, torqueGain, tau);
-        double m = Math.max(Math.abs(tau[0]), Math.abs(tau[1]));
-        double scale = torqueGain;
-        if (m > torqueLimit) {
-            double s = torqueLimit / m;
-            tau[0] *= s;
-            tau[1] *= s;
-            scale *= s;
-            clamped++;
-        }
-        port.sent(scale);                    // the force at the handle is g J^-T tau: the gain and the limit's scale
-        return writeTorques(tau[0], tau[1]);
-    }
-
-    private boolean writeTorques(double t1, double t2) {
-        torque1 = t1;
-        torque2 = t2;
-        try {
-            device.set_actuator_torque(1, (float) t1);
-            device.set_actuator_torque(2, (float) t2);
-            device.device_write_torques();
-            return true;
-        } catch (HaplyLinkException e) {
-            fail(e.getMessage());
-            return false;
-        }
-    }
-
     private void fail(String message) {
         failure = message;
         running = false;
@@ -1021,10 +913,13 @@ public final class HapticLoop implements AutoCloseable {
         }
     }
 
-    // ------------------------------------------------------------------ the device path (a HapticDevice)
+    // ------------------------------------------------------------------------------------------ the tick
 
-    /** One tick over a {@link HapticDevice}; returns false if the loop must stop. Allocates nothing. */
-    private boolean tickDevice(long period) {
+    /**
+     * One tick over the {@link HapticDevice} (the 2DIY through a {@link PantographDevice}, an Inverse3, ...); returns
+     * false if the loop must stop. Allocates nothing.
+     */
+    private boolean tick(long period) {
         boolean fresh;
         try {
             fresh = spatial.update();
@@ -1044,19 +939,16 @@ public final class HapticLoop implements AutoCloseable {
             staleRun++;
             if ((long) staleRun * period > linkTimeoutMillis * 1_000_000L) {
                 spatial.close();
-                fail("no state from " + spatial.describe() + " for " + linkTimeoutMillis + " ms: check that the device is "
-                        + "on and connected; zero force was sent where the link still took it");
+                fail(silenceMessage());
                 return false;
             }
         }
         boolean known = !Double.isNaN(devX) && !Double.isNaN(devY) && !Double.isNaN(devZ);
+        boolean poseOk = known && spatial.canRender();   // false at a pose the pantograph cannot reach
         WorkspaceMapping m = mapping;
         long steps;
         try {
-            if (known) {
-                pos3[0] = devX;
-                pos3[1] = devY;
-                pos3[2] = devZ;
+            if (poseOk) {
                 port.sense(devX, devY, devZ, fresh, portTarget);
                 m.toModel(portTarget, model3);
                 active.setTarget(model3[0], model3[1], model3[2]);
@@ -1067,9 +959,12 @@ public final class HapticLoop implements AutoCloseable {
             steps = active.takeForceCounted(force);
         } catch (RuntimeException e) {
             sendDeviceForce(0, 0, 0);
-            fail("the model failed in the haptic loop, zero force sent: " + e);
+            fail("the model failed in the haptic loop, zero " + (board != null ? "torque" : "force") + " sent: " + e);
             return false;
         }
+        // The avatar force is summed over the steps since the last tick: render its mean per step. In audio
+        // mode the audio thread runs a buffer's steps in one burst (1024 steps every 23 ms), so most ticks see
+        // no step at all and a few see hundreds: the mean of the last steps is held in between.
         if (mode == Mode.HAPTICS_ONLY) {
             double k = 1.0 / stepsPerTick;
             held3[0] = force[0] * k;
@@ -1080,41 +975,57 @@ public final class HapticLoop implements AutoCloseable {
             held3[1] = force[1] / steps;
             held3[2] = force[2] / steps;
         } else if (steps < 0) {
-            held3[0] = force[0];
+            held3[0] = force[0];             // the link cannot count its steps: render the sum, as it comes
             held3[1] = force[1];
             held3[2] = force[2];
-        }
+        }                                    // steps == 0: no step ran since the last tick, keep the mean
         if (!known) {
-            forceX = 0;
-            forceY = 0;
-            forceZ = 0;
-            port.sent(0);
-            return sendDeviceForce(0, 0, 0);
+            return sendZero();               // no position yet (start-up): nothing to render
         }
+        // the force goes back along the axes the position came from (a negative scale flips them all)
         m.forceToDevice(held3, beta, force3);
         if (spatial.dimensions() == 2) {
             force3[2] = 0;
         }
-        if (Double.isFinite(force3[0]) && Double.isFinite(force3[1]) && Double.isFinite(force3[2])) {
-            port.command(force3);
-        }
         double fx = force3[0];
         double fy = force3[1];
         double fz = force3[2];
-        if (!Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)
+        boolean finite = Double.isFinite(fx) && Double.isFinite(fy) && Double.isFinite(fz);
+        if (poseOk && finite) {
+            port.command(force3);
+            fx = force3[0];
+            fy = force3[1];
+            fz = force3[2];
+        }
+        if (!poseOk || !finite || !Double.isFinite(fx) || !Double.isFinite(fy) || !Double.isFinite(fz)
                 || Math.sqrt(fx * fx + fy * fy + fz * fz) > forceLimit) {
             faults++;
-            forceX = 0;
-            forceY = 0;
-            forceZ = 0;
-            port.sent(0);
-            return sendDeviceForce(0, 0, 0);
+            return sendZero();
         }
         forceX = fx;
         forceY = fy;
         forceZ = fz;
-        port.sent(1);
-        return sendDeviceForce(fx, fy, fz);
+        boolean sent = sendDeviceForce(fx, fy, fz);
+        port.sent(spatial.renderedShare());  // the share of the force that reached the handle (a torque clip's scale)
+        return sent;
+    }
+
+    /** Sends zero force and records it as this tick's (a fault, or no position yet). */
+    private boolean sendZero() {
+        forceX = 0;
+        forceY = 0;
+        forceZ = 0;
+        port.sent(0);
+        return sendDeviceForce(0, 0, 0);
+    }
+
+    private String silenceMessage() {
+        if (board != null) {
+            return "no reply from the Haply board on " + board.device().board().describe() + " for " + linkTimeoutMillis
+                    + " ms: check the USB cable and the board's power; the motors were sent zero torque";
+        }
+        return "no state from " + spatial.describe() + " for " + linkTimeoutMillis + " ms: check that the device is "
+                + "on and connected; zero force was sent where the link still took it";
     }
 
     private boolean sendDeviceForce(double fx, double fy, double fz) {
@@ -1129,31 +1040,19 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     private boolean deviceReady() {
-        return spatial != null ? spatial.isReady() : device.isConfigured();
+        return spatial.isReady();
     }
 
     private void beginDevice() {
-        if (spatial != null) {
-            spatial.begin();
-        } else {
-            device.device_read_request();
-        }
+        spatial.begin();
     }
 
     private void zeroOutput() {
-        if (spatial != null) {
-            spatial.zeroForce();
-        } else {
-            device.board().zeroTorques();
-        }
+        spatial.zeroForce();
     }
 
     private void closeDevice() {
-        if (spatial != null) {
-            spatial.close();
-        } else {
-            device.board().close();
-        }
+        spatial.close();
     }
 
     private void beforeStart(String op) {

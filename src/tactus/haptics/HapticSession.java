@@ -9,6 +9,10 @@ import tactus.haptics.emulator.HaplyConnection;
 import tactus.haptics.emulator.SimulatedInverse3;
 import tactus.haptics.inverse.Inverse3Device;
 import tactus.haptics.inverse.PlanarInverse3;
+import tactus.haptics.pantograph.PantographDevice;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.session.SessionHand;
+import tactus.haptics.session.StatusBand;
 
 /**
  * Everything a haptic sketch needs in a few lines: a Haply board (the first one found) or, when there is none,

@@ -13,6 +13,9 @@ import tactus.haptics.emulator.SimulatedInverse3;
 import tactus.haptics.inverse.Inverse3Choice;
 import tactus.haptics.inverse.Inverse3Device;
 import tactus.haptics.inverse.InverseState;
+import tactus.haptics.pantograph.PantographDevice;
+import tactus.haptics.session.SessionHand;
+import tactus.haptics.session.StatusBand;
 
 /**
  * A 3-D haptic sketch's device and loop in a few lines: it finds what is there, in this order, and says which

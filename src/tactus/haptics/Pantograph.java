@@ -1,5 +1,7 @@
 package tactus.haptics;
 
+import tactus.haptics.pantograph.PantographKinematics;
+
 /**
  * The Haply 2-DoF pantograph as a {@link Mechanisms} (hAPI 2.x compatible), computed in double precision
  * by {@link PantographKinematics}.

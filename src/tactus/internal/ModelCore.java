@@ -5,7 +5,7 @@ import tactus.internal.edit.ModuleBuilder;
 import tactus.internal.edit.ParamEditor;
 import tactus.internal.edit.SubsetBook;
 import tactus.internal.edit.TopologyEditor;
-import tactus.internal.model.HandleFactory;
+import tactus.internal.model.ModuleListener;
 import tactus.internal.model.ModelBase;
 import tactus.internal.model.RealtimeMode;
 import tactus.internal.read.PaperQueries;
@@ -34,10 +34,10 @@ public final class ModelCore extends ModelBase {
     public final PaperQueries paper;
     public final GravityNote gravityNote;
 
-    public ModelCore(paramSystem system, int simRate, int displayRate, HandleFactory handles) {
+    public ModelCore(paramSystem system, int simRate, int displayRate, ModuleListener handles) {
         super(system, simRate, displayRate, handles);
-        this.watch = new DivergenceWatch(engine, dir);
         this.guard = new StabilityGuard(engine, dir, time);
+        this.watch = new DivergenceWatch(engine, dir, guard::suspect);
         this.snapshots = new SnapshotWriter(this);
         this.params = new ParamEditor(this, guard);
         this.topology = new TopologyEditor(this, snapshots, watch);

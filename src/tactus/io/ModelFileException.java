@@ -11,6 +11,8 @@ public class ModelFileException extends IllegalArgumentException {
     private final String element;
 
     /**
+     * Creates an error about one element of a model file, with its line.
+     *
      * @param source the file name (or another description of the input)
      * @param line the 1-based line of the offending element, or -1 when unknown
      * @param element the offending element's name, or null when none
@@ -34,12 +36,12 @@ public class ModelFileException extends IllegalArgumentException {
         return b.append(": ").toString();
     }
 
-    /** @return the 1-based line of the offending element, or -1 when unknown. */
+    /** {@return the 1-based line of the offending element, or -1 when unknown} */
     public int getLine() {
         return line;
     }
 
-    /** @return the name of the offending element, or null when none. */
+    /** {@return the name of the offending element, or null when none} */
     public String getElement() {
         return element;
     }

@@ -48,7 +48,8 @@ public final class ModelXml {
             }
             Files.write(file.toPath(), text.toString().getBytes(StandardCharsets.UTF_8));
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write the model file " + file + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot write the model file " + file.getAbsolutePath() + ": "
+                    + reason(e), e);
         }
     }
 
@@ -59,11 +60,30 @@ public final class ModelXml {
      * @throws UncheckedIOException if the file cannot be read
      */
     public static void load(File file, PhysicalModel model) {
+        String path = file.getAbsolutePath();
         try (Reader in = Files.newBufferedReader(file.toPath(), StandardCharsets.UTF_8)) {
-            read(in, file.getPath(), model);
+            read(in, path, model);
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot read the model file " + file + ": " + e, e);
+            throw new UncheckedIOException("cannot read the model file " + path + ": " + reason(e), e);
         }
+    }
+
+    /**
+     * @return why a file could not be read or written, in words: "there is no such file", "permission denied", or
+     *     the exception's own message
+     */
+    static String reason(IOException e) {
+        if (e instanceof java.nio.file.NoSuchFileException) {
+            return "there is no such file (a relative name is taken from the working directory, "
+                    + new File("").getAbsolutePath() + ", or in a sketch from the sketch folder)";
+        }
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof java.nio.file.FileSystemException && ((java.nio.file.FileSystemException) e).getReason() != null) {
+            return ((java.nio.file.FileSystemException) e).getReason();
+        }
+        return e.getMessage() != null ? e.getMessage() : e.toString();
     }
 
     /** Writes a model as XML to {@code out}, under a root element named {@code rootName}. */

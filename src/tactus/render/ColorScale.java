@@ -48,22 +48,22 @@ public final class ColorScale {
         this.max = max;
     }
 
-    /** @return the value of the first colour. */
+    /** {@return the value of the first colour} */
     public double getMin() {
         return min;
     }
 
-    /** @return the value of the last colour. */
+    /** {@return the value of the last colour} */
     public double getMax() {
         return max;
     }
 
-    /** @return the number of colour stops. */
+    /** {@return the number of colour stops} */
     public int stopCount() {
         return stops.length;
     }
 
-    /** @return colour stop {@code k} (0 at min), packed ARGB. */
+    /** {@return colour stop {@code k} (0 at min), packed ARGB} */
     public int stop(int k) {
         if (k < 0 || k >= stops.length) {
             throw new IndexOutOfBoundsException("ColorScale.stop: " + k + " out of range 0.." + (stops.length - 1));
@@ -71,7 +71,7 @@ public final class ColorScale {
         return stops[k];
     }
 
-    /** @return where a value sits on the scale, 0 at min to 1 at max, clamped; 0 for NaN. */
+    /** {@return where a value sits on the scale, 0 at min to 1 at max, clamped; 0 for NaN} */
     public double fraction(double value) {
         if (!(value > min)) {
             return 0;
@@ -82,12 +82,12 @@ public final class ColorScale {
         return (value - min) / (max - min);
     }
 
-    /** @return the value at a fraction 0..1 of the scale (for legend ticks). */
+    /** {@return the value at a fraction 0..1 of the scale (for legend ticks)} */
     public double valueAt(double fraction) {
         return min + fraction * (max - min);
     }
 
-    /** @return the colour of a value, packed ARGB (the stops' alpha). */
+    /** {@return the colour of a value, packed ARGB (the stops' alpha)} */
     public int colorAt(double value) {
         double f = fraction(value) * (stops.length - 1);
         int k = (int) f;

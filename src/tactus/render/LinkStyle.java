@@ -62,32 +62,32 @@ public final class LinkStyle {
         strainMax = max;
     }
 
-    /** @return the stroke weight, in pixels. */
+    /** {@return the stroke weight, in pixels} */
     public float getWeight() {
         return weight;
     }
 
-    /** @return true when the link is shaded by strain. */
+    /** {@return true when the link is shaded by strain} */
     public boolean hasStrainGradient() {
         return gradient;
     }
 
-    /** @return the strain of full strain colour. */
+    /** {@return the strain of full strain colour} */
     public float getStrainMax() {
         return strainMax;
     }
 
-    /** @return the base colour as packed ARGB. */
+    /** {@return the base colour as packed ARGB} */
     public int argb() {
         return base;
     }
 
-    /** @return the strain colour as packed ARGB. */
+    /** {@return the strain colour as packed ARGB} */
     public int strainArgb() {
         return strainColor;
     }
 
-    /** @return false when nothing of this type can ever be visible (every colour it may take has alpha 0). */
+    /** {@return false when nothing of this type can ever be visible (every colour it may take has alpha 0)} */
     public boolean isVisible() {
         return (base >>> 24) != 0 || (gradient && (strainColor >>> 24) != 0);
     }

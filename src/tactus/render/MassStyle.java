@@ -52,22 +52,22 @@ public final class MassStyle {
         this.scaling = scaling;
     }
 
-    /** @return the base radius, in model length units. */
+    /** {@return the base radius, in model length units} */
     public float getSize() {
         return size;
     }
 
-    /** @return the radius growth per unit of inertia. */
+    /** {@return the radius growth per unit of inertia} */
     public float getScaling() {
         return scaling;
     }
 
-    /** @return the fill colour as a packed ARGB int ({@code 0xAARRGGBB}). */
+    /** {@return the fill colour as a packed ARGB int ({@code 0xAARRGGBB})} */
     public int argb() {
         return Colors.argb(red, green, blue, alpha);
     }
 
-    /** @return the radius for a mass of inertia {@code mass}, before the view's scale; never negative. */
+    /** {@return the radius for a mass of inertia {@code mass}, before the view's scale; never negative} */
     public float radius(double mass) {
         float r = (float) (size + scaling * mass);
         return r > 0 ? r : 0;

@@ -84,12 +84,12 @@ public final class ModelDrawer {
         colorScale = scale;
     }
 
-    /** @return what elements are coloured by. */
+    /** {@return what elements are coloured by} */
     public ColorBy getColorBy() {
         return colorBy;
     }
 
-    /** @return the colour scale used unless colouring by type (for a legend). */
+    /** {@return the colour scale used unless colouring by type (for a legend)} */
     public ColorScale getColorScale() {
         return colorScale;
     }
@@ -107,7 +107,7 @@ public final class ModelDrawer {
         arrowTypes[type.ordinal()] = on;
     }
 
-    /** @return true when masses of this type get a force arrow. */
+    /** {@return true when masses of this type get a force arrow} */
     public boolean hasForceArrow(matModuleType type) {
         return type != null && arrowTypes[type.ordinal()];
     }
@@ -117,7 +117,7 @@ public final class ModelDrawer {
         showArrows = show;
     }
 
-    /** @return true when force arrows are drawn. */
+    /** {@return true when force arrows are drawn} */
     public boolean getShowForceArrows() {
         return showArrows;
     }
@@ -134,7 +134,7 @@ public final class ModelDrawer {
         arrowScale = lengthPerForce;
     }
 
-    /** @return the arrow length per unit of force. */
+    /** {@return the arrow length per unit of force} */
     public float getForceArrowScale() {
         return arrowScale;
     }
@@ -147,7 +147,7 @@ public final class ModelDrawer {
         arrowWeight = weight;
     }
 
-    /** @return the colour of force arrows, packed ARGB. */
+    /** {@return the colour of force arrows, packed ARGB} */
     public int getForceArrowColor() {
         return arrowColor;
     }
@@ -166,12 +166,12 @@ public final class ModelDrawer {
         cache.forget();
     }
 
-    /** @return true after {@link #dispose()}. */
+    /** {@return true after {@link #dispose()}} */
     public boolean isDisposed() {
         return disposed;
     }
 
-    /** @return the styles, to change in place. */
+    /** {@return the styles, to change in place} */
     public RenderStyle style() {
         return style;
     }
@@ -184,7 +184,7 @@ public final class ModelDrawer {
         this.scale = scale;
     }
 
-    /** @return the uniform scale. */
+    /** {@return the uniform scale} */
     public float getScale() {
         return scale;
     }
@@ -200,17 +200,17 @@ public final class ModelDrawer {
         zoomZ = z;
     }
 
-    /** @return the zoom factor on x. */
+    /** {@return the zoom factor on x} */
     public float getZoomX() {
         return zoomX;
     }
 
-    /** @return the zoom factor on y. */
+    /** {@return the zoom factor on y} */
     public float getZoomY() {
         return zoomY;
     }
 
-    /** @return the zoom factor on z. */
+    /** {@return the zoom factor on z} */
     public float getZoomZ() {
         return zoomZ;
     }
@@ -220,7 +220,7 @@ public final class ModelDrawer {
         showMasses = show;
     }
 
-    /** @return true when masses are drawn. */
+    /** {@return true when masses are drawn} */
     public boolean getShowMasses() {
         return showMasses;
     }
@@ -230,7 +230,7 @@ public final class ModelDrawer {
         showLinks = show;
     }
 
-    /** @return true when interactions are drawn. */
+    /** {@return true when interactions are drawn} */
     public boolean getShowLinks() {
         return showLinks;
     }

@@ -116,7 +116,7 @@ public final class OrbitCamera {
         }
     }
 
-    /** @return true while registered with a sketch. */
+    /** {@return true while registered with a sketch} */
     public boolean isRegistered() {
         return registered;
     }
@@ -214,17 +214,17 @@ public final class OrbitCamera {
         distance = startDistance;
     }
 
-    /** @return the yaw, radians. */
+    /** {@return the yaw, radians} */
     public double getYaw() {
         return yaw;
     }
 
-    /** @return the pitch, radians. */
+    /** {@return the pitch, radians} */
     public double getPitch() {
         return pitch;
     }
 
-    /** @return the distance from eye to target, in drawing units. */
+    /** {@return the distance from eye to target, in drawing units} */
     public double getDistance() {
         return distance();
     }
@@ -247,7 +247,7 @@ public final class OrbitCamera {
         return out;
     }
 
-    /** @return the eye distance in pixels of Processing's default camera, (height / 2) / tan(30°). */
+    /** {@return the eye distance in pixels of Processing's default camera, (height / 2) / tan(30°)} */
     public double eyePixels() {
         return viewHeight / 2.0 / Math.tan(Math.PI / 6);
     }

@@ -25,7 +25,7 @@ public final class RenderStyle {
         }
     }
 
-    /** @return the (mutable) style of a mass type. */
+    /** {@return the (mutable) style of a mass type} */
     public MassStyle mass(matModuleType type) {
         if (type == null) {
             throw new IllegalArgumentException("RenderStyle.mass: the mass type must not be null");
@@ -33,7 +33,7 @@ public final class RenderStyle {
         return masses[type.ordinal()];
     }
 
-    /** @return the (mutable) style of an interaction type. */
+    /** {@return the (mutable) style of an interaction type} */
     public LinkStyle link(linkModuleType type) {
         if (type == null) {
             throw new IllegalArgumentException("RenderStyle.link: the link type must not be null");
@@ -41,7 +41,7 @@ public final class RenderStyle {
         return links[type.ordinal()];
     }
 
-    /** @return the default style of a mass type, as a new object. */
+    /** {@return the default style of a mass type, as a new object} */
     public static MassStyle defaultMass(matModuleType type) {
         switch (type) {
             case Mass3D:
@@ -62,7 +62,7 @@ public final class RenderStyle {
         }
     }
 
-    /** @return the default style of an interaction type, as a new object. */
+    /** {@return the default style of an interaction type, as a new object} */
     public static LinkStyle defaultLink(linkModuleType type) {
         switch (type) {
             case Damper3D:

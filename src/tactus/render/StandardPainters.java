@@ -14,17 +14,17 @@ public final class StandardPainters {
     private StandardPainters() {
     }
 
-    /** @return a new standard mass painter. */
+    /** {@return a new standard mass painter} */
     public static MassPainter masses() {
         return new Masses();
     }
 
-    /** @return a new standard arrow painter: a line with a two-stroke head a quarter of its length. */
+    /** {@return a new standard arrow painter: a line with a two-stroke head a quarter of its length} */
     public static ArrowPainter arrows() {
         return new Arrows();
     }
 
-    /** @return a new standard link painter. */
+    /** {@return a new standard link painter} */
     public static LinkPainter links() {
         return new Links();
     }

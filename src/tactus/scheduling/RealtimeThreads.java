@@ -141,7 +141,7 @@ public final class RealtimeThreads {
             this.deadline = deadline;
         }
 
-        /** @return true when the calling thread got a real-time policy */
+        /** {@return true when the calling thread got a real-time policy} */
         public boolean granted() {
             return why == null;
         }
@@ -215,7 +215,7 @@ public final class RealtimeThreads {
         return script.append("chrt -f -p ").append(priority).append(' ').append(threadId).toString();   // its status
     }
 
-    /** @return the calling thread's Linux thread id (from {@code /proc/thread-self}), or null where there is none. */
+    /** {@return the calling thread's Linux thread id (from {@code /proc/thread-self}), or null where there is none} */
     public static String currentThreadId() {
         try {
             return Files.readSymbolicLink(Paths.get("/proc/thread-self")).getFileName().toString();
@@ -225,6 +225,8 @@ public final class RealtimeThreads {
     }
 
     /**
+     * Reads the scheduling policy and real-time priority that Linux reports for a thread of this process.
+     *
      * @param threadId the Linux id of a thread of this process
      * @return {policy, real-time priority} as Linux reports them (policy 0 normal, 1 SCHED_FIFO, 2 SCHED_RR,
      *     6 SCHED_DEADLINE; priority 0 for a normal or deadline thread), or null when the thread is gone or this is not Linux
@@ -240,7 +242,7 @@ public final class RealtimeThreads {
         }
     }
 
-    /** @return the ids of this process's threads whose name (as Linux keeps it, 15 characters) matches. */
+    /** {@return the ids of this process's threads whose name (as Linux keeps it, 15 characters) matches} */
     public static List<String> threadsNamed(Pattern name) {
         List<String> tids = new ArrayList<>();
         File[] tasks = new File("/proc/self/task").listFiles();

@@ -10,6 +10,7 @@ import tactus.haptics.AvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.HapticSession;
+import tactus.haptics.loop.DecoupledAvatar;
 
 /**
  * The glue of the audio-haptic examples (PluckedString, MultipleStrings, HapticAudioTemplate): a HapticSession's
@@ -32,7 +33,7 @@ class AvatarExchangeHapticLoopTest {
             try (HapticSession s = HapticSession.openEmulated(null, HaplyPreset.HAPLY_2018)) {
                 // ExchangeAvatarLink never waits, so the loop calls it directly; the helper-thread path is
                 // exercised by wrapping it by hand
-                AvatarLink link = decoupled ? new tactus.haptics.DecoupledAvatar(over(exchange)) : over(exchange);
+                AvatarLink link = decoupled ? new tactus.haptics.loop.DecoupledAvatar(over(exchange)) : over(exchange);
                 HapticLoop loop = s.attach(link);
                 loop.setMode(HapticLoop.Mode.AUDIO);
                 assertEquals(decoupled, loop.isDecoupled(), "helper thread in use");

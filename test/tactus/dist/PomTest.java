@@ -19,9 +19,11 @@ import org.w3c.dom.Node;
 import org.w3c.dom.NodeList;
 
 /**
- * The POM that {@code gradle publishToMavenLocal} publishes (the Gradle test task generates it first): coordinates
- * tactus:tactus:&lt;prettyVersion&gt;, jSerialComm and jackson-core at runtime scope, Processing core and Minim provided and
- * optional (an application that draws or plays sound adds them itself), and nothing of the tests or tools.
+ * The POM that {@code gradle publishToMavenLocal} publishes and {@code gradle release} ships (the Gradle test task
+ * generates it first): coordinates io.github.tactus:tactus:&lt;version&gt;, the project data Maven Central requires
+ * (name, description, url, licenses, developers, scm), jSerialComm and jackson-core at runtime scope, Processing core
+ * and Minim provided and optional (an application that draws or plays sound adds them itself), and nothing of the
+ * tests or tools.
  */
 class PomTest {
     private static String text(Element parent, String tag) {
@@ -49,10 +51,27 @@ class PomTest {
         DocumentBuilderFactory f = DocumentBuilderFactory.newInstance();
         Document doc = f.newDocumentBuilder().parse(pom);
         Element project = doc.getDocumentElement();
-        assertEquals("tactus", child(project, "groupId").getTextContent().trim());
+        assertEquals("io.github.tactus", child(project, "groupId").getTextContent().trim(),
+                "a reverse-DNS group that Maven Central accepts");
         assertEquals("tactus", child(project, "artifactId").getTextContent().trim());
         assertEquals(System.getProperty("tactus.dist.prettyVersion"), child(project, "version").getTextContent().trim());
-        assertNotNull(child(project, "licenses"), "a license");
+        assertEquals("Tactus", child(project, "name").getTextContent().trim());
+        String description = child(project, "description").getTextContent().trim();
+        assertTrue(description.length() > 20, "a description: " + description);
+        String url = child(project, "url").getTextContent().trim();
+        assertTrue(url.matches("https://\\S+"), "url: " + url);
+        Element license = child(child(project, "licenses"), "license");
+        assertNotNull(license, "a license");
+        assertEquals("LGPL-2.1-or-later", text(license, "name"), "the SPDX identifier of the LICENSE file's licence");
+        assertTrue(text(license, "url").contains("lgpl-2.1"), text(license, "url"));
+        Element developer = child(child(project, "developers"), "developer");
+        assertNotNull(developer, "a developer");
+        assertFalse(text(developer, "name").isEmpty());
+        Element scm = child(project, "scm");
+        assertNotNull(scm, "an scm section");
+        assertEquals("scm:git:" + url + ".git", text(scm, "connection"));
+        assertEquals(url, text(scm, "url"));
+        assertEquals("v" + System.getProperty("tactus.dist.prettyVersion"), text(scm, "tag"), "the release tag");
 
         Map<String, Element> deps = new HashMap<>();
         NodeList list = child(project, "dependencies").getElementsByTagName("dependency");

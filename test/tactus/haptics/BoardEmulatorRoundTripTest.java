@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** The device layer against the in-process emulator: the hAPI flow, the firmware's arithmetic, and the fixes. */
 class BoardEmulatorRoundTripTest {

@@ -8,6 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.transport.Transport;
+import tactus.haptics.transport.WireFormat;
 
 /** Malformed, partial and unexpected frames, and a board unplugged mid-run: the reader survives and counts. */
 class FrameFaultTest {

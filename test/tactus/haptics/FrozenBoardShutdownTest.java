@@ -18,6 +18,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.transport.SerialTransport;
 
 /**
  * A hAPI-style sketch JVM whose board stops reading (the emulator's end of the pty closed, socat alive):

@@ -13,6 +13,9 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.safety.MotorGuard;
+import tactus.haptics.transport.SerialTransport;
+import tactus.haptics.transport.Transport;
 
 /**
  * A board that stops reading while its port stays open (socat alive, the emulator's end closed): writes fill

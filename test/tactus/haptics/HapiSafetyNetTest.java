@@ -19,6 +19,8 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.transport.Transport;
+import tactus.haptics.transport.WireFormat;
 
 /**
  * The hAPI-compatible layer's safety net for a sketch that runs its own ScheduledExecutorService (the

@@ -17,6 +17,8 @@ import tactus.Vect3D;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.transport.SerialTransport;
 
 /**
  * A sketch written the hAPI 2.x way (its own Mechanisms subclass, PVector arrays, a ScheduledExecutorService

@@ -11,9 +11,9 @@ import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 
 /** The haptic thread allocates nothing per tick (with an avatar that allocates nothing itself). */
-class HapticLoopAllocationTest {
+public class HapticLoopAllocationTest {
 
-    static Thread loopThread() {
+    public static Thread loopThread() {
         for (Thread t : Thread.getAllStackTraces().keySet()) {
             if (t.getName().equals("tactus-haptic-loop")) {
                 return t;

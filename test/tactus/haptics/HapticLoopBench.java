@@ -11,6 +11,7 @@ import tactus.Vect3D;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.transport.SerialTransport;
 
 /**
  * Measures the haptic loop's telemetry (not a test; run on demand):

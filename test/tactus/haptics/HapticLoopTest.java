@@ -13,6 +13,9 @@ import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.transport.Transport;
+import tactus.haptics.transport.WireFormat;
 
 /** The haptic loop through the emulator: inertia of the paper's heavy mass chain, safety, telemetry. */
 class HapticLoopTest {

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** The session a sketch uses: board or emulator, device set up, a loop whose mapping fits the window. */
 class HapticSessionTest {

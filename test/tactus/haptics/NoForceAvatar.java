@@ -1,7 +1,7 @@
 package tactus.haptics;
 
 /** An avatar link for tests that need a loop but no model: it ignores the target and puts no force on the hand. */
-class NoForceAvatar implements AvatarLink {
+public class NoForceAvatar implements AvatarLink {
     @Override
     public void setTarget(double x, double y, double z) {
         // nothing

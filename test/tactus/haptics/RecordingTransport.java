@@ -3,6 +3,7 @@ package tactus.haptics;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import tactus.haptics.transport.Transport;
 
 /** Wraps a transport and records every write as one entry, so tests can see how commands went out. */
 final class RecordingTransport implements Transport {

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.PtyPair;
+import tactus.haptics.transport.SerialTransport;
 
 /** A JVM that ends without closing its board still zeroes the motors (the shutdown hook), over a real pty. */
 class ShutdownHookTest {

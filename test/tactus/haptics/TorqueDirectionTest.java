@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import tactus.haptics.emulator.BoardEmulator;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** Torques above the firmware's 0.123 N m clip never turn the force: refused in the loop, scaled together in Device. */
 class TorqueDirectionTest {

@@ -470,4 +470,27 @@ class ModelXmlTest {
         assertTrue(e.getMessage().contains("absent.xml"), e.getMessage());
         assertTrue(Files.notExists(f.toPath()));
     }
+
+    /** File errors show the full path tried, and why, also for a relative name. */
+    @Test
+    void fileErrorsShowTheFullPathTried(@TempDir Path dir) throws Exception {
+        File relative = new File("no-such-folder-" + System.nanoTime(), "absent.xml");
+        java.io.UncheckedIOException e = assertThrows(java.io.UncheckedIOException.class,
+                () -> ModelXml.load(relative, new PhysicalModel(1000, 50)));
+        assertEquals("cannot read the model file " + relative.getAbsolutePath() + ": there is no such file (a relative"
+                + " name is taken from the working directory, " + new File("").getAbsolutePath() + ", or in a sketch"
+                + " from the sketch folder)", e.getMessage());
+        File bad = dir.resolve("bad.xml").toFile();
+        Files.write(bad.toPath(), "<model><mass></model>".getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        ModelFileException malformed = assertThrows(ModelFileException.class,
+                () -> ModelXml.load(bad, new PhysicalModel(1000, 50)));
+        assertTrue(malformed.getMessage().startsWith(bad.getAbsolutePath()), malformed.getMessage());
+        File blocker = dir.resolve("a-file").toFile();
+        Files.write(blocker.toPath(), new byte[0]);
+        File unwritable = new File(blocker, "model.xml");
+        java.io.UncheckedIOException w = assertThrows(java.io.UncheckedIOException.class,
+                () -> ModelXml.save(new PhysicalModel(1000, 50), unwritable));
+        assertTrue(w.getMessage().startsWith("cannot write the model file " + unwritable.getAbsolutePath() + ": "),
+                w.getMessage());
+    }
 }

@@ -294,8 +294,11 @@ class HardCasesBoundsTest {
         PhysicalModel pm = chain(n, 1.01 * limit, StabilityPolicy.WARN, 12);
         String err = StabilityFixtures.captureStdErr(pm::init).trim();
         // lowering one spring of 51 cannot bring lambda back under 4, and the line says so
-        assertTrue(err.matches("Tactus: unstable model: SpringDamper1D \"s\\d+\": K = 1\\.011 is too high, and lowering it "
-                + "alone cannot make the model stable \\(lambda max\\(M\\^-1 \\(K \\+ 2Z\\)\\) = 4\\.040 must stay below 4\\)"), err);
+        assertTrue(err.matches("Tactus: unstable model: SpringDamper1D \"s\\d+\": K = 1\\.011 \\(model units\\) is too "
+                + "high, and lowering it alone cannot make the model stable\\. Fix: lower the stiffness of the links around "
+                + "it, raise the masses it joins, or take more steps per frame with K divided by the factor's square "
+                + "\\(the same motion per frame, further from the limit\\) \\(stability index 4\\.040, which must stay "
+                + "below 4; docs/stability\\.md\\)"), err);
         assertEquals(4.04, pm.getStabilityReport().lambda(), 4.04e-6);
         pm.setStabilityPolicy(StabilityPolicy.OFF);
         DivergenceException caught = null;

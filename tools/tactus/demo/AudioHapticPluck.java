@@ -20,6 +20,8 @@ import tactus.haptics.Board;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
+import tactus.haptics.HapticSession;
+import tactus.haptics.TimingVerdict;
 import tactus.haptics.HapticTelemetry;
 import tactus.haptics.emulator.BoardEmulator;
 import tactus.haptics.emulator.Hand;
@@ -60,6 +62,9 @@ public final class AudioHapticPluck {
     /** The longest the run may take beyond the script, seconds, before it is called stuck. */
     static final double TIMEOUT_MARGIN = 20;
 
+    /** The system property that gives the haptic loop a sketch's real-time scheduling ("true"). */
+    static final String REALTIME_PROPERTY = "tactus.demo.realtime";
+
     private AudioHapticPluck() {
     }
 
@@ -87,6 +92,10 @@ public final class AudioHapticPluck {
         public HapticTelemetry telemetry;
         /** Why the haptic loop stopped by itself, or null. */
         public String loopFailure;
+        /** How the haptic loop's thread was scheduled ({@link HapticLoop#scheduling()}). */
+        public String scheduling;
+        /** Whether the real-time run kept time: the loop's ticks and the audio against its duration. */
+        public TimingVerdict timing;
 
         Result(Path dir) {
             wav = dir.resolve("pluck.wav");
@@ -148,6 +157,13 @@ public final class AudioHapticPluck {
         HapticLoop loop = new HapticLoop(device, HaplyPreset.HAPLY_2018.newKinematics(), avatar);
         loop.setRate(HAPTIC_RATE);
         loop.setMode(HapticLoop.Mode.AUDIO);
+        // -Dtactus.demo.realtime=true asks for the scheduling a sketch's HapticSession gets (SCHED_DEADLINE where
+        // Linux allows it, else SCHED_FIFO, else normal priority). It is not the default: on a loaded 2-core machine
+        // the in-process emulator's threads, at normal priority, then starve beside the loop and the scripted hand
+        // misses the string. The summary says which policy the loop got either way.
+        if (Boolean.getBoolean(REALTIME_PROPERTY)) {
+            loop.setRealtimePriority(HapticSession.REALTIME_PRIORITY);
+        }
         mapping.configure(loop);
         avatar.recordFrom(loop);
 
@@ -190,6 +206,7 @@ public final class AudioHapticPluck {
         r.wallSeconds = (System.nanoTime() - wallStart) * 1e-9;
         r.loopFailure = loop.failure();
         r.telemetry = loop.telemetry();
+        r.scheduling = loop.scheduling();
         if (!capture.isFull()) {
             throw new Demo.DemoFailure("the audio-haptic run stopped early: " + capture.count() + " of " + frames
                     + " samples" + (r.loopFailure != null ? "; the haptic loop stopped: " + r.loopFailure : ""));
@@ -199,6 +216,9 @@ public final class AudioHapticPluck {
         }
         float[] samples = capture.samples();
         r.audioSeconds = frames / (double) rate;
+        // the waveform plot is drawn on the audio's clock and the path plot on the loop's: an audio stall is also
+        // how far the two plots disagree
+        r.timing = TimingVerdict.of(r.telemetry, r.scheduling).withAudio(r.audioSeconds, r.wallSeconds);
 
         // ---- the WAV
         try (WavWriter w = new WavWriter(r.wav.toFile(), rate, 1, frames, WavWriter.Encoding.PCM_16)) {
@@ -262,6 +282,8 @@ public final class AudioHapticPluck {
         out.printf(Locale.ROOT, "  ran %.2f s of wall time for %.2f s of audio (%d samples, peak %.3f)%n",
                 r.wallSeconds, r.audioSeconds, frames, r.peak);
         out.println("  " + r.telemetry);
+        out.println("  scheduling of the haptic loop: " + r.scheduling);
+        out.println("  " + r.timing.text());
         out.printf(Locale.ROOT, "  %d ticks recorded, %d with the plectrum touching the string; largest force on "
                 + "the handle %.2f N%n", r.ticks, r.contactTicks, r.maxForce);
         out.printf(Locale.ROOT, "  pitch, by FFT of pluck.wav over the free ringing after the last contact "
@@ -315,6 +337,7 @@ public final class AudioHapticPluck {
         try (BufferedWriter w = Files.newBufferedWriter(r.telemetryTxt, StandardCharsets.UTF_8)) {
             w.write("Tactus demo: haptic telemetry of the audio-haptic plucked string\n");
             w.write(tel.toString() + "\n");
+            w.write("scheduling " + r.scheduling + "\n");
             w.write(String.format(Locale.ROOT, "nominal_hz %.1f%nachieved_hz %.2f%nticks %d%nseconds %.4f%n"
                             + "missed_steps %d%njitter_p50_us %.1f%njitter_p99_us %.1f%njitter_max_us %.1f%n"
                             + "compute_p50_us %.1f%ncompute_p99_us %.1f%ncompute_max_us %.1f%nstale_ticks %d%n"

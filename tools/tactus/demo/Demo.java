@@ -270,8 +270,20 @@ public final class Demo {
         out.printf(Locale.ROOT, "Audio-haptic pluck: %.2f s of audio in %.2f s of wall time; fundamental of "
                 + "pluck.wav %.3f Hz, theory %.3f Hz (%+.2f cents)%n", p.audioSeconds, p.wallSeconds,
                 p.measuredHz[0], p.theoryHz[0], p.errorCents());
-        out.println("Demo finished: all files written, the strings' pitches match theory.");
+        out.println(finalLine(p.timing));
         return r;
+    }
+
+    /**
+     * The demo's last line: what it checked (files, pitches) and whether the real-time run kept time; a late run is
+     * said to be late, with the reasons and what to do, not passed over.
+     */
+    static String finalLine(tactus.haptics.TimingVerdict timing) {
+        String checked = "all files written, the strings' pitches match theory";
+        if (timing.onTime()) {
+            return "Demo finished: " + checked + ", and " + timing.text() + ".";
+        }
+        return "Demo finished: " + checked + ", but " + timing.text();
     }
 
     // ================================================================ Figure 4

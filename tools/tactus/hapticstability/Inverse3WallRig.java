@@ -9,7 +9,7 @@ import tactus.audio.ExchangeAvatarLink;
 import tactus.audio.PhyUGen;
 import tactus.haptics.AvatarLink;
 import tactus.haptics.HapticLoop;
-import tactus.haptics.PassivityObserver;
+import tactus.haptics.passivity.PassivityObserver;
 import tactus.haptics.PhysicalModelAvatar;
 import tactus.haptics.WorkspaceMapping;
 import tactus.haptics.emulator.PlantParameters;

@@ -7,7 +7,7 @@ import java.util.concurrent.locks.LockSupport;
 import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.haptics.HapticLoop;
-import tactus.haptics.PassivityObserver;
+import tactus.haptics.passivity.PassivityObserver;
 import tactus.haptics.PhysicalModelAvatar;
 import tactus.haptics.WorkspaceMapping;
 import tactus.haptics.emulator.Hand3D;

@@ -28,9 +28,9 @@ public final class StabilitySweep {
     public static final List<WallRig.Variant> VARIANTS = new ArrayList<>(List.of(WallRig.UNCONTROLLED));
 
     static {
-        // passivity control, virtual coupling, both (tactus.haptics.PassivityVariants): the coupling from the plant's
+        // passivity control, virtual coupling, both (tactus.hapticstability.PassivityVariants): the coupling from the plant's
         // damping along the wall's axis, the observer told of the exchange's one tick of delay
-        VARIANTS.addAll(tactus.haptics.PassivityVariants.all(
+        VARIANTS.addAll(tactus.hapticstability.PassivityVariants.all(
                 EffectiveAxis.atEquilibrium(new WallRig.Config()).damping, 1));
     }
 

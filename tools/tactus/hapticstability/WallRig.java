@@ -7,7 +7,6 @@ import tactus.haptics.AvatarLink;
 import tactus.haptics.Board;
 import tactus.haptics.BoardModel;
 import tactus.haptics.Device;
-import tactus.haptics.ForwardingAvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.PhysicalModelAvatar;

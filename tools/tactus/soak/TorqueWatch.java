@@ -1,7 +1,7 @@
 package tactus.soak;
 
 import tactus.haptics.AvatarLink;
-import tactus.haptics.ForwardingAvatarLink;
+import tactus.hapticstability.ForwardingAvatarLink;
 import tactus.haptics.HapticLoop;
 
 /**

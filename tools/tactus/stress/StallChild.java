@@ -4,7 +4,7 @@ import java.util.Locale;
 import java.util.concurrent.locks.LockSupport;
 import tactus.PhysicalModel;
 import tactus.haptics.AvatarLink;
-import tactus.haptics.ForwardingAvatarLink;
+import tactus.hapticstability.ForwardingAvatarLink;
 import tactus.haptics.HaplyPreset;
 import tactus.haptics.HapticLoop;
 import tactus.haptics.HapticSession;

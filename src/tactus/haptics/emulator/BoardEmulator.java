@@ -4,8 +4,8 @@ import java.io.IOException;
 import java.util.concurrent.locks.LockSupport;
 import tactus.haptics.BoardModel;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.PantographKinematics;
-import tactus.haptics.Transport;
+import tactus.haptics.pantograph.PantographKinematics;
+import tactus.haptics.transport.Transport;
 
 /**
  * An emulated Haply board with a pantograph on it: the firmware ({@code Firmware}) drives a simulated

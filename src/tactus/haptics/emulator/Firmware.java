@@ -1,7 +1,7 @@
 package tactus.haptics.emulator;
 
 import tactus.haptics.BoardModel;
-import tactus.haptics.WireFormat;
+import tactus.haptics.transport.WireFormat;
 
 /**
  * The firmware side of the Haply V2 protocol, as the M0 V0.3 / M3 V1.5 / Dev-Kit V0.4 firmware behaves:

@@ -1,6 +1,6 @@
 package tactus.haptics.emulator;
 
-import tactus.haptics.PantographKinematics;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** {@link PlantKinematics} of a five-bar pantograph (the 2DIY), over {@link PantographKinematics}. */
 public final class PantographPlantKinematics implements PlantKinematics {

@@ -1,7 +1,7 @@
 package tactus.haptics.emulator;
 
 import java.io.IOException;
-import tactus.haptics.Transport;
+import tactus.haptics.transport.Transport;
 
 /**
  * Two in-process {@link Transport} ends joined back to back, like a null-modem cable: what one writes the

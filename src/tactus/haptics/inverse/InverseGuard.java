@@ -8,7 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.Locale;
 import java.util.concurrent.locks.LockSupport;
 
-import tactus.haptics.GuardMemory;
+import tactus.haptics.safety.GuardMemory;
 import tactus.haptics.HaplyLinkException;
 
 /**

@@ -7,8 +7,8 @@ import java.util.concurrent.locks.LockSupport;
 
 import com.fasterxml.jackson.core.JsonFactory;
 
-import tactus.haptics.GuardMemory;
-import tactus.haptics.GuardProcess;
+import tactus.haptics.safety.GuardMemory;
+import tactus.haptics.safety.GuardProcess;
 
 /**
  * The sketch's side of the {@link InverseGuard}: starts the guard process for a connection to the Inverse

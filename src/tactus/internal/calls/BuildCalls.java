@@ -1,26 +1,5 @@
 package tactus.internal.calls;
 
-import tactus.Attractor3D;
-import tactus.Bubble3D;
-import tactus.Contact3D;
-import tactus.Damper3D;
-import tactus.Ground1D;
-import tactus.Ground3D;
-import tactus.HapticInput3D;
-import tactus.Interaction;
-import tactus.Mass;
-import tactus.Mass1D;
-import tactus.Mass2DPlane;
-import tactus.Mass3D;
-import tactus.Mass3DSimple;
-import tactus.Osc1D;
-import tactus.Osc3D;
-import tactus.PlaneContact3D;
-import tactus.PosInput3D;
-import tactus.Rope3D;
-import tactus.Spring3D;
-import tactus.SpringDamper1D;
-import tactus.SpringDamper3D;
 import tactus.Vect3D;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
@@ -41,48 +20,48 @@ public final class BuildCalls extends Calls {
         super(core, gate);
     }
 
-    public Mass3D addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass3D) addMass("addMass3D", MassKind.MASS3D, name, mass, initPos, initVel, 0, 0, 1);
+    public int addMass3D(String name, double mass, Vect3D initPos, Vect3D initVel) {
+        return addMass("addMass3D", MassKind.MASS3D, name, mass, initPos, initVel, 0, 0, 1);
     }
 
-    public Mass3DSimple addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass3DSimple) addMass("addMass3DSimple", MassKind.MASS3D_SIMPLE, name, mass, initPos, initVel, 0, 0,
+    public int addMass3DSimple(String name, double mass, Vect3D initPos, Vect3D initVel) {
+        return addMass("addMass3DSimple", MassKind.MASS3D_SIMPLE, name, mass, initPos, initVel, 0, 0,
                 1);
     }
 
-    public Mass2DPlane addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass2DPlane) addMass("addMass2DPlane", MassKind.MASS2D_PLANE, name, mass, initPos, initVel, 0, 0, 1);
+    public int addMass2DPlane(String name, double mass, Vect3D initPos, Vect3D initVel) {
+        return addMass("addMass2DPlane", MassKind.MASS2D_PLANE, name, mass, initPos, initVel, 0, 0, 1);
     }
 
-    public Mass1D addMass1D(String name, double mass, Vect3D initPos, Vect3D initVel) {
-        return (Mass1D) addMass("addMass1D", MassKind.MASS1D, name, mass, initPos, initVel, 0, 0, 1);
+    public int addMass1D(String name, double mass, Vect3D initPos, Vect3D initVel) {
+        return addMass("addMass1D", MassKind.MASS1D, name, mass, initPos, initVel, 0, 0, 1);
     }
 
-    public Ground3D addGround3D(String name, Vect3D initPos) {
-        return (Ground3D) addMass("addGround3D", MassKind.GROUND3D, name, 1, initPos, new Vect3D(), 0, 0, 1);
+    public int addGround3D(String name, Vect3D initPos) {
+        return addMass("addGround3D", MassKind.GROUND3D, name, 1, initPos, new Vect3D(), 0, 0, 1);
     }
 
-    public Ground1D addGround1D(String name, Vect3D initPos) {
-        return (Ground1D) addMass("addGround1D", MassKind.GROUND1D, name, 1, initPos, new Vect3D(), 0, 0, 1);
+    public int addGround1D(String name, Vect3D initPos) {
+        return addMass("addGround1D", MassKind.GROUND1D, name, 1, initPos, new Vect3D(), 0, 0, 1);
     }
 
-    public Osc3D addOsc3D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return (Osc3D) addMass("addOsc3D", MassKind.OSC3D, name, mass, initPos, initVel, K, Z, 1);
+    public int addOsc3D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
+        return addMass("addOsc3D", MassKind.OSC3D, name, mass, initPos, initVel, K, Z, 1);
     }
 
-    public Osc1D addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
-        return (Osc1D) addMass("addOsc1D", MassKind.OSC1D, name, mass, initPos, initVel, K, Z, 1);
+    public int addOsc1D(String name, double mass, double K, double Z, Vect3D initPos, Vect3D initVel) {
+        return addMass("addOsc1D", MassKind.OSC1D, name, mass, initPos, initVel, K, Z, 1);
     }
 
-    public Osc3D addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return (Osc3D) addTunedOsc("addOsc3DTuned", MassKind.OSC3D, name, mass, freqHz, t60, initPos, initVel);
+    public int addOsc3DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
+        return addTunedOsc("addOsc3DTuned", MassKind.OSC3D, name, mass, freqHz, t60, initPos, initVel);
     }
 
-    public Osc1D addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
-        return (Osc1D) addTunedOsc("addOsc1DTuned", MassKind.OSC1D, name, mass, freqHz, t60, initPos, initVel);
+    public int addOsc1DTuned(String name, double mass, double freqHz, double t60, Vect3D initPos, Vect3D initVel) {
+        return addTunedOsc("addOsc1DTuned", MassKind.OSC1D, name, mass, freqHz, t60, initPos, initVel);
     }
 
-    private Mass addTunedOsc(String op, MassKind kind, String name, double mass, double freqHz, double t60, Vect3D pos, Vect3D vel) {
+    private int addTunedOsc(String op, MassKind kind, String name, double mass, double freqHz, double t60, Vect3D pos, Vect3D vel) {
         return structural(() -> {
             double[] kz = OscTuning.coefficients(core, core.params, op, name, mass, freqHz, t60);
             return addMass(op, kind, name, mass, pos, vel, kz[0], kz[1], 1);
@@ -116,110 +95,83 @@ public final class BuildCalls extends Calls {
         }
     }
 
-    public HapticInput3D addHapticInput3D(String name, Vect3D initPos, int smoothing) {
-        return (HapticInput3D) addMass("addHapticInput3D", MassKind.HAPTIC_INPUT3D, name, 1, initPos,
+    public int addHapticInput3D(String name, Vect3D initPos, int smoothing) {
+        return addMass("addHapticInput3D", MassKind.HAPTIC_INPUT3D, name, 1, initPos,
                 new Vect3D(), 0, 0, smoothing);
     }
 
-    public PosInput3D addPosInput3D(String name, Vect3D initPos, int smoothing) {
-        return (PosInput3D) addMass("addPosInput3D", MassKind.POS_INPUT3D, name, 1, initPos,
+    public int addPosInput3D(String name, Vect3D initPos, int smoothing) {
+        return addMass("addPosInput3D", MassKind.POS_INPUT3D, name, 1, initPos,
                 new Vect3D(), 0, 0, smoothing);
     }
 
-    private Mass addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel, double K, double Z, int smoothing) {
+    private int addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel, double K, double Z, int smoothing) {
         ModuleBuilder.checkMassArgs(op, kind, name, m, pos, vel, K, Z, smoothing);
         return structural(() -> {
-            Mass added = (Mass) core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
+            int added = core.builder.addMass(op, kind, name, m, pos, vel, K, Z, smoothing);
             core.gravityNote.afterMassAdded(kind, name);
             return added;
         });
     }
 
-    public Spring3D addSpring3D(String name, double dist, double K, String m1, String m2) {
-        return (Spring3D) addLink("addSpring3D", LinkKind.SPRING3D, name, m1, m2, K, 0, dist, 0, 0);
+    public int addSpring3D(String name, double dist, double K, String m1, String m2) {
+        return addLink("addSpring3D", LinkKind.SPRING3D, name, m1, m2, K, 0, dist, 0, 0);
     }
 
-    public Spring3D addSpring3D(String name, double dist, double K, Mass m1, Mass m2) {
-        return addSpring3D(name, dist, K, distinct("addSpring3D", name, m1, m2), nameOf(m2));
+
+    public int addDamper3D(String name, double Z, String m1, String m2) {
+        return addLink("addDamper3D", LinkKind.DAMPER3D, name, m1, m2, 0, Z, 0, 0, 0);
     }
 
-    public Damper3D addDamper3D(String name, double Z, String m1, String m2) {
-        return (Damper3D) addLink("addDamper3D", LinkKind.DAMPER3D, name, m1, m2, 0, Z, 0, 0, 0);
+
+    public int addSpringDamper3D(String name, double dist, double K, double Z, String m1, String m2) {
+        return addLink("addSpringDamper3D", LinkKind.SPRING_DAMPER3D, name, m1, m2, K, Z, dist, 0, 0);
     }
 
-    public Damper3D addDamper3D(String name, double Z, Mass m1, Mass m2) {
-        return addDamper3D(name, Z, distinct("addDamper3D", name, m1, m2), nameOf(m2));
+
+    public int addSpringDamper1D(String name, double dist, double K, double Z, String m1, String m2) {
+        return addLink("addSpringDamper1D", LinkKind.SPRING_DAMPER1D, name, m1, m2, K, Z, dist, 0, 0);
     }
 
-    public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (SpringDamper3D) addLink("addSpringDamper3D", LinkKind.SPRING_DAMPER3D, name, m1, m2, K, Z, dist, 0, 0);
+
+    public int addRope3D(String name, double dist, double K, double Z, String m1, String m2) {
+        return addLink("addRope3D", LinkKind.ROPE3D, name, m1, m2, K, Z, dist, 0, 0);
     }
 
-    public SpringDamper3D addSpringDamper3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper3D(name, dist, K, Z, distinct("addSpringDamper3D", name, m1, m2), nameOf(m2));
+
+    public int addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
+        return addLink("addContact3D", LinkKind.CONTACT3D, name, m1, m2, K, Z, dist, 0, 0);
     }
 
-    public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (SpringDamper1D) addLink("addSpringDamper1D", LinkKind.SPRING_DAMPER1D, name, m1, m2, K, Z, dist, 0, 0);
+
+    public int addBubble3D(String name, double dist, double K, double Z, String m1, String m2) {
+        return addLink("addBubble3D", LinkKind.BUBBLE3D, name, m1, m2, K, Z, dist, 0, 0);
     }
 
-    public SpringDamper1D addSpringDamper1D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addSpringDamper1D(name, dist, K, Z, distinct("addSpringDamper1D", name, m1, m2), nameOf(m2));
-    }
 
-    public Rope3D addRope3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Rope3D) addLink("addRope3D", LinkKind.ROPE3D, name, m1, m2, K, Z, dist, 0, 0);
-    }
-
-    public Rope3D addRope3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addRope3D(name, dist, K, Z, distinct("addRope3D", name, m1, m2), nameOf(m2));
-    }
-
-    public Contact3D addContact3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Contact3D) addLink("addContact3D", LinkKind.CONTACT3D, name, m1, m2, K, Z, dist, 0, 0);
-    }
-
-    public Contact3D addContact3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addContact3D(name, dist, K, Z, distinct("addContact3D", name, m1, m2), nameOf(m2));
-    }
-
-    public Bubble3D addBubble3D(String name, double dist, double K, double Z, String m1, String m2) {
-        return (Bubble3D) addLink("addBubble3D", LinkKind.BUBBLE3D, name, m1, m2, K, Z, dist, 0, 0);
-    }
-
-    public Bubble3D addBubble3D(String name, double dist, double K, double Z, Mass m1, Mass m2) {
-        return addBubble3D(name, dist, K, Z, distinct("addBubble3D", name, m1, m2), nameOf(m2));
-    }
-
-    public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation, double pos, String m1) {
-        return (PlaneContact3D) addLink("addPlaneContact", LinkKind.PLANE_CONTACT3D, name, m1, null, K, Z, l0,
+    public int addPlaneContact(String name, double l0, double K, double Z, int orientation, double pos, String m1) {
+        return addLink("addPlaneContact", LinkKind.PLANE_CONTACT3D, name, m1, null, K, Z, l0,
                 pos, orientation);
     }
 
-    public PlaneContact3D addPlaneContact(String name, double l0, double K, double Z, int orientation, double pos, Mass m1) {
-        return addPlaneContact(name, l0, K, Z, orientation, pos, nameOf(m1));
+
+    public int addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
+        return addLink("addAttractor3D", LinkKind.ATTRACTOR3D, name, m1, m2, 0, 0, dLim, attr, 0);
     }
 
-    public Attractor3D addAttractor3D(String name, double dLim, double attr, String m1, String m2) {
-        return (Attractor3D) addLink("addAttractor3D", LinkKind.ATTRACTOR3D, name, m1, m2, 0, 0, dLim, attr, 0);
-    }
 
-    public Attractor3D addAttractor3D(String name, double dLim, double attr, Mass m1, Mass m2) {
-        return addAttractor3D(name, dLim, attr, distinct("addAttractor3D", name, m1, m2), nameOf(m2));
-    }
-
-    private Interaction addLink(String op, LinkKind kind, String name, String m1, String m2, double K, double Z, double len, double aux, int axis) {
+    private int addLink(String op, LinkKind kind, String name, String m1, String m2, double K, double Z, double len, double aux, int axis) {
         ModuleBuilder.checkLinkArgs(op, kind, name, K, Z, len, aux, axis);
         if (!kind.isSingleMass() && m1 != null && m1.equals(m2) && !core.lenient.strict() && matExists(m1)) {
             // the paper's engine added a link that never acted (or, on a moving mass, made it NaN): add nothing
             core.lenient.forgive(PaperLeniency.Kind.SELF_LINK, op, name, "cannot link mass \"" + m1 + "\" to itself",
                     "the interaction was not added and null was returned");
-            return null;
+            return -1;
         }
         return structural(() -> {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
-            return (Interaction) core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
+            return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
         });
     }
 
@@ -247,9 +199,11 @@ public final class BuildCalls extends Calls {
         });
     }
 
-    public Ground3D changeToFixedPoint(String name) {
+    public int changeToFixedPoint(String name) {
         return structural(() -> {
-            return (Ground3D) core.topology.makeFixed(core.dir.massId("changeToFixedPoint", name));
+            int id = core.dir.massId("changeToFixedPoint", name);
+            core.topology.makeFixed(id);
+            return id;
         });
     }
 

@@ -1,7 +1,5 @@
 package tactus.internal.calls;
 
-import tactus.Mass;
-import tactus.internal.model.ApiAccess;
 import tactus.internal.model.Check;
 import tactus.internal.realtime.ModelLock;
 import tactus.internal.ModelCore;
@@ -60,25 +58,14 @@ public abstract class Calls {
         return core.dir.linkAt(op, i);
     }
 
-    protected String distinct(String op, String name, Mass m1, Mass m2) {
-        String a = nameOf(m1);
-        if (a.equals(nameOf(m2))) {
-            throw Check.fail(op, name, "cannot link mass \"" + a + "\" to itself");
-        }
-        return a;
-    }
-
-    protected String nameOf(Mass m) {
+    /**
+     * Runs {@code body} inside the model as a read enters (for the facade's own bookkeeping that the stepping calls
+     * see, its parameter controllers).
+     */
+    public final <T> T read(java.util.function.Supplier<T> body) {
         enter();
         try {
-            if (m == null) {
-                throw new IllegalArgumentException("a mass handle must not be null");
-            }
-            if (ApiAccess.get().modelOf(m) != core) {
-                throw new IllegalArgumentException("mass handle " + m + " belongs to another model");
-            }
-            ApiAccess.get().checkLive(m);
-            return core.dir.massName(ApiAccess.get().idOf(m));
+            return body.get();
         } finally {
             exit();
         }

@@ -1,9 +1,6 @@
 package tactus.internal.calls;
 
 import processing.core.PVector;
-import tactus.Interaction;
-import tactus.Mass;
-import tactus.ParamController;
 import tactus.Vect3D;
 import tactus.linkModuleType;
 import tactus.matModuleType;
@@ -16,11 +13,9 @@ import tactus.internal.ModelCore;
  * controllers, the energies. Each enters the model once and hands the work to its room. Not API.
  */
 public final class QueryCalls extends Calls {
-    private final ControllerBook controllers;
 
-    public QueryCalls(ModelCore core, ModelLock gate, ControllerBook controllers) {
+    public QueryCalls(ModelCore core, ModelLock gate) {
         super(core, gate);
-        this.controllers = controllers;
     }
 
 
@@ -63,28 +58,28 @@ public final class QueryCalls extends Calls {
         }
     }
 
-    public Mass getMass(String name) {
+    public int getMass(String name) {
         enter();
         try {
-            return (Mass) core.dir.massHandle(core.dir.massId("getMass", name));
+            return core.dir.massId("getMass", name);
         } finally {
             exit();
         }
     }
 
-    public Interaction getInteraction(String name) {
+    public int getInteraction(String name) {
         enter();
         try {
-            return (Interaction) core.dir.linkHandle(core.dir.linkId("getInteraction", name));
+            return core.dir.linkId("getInteraction", name);
         } finally {
             exit();
         }
     }
 
-    public Interaction getInteractionAt(int i) {
+    public int getInteractionAt(int i) {
         enter();
         try {
-            return (Interaction) core.dir.linkHandle(core.dir.linkAt("getInteractionAt", i));
+            return core.dir.linkAt("getInteractionAt", i);
         } finally {
             exit();
         }
@@ -359,26 +354,6 @@ public final class QueryCalls extends Calls {
     }
 
 
-
-
-    /** Adds or replaces a named parameter controller, made by the facade. */
-    public void addParamController(String name, ParamController pc) {
-        enter();
-        try {
-            controllers.put(name, pc);
-        } finally {
-            exit();
-        }
-    }
-
-    public ParamController getParamController(String name) {
-        enter();
-        try {
-            return controllers.get(name);
-        } finally {
-            exit();
-        }
-    }
 
 
     public double getKineticEnergy() {

@@ -46,7 +46,7 @@ public final class ModuleBuilder {
         }
     }
 
-    public Object addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
+    public int addMass(String op, MassKind kind, String name, double m, Vect3D pos, Vect3D vel,
                  double K, double Z, int smoothing) {
         if (c.dir.mats.id(name) >= 0) {
             throw Check.fail(op, name, "a mass with this name already exists");
@@ -60,10 +60,10 @@ public final class ModuleBuilder {
         if (kind.isInput()) {
             engine.setInputWeight(id, 1.0 / smoothing);
         }
-        Object h = c.dir.registerMass(name, id, kind);
+        c.dir.registerMass(name, id, kind);
         guard.afterChange(() -> topology.removeMass(id));
         topology.compileIfRunning();
-        return h;
+        return id;
     }
 
     /** Validates the arguments of an interaction that do not depend on the model's state. */
@@ -84,7 +84,7 @@ public final class ModuleBuilder {
         }
     }
 
-    public Object addLink(String op, LinkKind kind, String name, int a, int b, double K, double Z, double len,
+    public int addLink(String op, LinkKind kind, String name, int a, int b, double K, double Z, double len,
                         double aux, int axis) {
         if (!kind.isSingleMass() && a == b) {
             throw Check.fail(op, name, "cannot link mass \"" + c.dir.massName(a) + "\" to itself");
@@ -98,13 +98,13 @@ public final class ModuleBuilder {
         } else {
             id = engine.addLink(kind, a, b, u.stiffnessIn(K), u.dampingIn(Z), len);
         }
-        Object h = c.dir.registerLink(name, id, kind);
+        c.dir.registerLink(name, id, kind);
         guard.afterChange(() -> topology.removeLink(id));
         topology.compileIfRunning();
         if (kind == LinkKind.CONTACT3D && engine.linkDistance(id) == 0) {
             System.err.println(coincidentContactWarning(name, c.dir.massName(a), c.dir.massName(b)));
         }
-        return h;
+        return id;
     }
 
     /** The warning printed once, when a Contact3D is added between two masses at exactly the same position. */

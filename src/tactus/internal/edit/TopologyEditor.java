@@ -76,13 +76,12 @@ public final class TopologyEditor {
      * Turns a mass into a fixed point at its current position; its interactions stay attached. It cannot make a
      * stable model unstable, so it is never refused.
      */
-    public Object makeFixed(int id) {
+    public void makeFixed(int id) {
         engine.makeFixed(id);
-        Object h = c.dir.storeMassHandle(id, MassKind.GROUND3D);
+        c.dir.retypeMass(id, MassKind.GROUND3D);
         // no stability check: fixing a mass removes a row and a column of the symmetric form of M^-1(K + 2Z),
         // so by eigenvalue interlacing its largest eigenvalue cannot grow
         compileIfRunning();
-        return h;
     }
 
     /** Removes every mass, interaction, subset, contact group and controller; lets a diverged model run again. */

@@ -1,13 +1,13 @@
 package tactus.internal.model;
 
 import tactus.DivergenceException;
+import tactus.ModelSnapshot;
 import tactus.StabilityReport;
 import tactus.UnstableModelException;
 
 /**
- * The few doors of the API types that only the machinery may open: what model a handle belongs to and its id,
- * the snapshot view of a buffer, and the API's exceptions and stability report. Handles and views are typed
- * {@code Object} here, so that the rooms below never name the API classes that call them. They stay package-private
+ * The few doors of the API types that only the machinery may open: the snapshot view of a buffer, and the API's
+ * exceptions and stability report. They stay package-private
  * in {@code tactus} (a sketch cannot call them); the package gives this object to the machinery once, when
  * {@link PhysicalModel} is loaded. Not API.
  */
@@ -30,17 +30,8 @@ public abstract class ApiAccess {
         return doors;
     }
 
-    /** @return the rooms of the model a handle belongs to (compare with a model's own). */
-    public abstract Object modelOf(Object handle);
-
-    /** @return the engine id of a handle's module. */
-    public abstract int idOf(Object handle);
-
-    /** Throws the handle's {@code IllegalStateException} if its module is no longer part of its model. */
-    public abstract void checkLive(Object handle);
-
     /** @return the public, read-only view ({@code ModelSnapshot}) of a snapshot buffer. */
-    public abstract Object newSnapshotView(Object buffer);
+    public abstract ModelSnapshot newSnapshotView(tactus.internal.snapshot.SnapshotBuffer buffer);
 
     /** @return the exception of a change refused under {@code StabilityPolicy.THROW}. */
     public abstract UnstableModelException unstable(String message, StabilityReport report);
@@ -53,7 +44,8 @@ public abstract class ApiAccess {
      * @return the exception of a divergence found while stepping, from its raw facts (its message is formatted when
      *     it is read, not on the stepping thread)
      * @param massLabel the kind of the mass, "Mass3D"; x, y, z its position when the divergence was found
+     * @param suspect the module most likely at fault, its parameter and the fix, or null
      */
     public abstract DivergenceException divergence(String massLabel, String massName, long step,
-                                                   double x, double y, double z);
+                                                   double x, double y, double z, String suspect);
 }

@@ -6,7 +6,7 @@ import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 
 /**
- * The model's directory: names, insertion-order indices and handles of the live masses and interactions, and
+ * The model's directory: names, insertion-order indices and stamps of the live masses and interactions, and
  * the look-ups that turn a user's name or index into an engine id with an error that names what was asked.
  * Mass names are unique; interaction names may repeat (the first live match wins). The caller holds the
  * model's lock.
@@ -15,13 +15,17 @@ public final class Directory {
     public final Registry mats = new Registry(true);
     public final Registry links = new Registry(false);
     private final Engine engine;
-    private final HandleFactory handles;
-    private Object[] massHandles = new Object[16];
-    private Object[] linkHandles = new Object[16];
+    private final ModuleListener listener;
+    /** Per mass id: its stamp (0 before it joined), see {@link #massStamp}. */
+    private int[] massStamps = new int[16];
+    /** Per mass id: true once it left the model (ids are never reused). */
+    private boolean[] massGone = new boolean[16];
+    /** Per interaction id: true while it is part of the model. */
+    private boolean[] linkLive = new boolean[16];
 
-    public Directory(Engine engine, HandleFactory handles) {
+    public Directory(Engine engine, ModuleListener listener) {
         this.engine = engine;
-        this.handles = handles;
+        this.listener = listener;
     }
 
     // ---------------------------------------------------------------- look-ups with user-facing errors
@@ -98,65 +102,80 @@ public final class Directory {
         return engine.massKind(id).label() + " \"" + mats.name(id) + "\"";
     }
 
-    // ---------------------------------------------------------------- registration and handles
+    // ---------------------------------------------------------------- registration and liveness
 
-    public Object registerMass(String name, int id, MassKind kind) {
+    /** @return the stamp of a live mass: it changes when the mass takes a new kind (made fixed). */
+    public int massStamp(int id) {
+        return id < massStamps.length ? massStamps[id] : 0;
+    }
+
+    /** Throws the handle's {@code IllegalStateException} unless mass {@code id} is live under {@code stamp}. */
+    public void checkMass(int id, int stamp) {
+        if (massStamp(id) != stamp || massGone[id]) {
+            throw gone("mass");
+        }
+    }
+
+    /** Throws the handle's {@code IllegalStateException} unless interaction {@code id} is live. */
+    public void checkLink(int id) {
+        if (id >= linkLive.length || !linkLive[id]) {
+            throw gone("interaction");
+        }
+    }
+
+    private static IllegalStateException gone(String what) {
+        return new IllegalStateException("this " + what + " handle is no longer part of its model (removed, cleared"
+                + " or made fixed)");
+    }
+
+    public void registerMass(String name, int id, MassKind kind) {
         mats.add(name, id);
-        return storeMassHandle(id, kind);
+        retypeMass(id, kind);
     }
 
-    /** Replaces the handle of a live mass (its kind changed, for example to a fixed point). */
-    public Object storeMassHandle(int id, MassKind kind) {
-        if (id >= massHandles.length) {
-            massHandles = Arrays.copyOf(massHandles, Math.max(id + 1, massHandles.length * 2));
+    /** Gives a live mass a new stamp and tells the listener (it was added, or its kind changed to a fixed point). */
+    public void retypeMass(int id, MassKind kind) {
+        if (id >= massStamps.length) {
+            massStamps = Arrays.copyOf(massStamps, Math.max(id + 1, massStamps.length * 2));
+            massGone = Arrays.copyOf(massGone, massStamps.length);
         }
-        if (massHandles[id] != null) {
-            handles.retire(massHandles[id]);
+        if (massStamps[id] != 0) {
+            listener.massGone(id);
         }
-        Object h = handles.newMass(id, kind);
-        massHandles[id] = h;
-        return h;
+        massStamps[id]++;
+        listener.massAdded(id, kind, massStamps[id]);
     }
 
-    public Object registerLink(String name, int id, LinkKind kind) {
+    public void registerLink(String name, int id, LinkKind kind) {
         links.add(name, id);
-        if (id >= linkHandles.length) {
-            linkHandles = Arrays.copyOf(linkHandles, Math.max(id + 1, linkHandles.length * 2));
+        if (id >= linkLive.length) {
+            linkLive = Arrays.copyOf(linkLive, Math.max(id + 1, linkLive.length * 2));
         }
-        Object h = handles.newLink(id, kind);
-        linkHandles[id] = h;
-        return h;
-    }
-
-    public Object massHandle(int id) {
-        return massHandles[id];
-    }
-
-    public Object linkHandle(int id) {
-        return linkHandles[id];
+        linkLive[id] = true;
+        listener.linkAdded(id, kind);
     }
 
     public void forgetMass(int id) {
         mats.remove(id);
-        handles.retire(massHandles[id]);
-        massHandles[id] = null;
+        massGone[id] = true;
+        listener.massGone(id);
     }
 
     public void forgetLink(int id) {
         links.remove(id);
-        handles.retire(linkHandles[id]);
-        linkHandles[id] = null;
+        linkLive[id] = false;
+        listener.linkGone(id);
     }
 
     public void clear() {
         for (int id : mats.ids()) {
-            handles.retire(massHandles[id]);
+            massGone[id] = true;
+            listener.massGone(id);
         }
         for (int id : links.ids()) {
-            handles.retire(linkHandles[id]);
+            linkLive[id] = false;
+            listener.linkGone(id);
         }
-        Arrays.fill(massHandles, null);
-        Arrays.fill(linkHandles, null);
         mats.clear();
         links.clear();
     }

@@ -6,7 +6,7 @@ import tactus.engine.MassKind;
 import tactus.paramSystem;
 
 /**
- * What every room of one model shares: the engine, the directory of names and handles, the clock and units, the
+ * What every room of one model shares: the engine, the directory of names and stamps, the clock and units, the
  * paper's leniency, the realtime mode (if any) and where the current thread's writes go. The rooms themselves are
  * wired above, in {@code tactus.internal.ModelCore}; every method here assumes the caller is inside a facade call
  * (holds the model's lock, or is the realtime owner). Not API.
@@ -41,7 +41,7 @@ public class ModelBase {
         }
     };
 
-    protected ModelBase(paramSystem system, int simRate, int displayRate, HandleFactory handles) {
+    protected ModelBase(paramSystem system, int simRate, int displayRate, ModuleListener handles) {
         this.dir = new Directory(engine, handles);
         this.time = new Timebase(engine, dir, system, simRate, displayRate);
         this.time.writes = this::writes;

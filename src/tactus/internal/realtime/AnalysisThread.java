@@ -7,7 +7,8 @@ import tactus.internal.ModelCore;
 /**
  * The stability analysis of a realtime-stepped model ({@link Ownership}): runs the analysis of changes posted under
  * WARN on its own daemon thread (once for a burst of
- * changes), so that the calls return as soon as they are queued. It takes the model's lock like any editor, and
+ * changes), so that the calls return as soon as they are queued. It waits for the changes to be applied, then takes
+ * the model's lock like any editor (so it never holds the lock while it waits for the stepping thread), and
  * rests seven times as long as each analysis took (however many requests arrive meanwhile), so that it never
  * uses more than an eighth of a core (the audio thread needs the rest): a warning may come some tens of
  * milliseconds after the change on a big model.
@@ -77,6 +78,7 @@ public final class AnalysisThread implements Runnable {
             }
             requested = false;
             long t0 = System.nanoTime();
+            own.awaitAppliedUnlocked(own.postedSeq()); // never hold the lock while the stepping thread is busy
             lock.lock();
             try {
                 own.awaitAll();

@@ -57,6 +57,9 @@ public final class ModelLock {
         if (o != null && o.isOwnerThread() && o.enterAsOwner()) {
             return;
         }
+        if (o != null && !change && !lock.isHeldByCurrentThread()) {
+            o.awaitAppliedUnlocked(o.paramSeq()); // wait for the stepping thread without holding the lock
+        }
         lock.lock();
         if (editDepth++ > 0) {
             return;

@@ -582,6 +582,28 @@ public final class Ownership implements RealtimeMode {
         }
     }
 
+    /**
+     * Waits, holding no lock, until the command {@code seq} has been applied, the owner is gone (then the caller's
+     * locked wait applies the queue itself) or {@link #waitLimitNanos} has passed. A read waits here before it takes
+     * the model's lock, so that a thread waiting for the stepping thread never holds the lock a setter needs.
+     */
+    public void awaitAppliedUnlocked(long seq) {
+        long start = 0;
+        while (applied < seq && !ownerGone() && !closed) {
+            if (start == 0) {
+                start = System.nanoTime();
+            } else if (System.nanoTime() - start > waitLimitNanos) {
+                return;
+            }
+            LockSupport.parkNanos(50_000L);
+        }
+    }
+
+    /** @return the sequence number of the last command that changed parameters or structure. */
+    public long paramSeq() {
+        return lastParamSeq;
+    }
+
     /** Waits until everything posted so far is applied. */
     public void awaitAll() {
         awaitApplied(posted);

@@ -1,5 +1,6 @@
 package tactus.internal.snapshot;
 
+import tactus.ModelSnapshot;
 import tactus.internal.model.ApiAccess;
 import tactus.linkModuleType;
 import tactus.matModuleType;
@@ -38,7 +39,7 @@ public final class SnapshotBuffer {
     /** True when this copy carries every mass's velocity and force. */
     public boolean motion;
     /** The public view of this buffer, made once. */
-    public final Object view;
+    public final ModelSnapshot view;
 
     SnapshotBuffer(SnapshotExchange exchange) {
         this.exchange = exchange;

@@ -7,8 +7,10 @@ import tactus.internal.model.ApiAccess;
 import tactus.internal.model.Directory;
 
 /**
- * Turns a divergence found by the engine's guard into a {@link DivergenceException} naming the mass, thrown to
- * the stepping caller or handed once to a {@link DivergenceListener}. The caller holds the model's lock.
+ * Turns a divergence found by the engine's guard into a {@link DivergenceException} naming the mass and the module
+ * most likely at fault, thrown to the stepping caller or handed once to a {@link DivergenceListener}. The caller
+ * holds the model's lock. Finding the suspect runs one stability analysis, once per divergence (the model is then
+ * frozen until it is cleared).
  */
 public final class DivergenceWatch {
     private final Engine engine;
@@ -22,9 +24,17 @@ public final class DivergenceWatch {
      */
     private volatile boolean diverged;
 
-    public DivergenceWatch(Engine engine, Directory dir) {
+    /** The module most likely at fault, found when a divergence is reported (once per divergence). */
+    private final java.util.function.Supplier<String> suspect;
+
+    /**
+     * @param suspect names the module most likely at fault, with its parameter and limit (the stability guard's
+     *     analysis); asked once per divergence, under the model's lock; may return null
+     */
+    public DivergenceWatch(Engine engine, Directory dir, java.util.function.Supplier<String> suspect) {
         this.engine = engine;
         this.dir = dir;
+        this.suspect = suspect;
     }
 
     public void setListener(DivergenceListener l) {
@@ -69,8 +79,14 @@ public final class DivergenceWatch {
             return;
         }
         engine.position(id, pos);
+        String cause;
+        try {
+            cause = suspect.get();
+        } catch (RuntimeException e) {
+            cause = null; // the analysis failed: the exception still names the mass
+        }
         DivergenceException ex = ApiAccess.get().divergence(engine.massKind(id).label(), dir.massName(id),
-                engine.divergedAt(), pos[0], pos[1], pos[2]);
+                engine.divergedAt(), pos[0], pos[1], pos[2], cause);
         if (listener != null) {
             notified = true;
             listener.diverged(ex);

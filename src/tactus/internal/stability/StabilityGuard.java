@@ -131,6 +131,19 @@ public final class StabilityGuard {
     }
 
     /**
+     * Names the module most likely at fault for a divergence: the one the stability analysis blames, with its
+     * parameter, value, limit and the fix; when the model is linearly stable, the module closest to its limit and
+     * the other causes to look for. Runs one analysis, whatever the policy.
+     */
+    public String suspect() {
+        StepPlan p = planToAnalyse();
+        tactus.engine.StabilityReport r = analyze(p);
+        String[] groups = groupNames.get();
+        return StabilityMessages.suspect(r, StabilityMessages.describe(r, p, engine, dir, time.units, maxContacts,
+                groups), StabilityMessages.culprit(r, engine, dir, groups));
+    }
+
+    /**
      * @return the plan to analyse. The analysis only reads it: on another thread than a realtime owner (the drawing
      *     thread, the WARN helper thread) it is the live plan as it is, never compiled or re-selected there.
      */

@@ -54,9 +54,12 @@ public final class StabilityMessages {
                         StabilityAnalyzer.Assumption.linkStiffness(id, kk * PROBE)));
                 value = u.stiffnessOut(kk);
             }
+            String unit = unit(param, u);
             where = k.label() + " \"" + links.name(id) + "\": " + param + " = " + fmt(value)
-                    + (limit > 0 ? " is above its limit of about " + fmt(limit)
-                    : " is too high, and lowering it alone cannot make the model stable");
+                    + (limit > 0 ? " is above its limit of about " + fmt(limit) + unit
+                    : unit + " is too high, and lowering it alone cannot make the model stable")
+                    + ". Fix: " + (limit > 0 ? "lower " + param + " below " + fmt(limit) : "lower the stiffness of the"
+                    + " links around it") + ", raise the masses it joins, or " + moreSteps(param, u);
         } else if (r.culpritGroup() >= 0 && r.culpritGroup() < groupNames.length) {
             String g = groupNames[r.culpritGroup()];
             where = "the contact group of subset \"" + g + "\": its stiffness and damping are too high for "
@@ -70,18 +73,50 @@ public final class StabilityMessages {
                 double limit = u.stiffnessOut(linearLimit(r, p, contacts, kk,
                         StabilityAnalyzer.Assumption.oscillatorStiffness(id, kk * PROBE)));
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": K = " + fmt(k)
-                        + (limit > 0 ? " is above its limit of about " + fmt(limit)
-                        : " is too high, and lowering it alone cannot make the model stable (lower its damping Z)");
+                        + (limit > 0 ? " is above its limit of about " + fmt(limit) + unit("K", u)
+                        : unit("K", u) + " is too high, and lowering it alone cannot make the model stable (lower its"
+                        + " damping Z)") + ". Fix: " + (limit > 0 ? "lower K below " + fmt(limit) + ", " : "")
+                        + "raise its mass, or " + moreSteps("K", u);
             } else {
                 where = e.massKind(id).label() + " \"" + mats.name(id) + "\": mass = " + fmt(e.mass(id))
-                        + " is below its limit of about " + fmt(e.mass(id) / scale) + " (air friction)";
+                        + " is below its limit of about " + fmt(e.mass(id) / scale) + " (air friction). Fix: raise"
+                        + " its mass, or lower the air friction (setFriction)";
             }
         } else {
             where = "the model";
         }
-        return "Tactus: unstable model: " + where + " (lambda max(M^-1 (K + 2Z)) = " + fmt(r.lambda())
-                + " must stay below 4" + (r.lambdaContacts() > 0 ? "; contacts counted as engaged add "
-                + fmt(r.lambdaContacts()) : "") + ")";
+        return "Tactus: unstable model: " + where + " (stability index " + fmt(r.lambda()) + ", which must stay below 4"
+                + (r.lambdaContacts() > 0 ? "; contacts counted as engaged add " + fmt(r.lambdaContacts()) : "")
+                + "; docs/stability.md)";
+    }
+
+    /** @return the unit of a link or oscillator parameter in the model's units, with a leading space, or "". */
+    static String unit(String param, UnitScale u) {
+        if (!u.isReal()) {
+            return " (model units)";
+        }
+        switch (param) {
+            case "K":
+                return " N/m";
+            case "Z":
+                return " N·s/m";
+            default:
+                return " N";
+        }
+    }
+
+    /**
+     * @return the third fix of a stiffness or damping above its limit: more steps per frame, said for the unit system
+     *     (in real units a higher rate raises the limit; in model units the coefficients are per step, so the same
+     *     motion at more steps per frame needs them lowered)
+     */
+    static String moreSteps(String param, UnitScale u) {
+        if (u.isReal()) {
+            return "take more steps per frame (a higher simulation rate, setSimRate, raises the limit of " + param
+                    + (param.equals("Z") ? " in proportion)" : " with its square)");
+        }
+        return "take more steps per frame with " + param + (param.equals("Z") ? " divided by the factor" : " divided"
+                + " by the factor's square") + " (the same motion per frame, further from the limit)";
     }
 
     /**
@@ -112,6 +147,25 @@ public final class StabilityMessages {
             return dir.describeMass(r.culpritMass());
         }
         return null;
+    }
+
+    /**
+     * The suspect of a divergence, from the analysis of the diverged model.
+     *
+     * @param described the line of {@link #describe} for the report (null when stable without negative damping)
+     * @param culprit the module where the bound is tightest ({@link #culprit}), or null
+     * @return the unstable module with its parameter, limit and fix; or the module with negative damping; or, for a
+     *     model that is linearly stable, the module closest to its limit and the other causes to look for
+     */
+    public static String suspect(StabilityReport r, String described, String culprit) {
+        if (described != null) {
+            return described.replaceFirst("^Tactus: (unstable model|negative damping): ", "");
+        }
+        return "no module is above its stability limit (the closest is " + (culprit != null ? culprit : "none")
+                + String.format(java.util.Locale.ROOT, ", at %.0f %%", 100 * r.lambda() / StabilityReport.LIMIT)
+                + " of the bound), so look at what drives the mass: a large force or velocity set from outside "
+                + "(triggerForceImpulse, setMatVelocity, a haptic or position input), a contact pressed too deep, or a "
+                + "parameter changed while the model steps";
     }
 
     /** @return the first module with negative damping, as {@code Type "name"}, or null. */

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Timeout;
 import tactus.haptics.Board;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.PantographKinematics;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** The device plant: inertia, viscous damping, Coulomb friction with a static threshold, actuation delay. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)

@@ -8,7 +8,7 @@ import tactus.haptics.Board;
 import tactus.haptics.BoardModel;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.PantographKinematics;
+import tactus.haptics.pantograph.PantographKinematics;
 
 /** The emulated linkage obeys the motors: a spring-held handle pushed by J^T F settles at F / k. */
 class EmulatedLinkageTest {

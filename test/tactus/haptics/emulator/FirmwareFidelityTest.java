@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import tactus.haptics.Board;
 import tactus.haptics.Device;
 import tactus.haptics.HaplyPreset;
-import tactus.haptics.Transport;
+import tactus.haptics.transport.Transport;
 
 /** The emulator does what the M0 firmware does where the two used to differ: the duty's division, and id 0. */
 class FirmwareFidelityTest {
