@@ -1007,6 +1007,35 @@ public final class Engine implements AutoCloseable {
         refreshLink(id);
     }
 
+    /**
+     * @return parameter {@code i} beyond stiffness, damping and length of a link whose kind has it
+     *     ({@link LinkKind#auxNames()}), per step
+     */
+    public double linkAux(int id, int i) {
+        checkAux(id, i);
+        return i == 0 ? links.aux0[id] : links.aux1[id];
+    }
+
+    /** Sets parameter {@code i} beyond stiffness, damping and length of a link whose kind has it, per step. */
+    public void setLinkAux(int id, int i, double value) {
+        checkAux(id, i);
+        if (i == 0) {
+            links.aux0[id] = value;
+        } else {
+            links.aux1[id] = value;
+        }
+        linkParameterEdits++;
+        refreshLink(id);
+    }
+
+    private void checkAux(int id, int i) {
+        checkLink(id);
+        if (i < 0 || i >= links.kind[id].auxCount()) {
+            throw new IllegalArgumentException("link " + id + " is a " + links.kind[id].label() + ", which has no"
+                    + " parameter " + i + " beyond K, Z and its length");
+        }
+    }
+
     // ------------------------------------------------------------------ state
 
     /** Writes the position of a mass into {@code out[0..2]}. */
@@ -1236,7 +1265,7 @@ public final class Engine implements AutoCloseable {
             return coordinate(a, links.axis[id]) - links.planePosition[id];
         }
         int b = links.b[id];
-        if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
+        if (links.kind[id].isOneDimensional()) {
             return coordinate(a, 2) - coordinate(b, 2);
         }
         double dx = coordinate(a, 0) - coordinate(b, 0);
@@ -1276,8 +1305,8 @@ public final class Engine implements AutoCloseable {
                 continue;
             }
             for (int j = 0; j < b.n; j++) {
-                boolean tracked = b.kind == LinkKind.SPRING_DAMPER1D || b.prev(j) >= 0;
-                if (tracked && b.kind != LinkKind.PLANE_CONTACT3D && b.kind != LinkKind.ATTRACTOR3D) {
+                boolean tracked = b.kind.isOneDimensional() || b.prev(j) >= 0;
+                if (tracked && b.kind.keepsHistory()) {
                     double d = PlanCompiler.distanceOf(b, j, p);
                     b.setPrev(j, d - (d - b.prev(j)) * ratio);
                 }
