@@ -81,4 +81,49 @@ public abstract class Interaction extends Module {
     void length(String op, double d) {
         set(op, "d", LinkParam.LENGTH, d);
     }
+
+    // ---- the parameters beyond K, Z and the length (mi.lib's nonlinear interactions)
+
+    /**
+     * Reads a parameter beyond stiffness, damping and length by its name, one of
+     * {@link linkModuleType#extraParameterNames()} of this interaction's type (for example {@code "Kmax"}).
+     *
+     * @throws IllegalArgumentException when the type has no parameter of that name
+     */
+    public double getExtraParameter(String name) {
+        return aux("getExtraParameter", extraIndex("getExtraParameter", name));
+    }
+
+    /**
+     * Sets a parameter beyond stiffness, damping and length by its name, one of
+     * {@link linkModuleType#extraParameterNames()} of this interaction's type, in the model's units.
+     *
+     * @throws IllegalArgumentException when the type has no parameter of that name, or the value is out of range
+     */
+    public void setExtraParameter(String name, double value) {
+        aux("setExtraParameter", extraIndex("setExtraParameter", name), value);
+    }
+
+    private int extraIndex(String op, String name) {
+        String[] names = linkModuleType.valueOf(getType()).extraParameterNames();
+        for (int i = 0; i < names.length; i++) {
+            if (names[i].equals(name)) {
+                return i;
+            }
+        }
+        throw new IllegalArgumentException(op + "(\"" + name + "\"): a " + getType() + " has no such parameter; its"
+                + " extra parameters are " + java.util.Arrays.toString(names));
+    }
+
+    /** @return parameter {@code index} beyond K, Z and the length, in the model's units. */
+    double aux(String op, int index) {
+        checkValid();
+        return calls.linkAux(id, op, index);
+    }
+
+    /** Sets parameter {@code index} beyond K, Z and the length, in the model's units. */
+    void aux(String op, int index, double value) {
+        checkFinite(op, "value", value);
+        calls.setLinkAux(id, op, index, value);
+    }
 }

@@ -150,6 +150,30 @@ final class ModuleHandles implements ModuleListener {
                 return new PlaneContact3D(this, id);
             case ATTRACTOR3D:
                 return new Attractor3D(this, id);
+            case QUADRATIC_SPRING_DAMPER3D:
+                return new QuadraticSpringDamper3D(this, id);
+            case QUADRATIC_SPRING_DAMPER1D:
+                return new QuadraticSpringDamper1D(this, id);
+            case CUBIC_SPRING_DAMPER3D:
+                return new CubicSpringDamper3D(this, id);
+            case CUBIC_SPRING_DAMPER1D:
+                return new CubicSpringDamper1D(this, id);
+            case CLIPPED_SPRING_DAMPER3D:
+                return new ClippedSpringDamper3D(this, id);
+            case CLIPPED_SPRING_DAMPER1D:
+                return new ClippedSpringDamper1D(this, id);
+            case PLUCK3D:
+                return new Pluck3D(this, id);
+            case PLUCK1D:
+                return new Pluck1D(this, id);
+            case BOW3D:
+                return new Bow3D(this, id);
+            case BOW1D:
+                return new Bow1D(this, id);
+            case CLIPPED_CONTACT3D:
+                return new ClippedContact3D(this, id);
+            case CLIPPED_CONTACT1D:
+                return new ClippedContact1D(this, id);
             default:
                 throw new IllegalStateException("no handle for " + kind);
         }

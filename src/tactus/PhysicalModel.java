@@ -655,6 +655,240 @@ public class PhysicalModel {
         return addAttractor3D(name, dLim, attr, n[0], n[1]);
     }
 
+    // ---- Faust mi.lib's nonlinear interactions (docs/modules.md)
+
+    /**
+     * Adds a nonlinear interaction of any type by its type, what model loaders use: {@code extra} holds the
+     * parameters of {@link linkModuleType#extraParameterNames()} in that order, in the model's units; a type
+     * without stiffness or length ignores K or dist.
+     *
+     * @throws IllegalArgumentException when the type is not a nonlinear one or {@code extra} has the wrong length
+     */
+    public Interaction addInteraction(linkModuleType type, String name, double dist, double K, double Z,
+                                      double[] extra, String m1, String m2) {
+        return handles.link(build.addInteraction(type, name, dist, K, Z, extra, m1, m2));
+    }
+
+    /**
+     * Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K
+     * e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q,
+            String m1, String m2) {
+        return handles.link(build.addQuadraticSpringDamper3D(name, dist, K, Z, Q, m1, m2));
+    }
+
+    /**
+     * Adds a spring-damper with a quadratic term, along the line between the masses (mi.lib's nlSpringDamper2): F = K
+     * e + Q sgn(e) e^2 + Z v, e = d - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper3D addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addQuadraticSpringDamper3D", name, m1, m2);
+        return addQuadraticSpringDamper3D(name, dist, K, Z, Q, n[0], n[1]);
+    }
+
+    /**
+     * Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e =
+     * z1 - z2 - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q,
+            String m1, String m2) {
+        return handles.link(build.addQuadraticSpringDamper1D(name, dist, K, Z, Q, m1, m2));
+    }
+
+    /**
+     * Adds a spring-damper with a quadratic term along z (mi.lib's nlSpringDamper2): F = K e + Q sgn(e) e^2 + Z v, e =
+     * z1 - z2 - dist; Q in N/m^2 (REAL_UNITS).
+     */
+    public QuadraticSpringDamper1D addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addQuadraticSpringDamper1D", name, m1, m2);
+        return addQuadraticSpringDamper1D(name, dist, K, Z, Q, n[0], n[1]);
+    }
+
+    /**
+     * Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e +
+     * Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return handles.link(build.addCubicSpringDamper3D(name, dist, K, Z, Q, m1, m2));
+    }
+
+    /**
+     * Adds a spring-damper with a cubic term, along the line between the masses (mi.lib's nlSpringDamper3): F = K e +
+     * Q e^3 + Z v, e = d - dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper3D addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, Mass m1,
+            Mass m2) {
+        String[] n = handles.distinct("addCubicSpringDamper3D", name, m1, m2);
+        return addCubicSpringDamper3D(name, dist, K, Z, Q, n[0], n[1]);
+    }
+
+    /**
+     * Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 -
+     * dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return handles.link(build.addCubicSpringDamper1D(name, dist, K, Z, Q, m1, m2));
+    }
+
+    /**
+     * Adds a spring-damper with a cubic term along z (mi.lib's nlSpringDamper3): F = K e + Q e^3 + Z v, e = z1 - z2 -
+     * dist; Q in N/m^3 (REAL_UNITS).
+     */
+    public CubicSpringDamper1D addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, Mass m1,
+            Mass m2) {
+        String[] n = handles.distinct("addCubicSpringDamper1D", name, m1, m2);
+        return addCubicSpringDamper1D(name, dist, K, Z, Q, n[0], n[1]);
+    }
+
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's
+     * nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C,
+            double Kmax, String m1, String m2) {
+        return handles.link(build.addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, m1, m2));
+    }
+
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along the line between the masses (mi.lib's
+     * nlSpringDamperClipped with s = K, c = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper3D addClippedSpringDamper3D(String name, double dist, double K, double Z, double C,
+            double Kmax, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedSpringDamper3D", name, m1, m2);
+        return addClippedSpringDamper3D(name, dist, K, Z, C, Kmax, n[0], n[1]);
+    }
+
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c
+     * = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C,
+            double Kmax, String m1, String m2) {
+        return handles.link(build.addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, m1, m2));
+    }
+
+    /**
+     * Adds a cubic spring-damper bounded by the stiffness Kmax, along z (mi.lib's nlSpringDamperClipped with s = K, c
+     * = C, k = Kmax); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedSpringDamper1D addClippedSpringDamper1D(String name, double dist, double K, double Z, double C,
+            double Kmax, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedSpringDamper1D", name, m1, m2);
+        return addClippedSpringDamper1D(name, dist, K, Z, C, Kmax, n[0], n[1]);
+    }
+
+    /**
+     * Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and
+     * lets go once |d - dist| reaches scale (length units, > 0).
+     */
+    public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return handles.link(build.addPluck3D(name, dist, K, Z, scale, m1, m2));
+    }
+
+    /**
+     * Adds a pluck along the line between the masses (mi.lib's nlPluck): it pushes back on the elongation d - dist and
+     * lets go once |d - dist| reaches scale (length units, > 0).
+     */
+    public Pluck3D addPluck3D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addPluck3D", name, m1, m2);
+        return addPluck3D(name, dist, K, Z, scale, n[0], n[1]);
+    }
+
+    /**
+     * Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale
+     * (length units, > 0).
+     */
+    public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return handles.link(build.addPluck1D(name, dist, K, Z, scale, m1, m2));
+    }
+
+    /**
+     * Adds a pluck along z (mi.lib's nlPluck): it pushes back on z1 - z2 - dist and lets go once that reaches scale
+     * (length units, > 0).
+     */
+    public Pluck1D addPluck1D(String name, double dist, double K, double Z, double scale, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addPluck1D", name, m1, m2);
+        return addPluck1D(name, dist, K, Z, scale, n[0], n[1]);
+    }
+
+    /**
+     * Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the
+     * velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth).
+     */
+    public Bow3D addBow3D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return handles.link(build.addBow3D(name, Z, scale, profile, m1, m2));
+    }
+
+    /**
+     * Adds a bowing friction against the relative velocity of the masses (mi.lib's nlBow): Z in N·s/m, scale the
+     * velocity scale (REAL_UNITS: m/s, > 0), profile 0 (piecewise linear) or 1 (smooth).
+     */
+    public Bow3D addBow3D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addBow3D", name, m1, m2);
+        return addBow3D(name, Z, scale, profile, n[0], n[1]);
+    }
+
+    /**
+     * Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0),
+     * profile 0 (piecewise linear) or 1 (smooth).
+     */
+    public Bow1D addBow1D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return handles.link(build.addBow1D(name, Z, scale, profile, m1, m2));
+    }
+
+    /**
+     * Adds a bowing friction along z (mi.lib's nlBow): Z in N·s/m, scale the velocity scale (REAL_UNITS: m/s, > 0),
+     * profile 0 (piecewise linear) or 1 (smooth).
+     */
+    public Bow1D addBow1D(String name, double Z, double scale, int profile, Mass m1, Mass m2) {
+        String[] n = handles.distinct("addBow1D", name, m1, m2);
+        return addBow1D(name, Z, scale, profile, n[0], n[1]);
+    }
+
+    /**
+     * Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax,
+            String m1, String m2) {
+        return handles.link(build.addClippedContact3D(name, dist, K, Z, C, Kmax, m1, m2));
+    }
+
+    /**
+     * Adds a clipped cubic contact that pushes the masses apart while they are closer than dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact3D addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedContact3D", name, m1, m2);
+        return addClippedContact3D(name, dist, K, Z, C, Kmax, n[0], n[1]);
+    }
+
+    /**
+     * Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax,
+            String m1, String m2) {
+        return handles.link(build.addClippedContact1D(name, dist, K, Z, C, Kmax, m1, m2));
+    }
+
+    /**
+     * Adds a clipped cubic contact along z, m2 above m1, acting while z2 - z1 is below dist (mi.lib's
+     * nlCollisionClipped with s = K, c = C, k = Kmax, thres = dist); C in N/m^3, Kmax in N/m (REAL_UNITS).
+     */
+    public ClippedContact1D addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax,
+            Mass m1, Mass m2) {
+        String[] n = handles.distinct("addClippedContact1D", name, m1, m2);
+        return addClippedContact1D(name, dist, K, Z, C, Kmax, n[0], n[1]);
+    }
+
     // =================================================================== look-up
 
     /** {@return true when a mass with this name exists} */

@@ -159,6 +159,7 @@ class QueriesLeaveEngineAloneTest {
                 c.add(m.getLinkNameAt(i));
             }
             c.addAll(Arrays.asList("balls", "chain", "k"));
+            c.addAll(Arrays.asList("Q", "C", "Kmax", "scale", "profile")); // the nonlinear kinds' extra parameters
         } else if (t == int.class) {
             for (int i = 0; i < Math.max(m.getNumberOfMats(), m.getNumberOfLinks()); i++) {
                 c.add(i);
@@ -206,6 +207,13 @@ class QueriesLeaveEngineAloneTest {
         m.addPlaneContact("pl", 0, 0.01, 0.001, 2, -0.5, "m3");
         m.addAttractor3D("a", 0.5, 0.0001, "h", "m3");
         m.addSpring3D("hs", 0.5, 0.01, "h", "pi");
+        // one of each of mi.lib's nonlinear laws
+        m.addQuadraticSpringDamper3D("nq", 1, 0.01, 0.001, 0.1, "m3", "mp");
+        m.addCubicSpringDamper1D("nc", 1, 0.01, 0.001, 0.1, "m1", "g1");
+        m.addClippedSpringDamper3D("nk", 1, 0.01, 0.001, 0.5, 0.04, "ms", "o3");
+        m.addPluck3D("np", 0.5, 0.01, 0.001, 0.2, "h", "ms");
+        m.addBow1D("nb", 0.1, 0.01, 0, "m1", "o1");
+        m.addClippedContact3D("nx", 0.5, 0.01, 0.001, 0.5, 0.04, "m3", "ms");
         m.createMatSubset("balls");
         for (int i = 0; i < 8; i++) {
             m.addMass3D("b" + i, 1, new Vect3D(0.3 * (i % 2), 0.3 * ((i / 2) % 2), 5 + 0.3 * (i / 4)),

@@ -1,7 +1,6 @@
 package tactus.audio;
 
 import tactus.PhysicalModel;
-import tactus.internal.model.OptionalLibrary;
 
 /**
  * Makes a {@link PhyUGen} after checking that Minim is on the class path, so that a program run without Minim is
@@ -11,12 +10,21 @@ import tactus.internal.model.OptionalLibrary;
  * itself: the JVM loads Minim's {@code UGen}, the superclass, before any of PhyUGen's code runs.
  */
 public final class AudioLibrary {
+    private static final String PROBE = "ddf.minim.UGen";
+    /** 0 = not checked yet, 1 = present, -1 = absent (a race checks twice, harmlessly). */
+    private static volatile int minimState;
+
     private AudioLibrary() {
     }
 
     /** Whether Minim is on the class path (checked once per JVM). */
     public static boolean isMinimPresent() {
-        return OptionalLibrary.MINIM.isPresent();
+        int s = minimState;
+        if (s == 0) {
+            s = probe() ? 1 : -1;
+            minimState = s;
+        }
+        return s > 0;
     }
 
     /**
@@ -37,8 +45,22 @@ public final class AudioLibrary {
      * @throws IllegalStateException naming Minim, how to add it, and how to step a model without sound
      */
     public static void requireMinim(String call) {
-        OptionalLibrary.MINIM.require(call, "add Minim to the class path (in a sketch: Sketch > Import Library > "
-                + "Minim; with Gradle: implementation 'net.compartmental.code:minim:2.2.2'), or step the model "
-                + "without sound with computeStep()");
+        if (!isMinimPresent()) {
+            throw new IllegalStateException("Tactus: " + call + " needs Minim (the Processing library, or "
+                    + "net.compartmental.code:minim:2.2.2 from Maven), which is not on the class path (" + PROBE
+                    + " was not found); add Minim to the class path (in a sketch: Sketch > Import Library > Minim; "
+                    + "with Gradle: implementation 'net.compartmental.code:minim:2.2.2'), or step the model without "
+                    + "sound with computeStep()");
+        }
+    }
+
+    /** Loads Minim's UGen by name without initialising it; false when it cannot be found. */
+    private static boolean probe() {
+        try {
+            Class.forName(PROBE, false, AudioLibrary.class.getClassLoader());
+            return true;
+        } catch (ClassNotFoundException | LinkageError e) {
+            return false;
+        }
     }
 }

@@ -5,6 +5,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.IntConsumer;
 import tactus.Mass;
 import tactus.PhysicalModel;
+import tactus.linkModuleType;
 import tactus.Vect3D;
 import tactus.paramSystem;
 
@@ -222,7 +223,7 @@ public final class PhysicalModelStepper implements SteppedModel {
         int rule = ruleFor(name, withForce);
         if (rule == RULE_UNSUPPORTED) {
             throw new IllegalArgumentException("resolveLink(\"" + name + "\"): cannot listen to the force of a "
-                    + linkType(name) + "; listen to its elongation instead");
+                    + model.getLinkTypeAt(model.getLinkIndex(name)) + "; listen to its elongation instead");
         }
         if (linkCount == links.length) {
             links = Arrays.copyOf(links, linkCount * 2);
@@ -231,29 +232,17 @@ public final class PhysicalModelStepper implements SteppedModel {
         return linkCount++;
     }
 
-    private String linkType(String name) {
-        return model.getLinkTypeAt(model.getLinkIndex(name)).name();
-    }
-
     /** @return how the tension of a link is read, or RULE_UNSUPPORTED; allocates nothing. */
     private int ruleFor(String name, boolean withForce) {
         if (!withForce) {
             return RULE_ALWAYS;
         }
-        switch (linkType(name)) {
-            case "Spring3D":
-            case "Damper3D":
-            case "SpringDamper3D":
-            case "SpringDamper1D":
-                return RULE_ALWAYS;
-            case "Contact3D":
-                return RULE_COMPRESSED;
-            case "Rope3D":
-            case "Bubble3D":
-                return RULE_STRETCHED;
-            default:
-                return RULE_UNSUPPORTED;
+        // the kind's descriptor says how its tension reads
+        linkModuleType type = model.getLinkTypeAt(model.getLinkIndex(name));
+        if (!type.hasReadableTension()) {
+            return RULE_UNSUPPORTED;
         }
+        return type.actsOnlyCompressed() ? RULE_COMPRESSED : type.actsOnlyStretched() ? RULE_STRETCHED : RULE_ALWAYS;
     }
 
     @Override

@@ -113,14 +113,18 @@ public final class DivergenceGuard {
                 flushed++;
             }
         }
-        LinkBatch oneD = p.batch(LinkKind.SPRING_DAMPER1D);
-        if (isZ && oneD != null) {
+        if (isZ) {
             // a 1D link whose two ends now rest at zero must not remember a previous length (a phantom velocity)
-            for (int j = 0; j < oneD.n; j++) {
-                int a = oneD.a[j], b = oneD.b[j];
-                if (oneD.dp[j] != 0 && x[a] == 0 && x[b] == 0 && px[a] == 0 && px[b] == 0) {
-                    oneD.dp[j] = 0;
-                    flushed++;
+            for (LinkBatch oneD : p.batches) {
+                if (oneD == null || !oneD.kind.isOneDimensional() || !oneD.kind.keepsHistory()) {
+                    continue;
+                }
+                for (int j = 0; j < oneD.n; j++) {
+                    int a = oneD.a[j], b = oneD.b[j];
+                    if (oneD.dp[j] != 0 && x[a] == 0 && x[b] == 0 && px[a] == 0 && px[b] == 0) {
+                        oneD.dp[j] = 0;
+                        flushed++;
+                    }
                 }
             }
         }

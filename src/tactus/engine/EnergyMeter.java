@@ -57,6 +57,13 @@ public final class EnergyMeter {
 
     private static double links(LinkBatch b, StepPlan p) {
         double e = 0;
+        if (b.kind.isNonlinear()) {
+            for (int j = 0; j < b.n; j++) {
+                double a0 = b.aux0.length > 0 ? b.aux0[j] : 0, a1 = b.aux1.length > 0 ? b.aux1[j] : 0;
+                e += b.kind.potential(PlanCompiler.distanceOf(b, j, p), b.k[j], b.len[j], a0, a1);
+            }
+            return e;
+        }
         for (int j = 0; j < b.n; j++) {
             double stretch;
             switch (b.kind) {

@@ -1,5 +1,7 @@
 package tactus.engine;
 
+import java.util.Arrays;
+
 /**
  * The mass-interaction simulation, in algorithmic (per-step) units, addressed by integer ids.
  *
@@ -22,6 +24,13 @@ public final class Engine implements AutoCloseable {
     private final java.util.ArrayList<ContactGroupSpec> groups = new java.util.ArrayList<>();
     private StepPlan plan;
     private boolean topologyDirty = true;
+    // the links of each mass (CSR over link ids), built when first needed after links or masses were added
+    private int[] incidenceStart = new int[1];
+    private int[] incidence = new int[0];
+    private int incidenceLinks = -1;
+    private int incidenceMasses = -1;
+    private long incidenceBuilds;
+    private long compiles;
     /** Counts topology changes, so that a plan prepared on another thread can tell it is still current. */
     private long topologyVersion;
     /** True while a topology change waits for a plan another thread prepares: keep stepping the old plan. */
@@ -35,6 +44,7 @@ public final class Engine implements AutoCloseable {
     private ParallelStepper stepper;
     private java.lang.ref.Cleaner.Cleanable stepperCleanup;
     private int parallelMinElements = 20_000;
+    private StepModeChooser modes = new StepModeChooser(System::nanoTime);
     private StepPlan hookPlan;
     private long hookSteps;
     private final ParallelStepper.StepHook guardHook = this::afterParallelStep;
@@ -227,6 +237,69 @@ public final class Engine implements AutoCloseable {
         return groups.get(gid);
     }
 
+    /**
+     * The live links attached to a mass, in id order. The first call after links or masses were added indexes
+     * them all, in O(masses + links); later calls cost the mass's own links.
+     */
+    public int[] linksOf(int mass) {
+        checkMass(mass);
+        indexIncidence();
+        int n = 0;
+        for (int i = incidenceStart[mass]; i < incidenceStart[mass + 1]; i++) {
+            n += links.alive[incidence[i]] ? 1 : 0;
+        }
+        int[] out = new int[n];
+        n = 0;
+        for (int i = incidenceStart[mass]; i < incidenceStart[mass + 1]; i++) {
+            if (links.alive[incidence[i]]) {
+                out[n++] = incidence[i];
+            }
+        }
+        return out;
+    }
+
+    /** How many times the mass-to-links index was built (for the cost tests). */
+    public long incidenceBuilds() {
+        return incidenceBuilds;
+    }
+
+    /** How many step plans were compiled (for the cost tests). */
+    public long compiles() {
+        return compiles;
+    }
+
+    /** Indexes the links of each mass (ids in order, dead ones included) if links or masses were added since. */
+    private void indexIncidence() {
+        int nl = links.count;
+        int nm = masses.count;
+        if (nl == incidenceLinks && nm == incidenceMasses) {
+            return;
+        }
+        int[] start = new int[nm + 1];
+        for (int l = 0; l < nl; l++) {
+            start[links.a[l] + 1]++;
+            if (links.b[l] != links.a[l]) {
+                start[links.b[l] + 1]++;
+            }
+        }
+        for (int m = 0; m < nm; m++) {
+            start[m + 1] += start[m];
+        }
+        int[] at = new int[start[nm]];
+        int[] next = Arrays.copyOf(start, nm);
+        for (int l = 0; l < nl; l++) {
+            at[next[links.a[l]]++] = l;
+            if (links.b[l] != links.a[l]) {
+                at[next[links.b[l]]++] = l;
+            }
+        }
+        incidenceStart = start;
+        incidence = at;
+        incidenceLinks = nl;
+        incidenceMasses = nm;
+        incidenceBuilds++;
+    }
+
     /** Removes one link. */
     public void removeLink(int id) {
         checkLink(id);
@@ -234,13 +307,12 @@ public final class Engine implements AutoCloseable {
         markTopology();
     }
 
-    /** Removes a mass and every link attached to it. */
+    /** Removes a mass and every link attached to it, in time proportional to its links (see {@link #linksOf}). */
     public void removeMass(int id) {
         checkMass(id);
-        for (int l = 0; l < links.count; l++) {
-            if (links.alive[l] && (links.a[l] == id || links.b[l] == id)) {
-                links.alive[l] = false;
-            }
+        indexIncidence();
+        for (int i = incidenceStart[id]; i < incidenceStart[id + 1]; i++) {
+            links.alive[incidence[i]] = false;
         }
         masses.alive[id] = false;
         if (id == divergedMass) {
@@ -389,6 +461,7 @@ public final class Engine implements AutoCloseable {
                 effectsDirty = false;
             }
         } else if (topologyDirty || plan == null) {
+            compiles++;
             plan = PlanCompiler.compile(masses, links, medium, plan, useStencils(), sweeps, groups);
             topologyDirty = false;
             effectsDirty = false;
@@ -571,15 +644,53 @@ public final class Engine implements AutoCloseable {
         }
         StepPlan p = plan;
         if (stepper != null && n > 1 && p.elementCount() >= parallelMinElements) {
-            hookPlan = p;
-            hookSteps = 0;
-            try {
-                return stepper.run(p, n, guardHook);
-            } finally {
-                steps += hookSteps;
-                hookPlan = null;
+            return stepChoosingMode(p, n);
+        }
+        return stepOnOneThread(p, n);
+    }
+
+    /**
+     * Runs n steps of a plan big enough for the parallel stepper, in the mode the chooser finds faster (a probe
+     * step in a mode, then the rest of the batch in the faster one).
+     */
+    private int stepChoosingMode(StepPlan p, int n) {
+        int ran = 0;
+        while (ran < n && divergedMass < 0) {
+            boolean parallel = modes.parallelNext();
+            int chunk = modes.probing() ? 1 : n - ran;
+            long t0 = modes.now();
+            int r = parallel ? stepInParallel(p, chunk) : stepOnOneThread(p, chunk);
+            modes.record(parallel, r, modes.now() - t0);
+            ran += r;
+            if (r < chunk) {
+                break;   // the divergence guard stopped the batch
             }
         }
+        return ran;
+    }
+
+    private int stepInParallel(StepPlan p, int n) {
+        hookPlan = p;
+        hookSteps = 0;
+        try {
+            return stepper.run(p, n, guardHook);
+        } finally {
+            steps += hookSteps;
+            hookPlan = null;
+        }
+    }
+
+    /** Times the choice between one thread and the parallel stepper with this clock from now on (for tests). */
+    void setModeClock(java.util.function.LongSupplier nanoClock) {
+        modes = new StepModeChooser(nanoClock);
+    }
+
+    /** Steps run on all threads, and on one thread for a plan big enough for them (for tests). */
+    long[] stepsByMode() {
+        return new long[] {modes.parallelSteps(), modes.serialSteps()};
+    }
+
+    private int stepOnOneThread(StepPlan p, int n) {
         int ran = 0;
         try {
             while (ran < n) {
@@ -896,6 +1007,35 @@ public final class Engine implements AutoCloseable {
         refreshLink(id);
     }
 
+    /**
+     * @return parameter {@code i} beyond stiffness, damping and length of a link whose kind has it
+     *     ({@link LinkKind#auxNames()}), per step
+     */
+    public double linkAux(int id, int i) {
+        checkAux(id, i);
+        return i == 0 ? links.aux0[id] : links.aux1[id];
+    }
+
+    /** Sets parameter {@code i} beyond stiffness, damping and length of a link whose kind has it, per step. */
+    public void setLinkAux(int id, int i, double value) {
+        checkAux(id, i);
+        if (i == 0) {
+            links.aux0[id] = value;
+        } else {
+            links.aux1[id] = value;
+        }
+        linkParameterEdits++;
+        refreshLink(id);
+    }
+
+    private void checkAux(int id, int i) {
+        checkLink(id);
+        if (i < 0 || i >= links.kind[id].auxCount()) {
+            throw new IllegalArgumentException("link " + id + " is a " + links.kind[id].label() + ", which has no"
+                    + " parameter " + i + " beyond K, Z and its length");
+        }
+    }
+
     // ------------------------------------------------------------------ state
 
     /** Writes the position of a mass into {@code out[0..2]}. */
@@ -1125,7 +1265,7 @@ public final class Engine implements AutoCloseable {
             return coordinate(a, links.axis[id]) - links.planePosition[id];
         }
         int b = links.b[id];
-        if (links.kind[id] == LinkKind.SPRING_DAMPER1D) {
+        if (links.kind[id].isOneDimensional()) {
             return coordinate(a, 2) - coordinate(b, 2);
         }
         double dx = coordinate(a, 0) - coordinate(b, 0);
@@ -1165,8 +1305,8 @@ public final class Engine implements AutoCloseable {
                 continue;
             }
             for (int j = 0; j < b.n; j++) {
-                boolean tracked = b.kind == LinkKind.SPRING_DAMPER1D || b.prev(j) >= 0;
-                if (tracked && b.kind != LinkKind.PLANE_CONTACT3D && b.kind != LinkKind.ATTRACTOR3D) {
+                boolean tracked = b.kind.isOneDimensional() || b.prev(j) >= 0;
+                if (tracked && b.kind.keepsHistory()) {
                     double d = PlanCompiler.distanceOf(b, j, p);
                     b.setPrev(j, d - (d - b.prev(j)) * ratio);
                 }

@@ -28,6 +28,9 @@ final class LinkBatch {
     final double[] planePosition;
     /** Attraction factor A of each attractor (an empty array in other batches). */
     final double[] attraction;
+    /** The parameters beyond K, Z and the length ({@link LinkKind#auxNames()}); empty arrays for kinds without. */
+    final double[] aux0;
+    final double[] aux1;
     final double[] dp;
     /** For plane contacts: links [axisStart[i], axisStart[i+1]) act on axis i. */
     final int[] axisStart = new int[4];
@@ -57,6 +60,8 @@ final class LinkBatch {
         len = new double[n];
         planePosition = kind == LinkKind.PLANE_CONTACT3D ? new double[n] : NONE;
         attraction = kind == LinkKind.ATTRACTOR3D ? new double[n] : NONE;
+        aux0 = kind.auxCount() > 0 ? new double[n] : NONE;
+        aux1 = kind.auxCount() > 1 ? new double[n] : NONE;
         dp = new double[n];
         runOf = new int[n];
         java.util.Arrays.fill(runOf, -1);
@@ -94,7 +99,7 @@ final class LinkBatch {
     }
 
     /** Sets the parameters of link j, in the batch and in its run if it has one. */
-    void setParams(int j, double kk, double zz, double length, double plane, double attract) {
+    void setParams(int j, double kk, double zz, double length, double plane, double attract, double a0, double a1) {
         paramsVersion++;
         k[j] = kk;
         z[j] = zz;
@@ -103,6 +108,12 @@ final class LinkBatch {
             planePosition[j] = plane;
         } else if (kind == LinkKind.ATTRACTOR3D) {
             attraction[j] = attract;
+        }
+        if (aux0.length > 0) {
+            aux0[j] = a0;
+        }
+        if (aux1.length > 0) {
+            aux1[j] = a1;
         }
         int r = runOf[j];
         if (r >= 0) {

@@ -14,28 +14,9 @@ final class LinkKernels {
     private LinkKernels() {
     }
 
+    /** @return the kernel that steps one batch: the one its kind's descriptor names. */
     static Kernel create(LinkBatch b, StepPlan p) {
-        switch (b.kind) {
-            case SPRING3D:
-                return new Spring(b, p);
-            case DAMPER3D:
-                return new Damper(b, p);
-            case SPRING_DAMPER3D:
-                return new SpringDamper(b, p);
-            case SPRING_DAMPER1D:
-                return new SpringDamper1D(b, p);
-            case ROPE3D:
-            case BUBBLE3D:
-                return new Stretched(b, p);
-            case CONTACT3D:
-                return new Proximity(b, p);
-            case PLANE_CONTACT3D:
-                return new Plane(b, p);
-            case ATTRACTOR3D:
-                return new Attractor(b, p);
-            default:
-                throw new IllegalStateException("no kernel for " + b.kind);
-        }
+        return b.kind.kernel(b, p);
     }
 
     /** A kernel over the links of one batch. */

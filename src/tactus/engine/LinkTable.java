@@ -22,6 +22,9 @@ final class LinkTable {
     double[] planePosition = new double[16];
     double[] attraction = new double[16];
     int[] axis = new int[16];
+    /** The parameters beyond K, Z and the length of the kinds that have them ({@link LinkKind#auxNames()}). */
+    double[] aux0 = new double[16];
+    double[] aux1 = new double[16];
 
     int add(LinkKind k, int massA, int massB, double kk, double zz, double len) {
         ensure(count + 1);
@@ -34,6 +37,8 @@ final class LinkTable {
         stiffness[id] = kk;
         damping[id] = zz;
         length[id] = len;
+        aux0[id] = 0;
+        aux1[id] = 0;
         return id;
     }
 
@@ -57,5 +62,7 @@ final class LinkTable {
         planePosition = Arrays.copyOf(planePosition, c);
         attraction = Arrays.copyOf(attraction, c);
         axis = Arrays.copyOf(axis, c);
+        aux0 = Arrays.copyOf(aux0, c);
+        aux1 = Arrays.copyOf(aux1, c);
     }
 }

@@ -270,7 +270,8 @@ final class PlanCompiler {
 
     /** Writes the parameters of one link into its batch slot. */
     static void fillLink(LinkBatch b, int j, LinkTable lt, int id) {
-        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.planePosition[id], lt.attraction[id]);
+        b.setParams(j, lt.stiffness[id], lt.damping[id], lt.length[id], lt.planePosition[id], lt.attraction[id],
+                lt.aux0[id], lt.aux1[id]);
     }
 
     /**
@@ -291,7 +292,7 @@ final class PlanCompiler {
      */
     static void resetLinkHistory(StepPlan p, int slot) {
         for (LinkBatch b : p.batches) {
-            if (b == null || b.kind == LinkKind.PLANE_CONTACT3D || b.kind == LinkKind.ATTRACTOR3D) {
+            if (b == null || !b.kind.keepsHistory()) {
                 continue;
             }
             for (int j = 0; j < b.n; j++) {
@@ -302,10 +303,10 @@ final class PlanCompiler {
         }
     }
 
-    /** @return the current distance of link slot j (the signed z difference for SpringDamper1D). */
+    /** @return the current distance of link slot j (the signed z difference for a 1-D kind). */
     static double distanceOf(LinkBatch b, int j, StepPlan p) {
         int a = b.a[j], c = b.b[j];
-        if (b.kind == LinkKind.SPRING_DAMPER1D) {
+        if (b.kind.isOneDimensional()) {
             return p.z[a] - p.z[c];
         }
         double dx = p.x[a] - p.x[c], dy = p.y[a] - p.y[c], dz = p.z[a] - p.z[c];

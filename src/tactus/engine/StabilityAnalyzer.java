@@ -272,6 +272,16 @@ public final class StabilityAnalyzer {
             if (b.kind == LinkKind.ATTRACTOR3D) {
                 double l = b.len[j] > 0 ? b.len[j] : PlanCompiler.distanceOf(b, j, p);
                 c = l > 0 ? 2 * Math.abs(b.attraction[j]) / (l * l * l) : 0;
+            } else if (b.kind.isNonlinear()) {
+                // the descriptor's bound: the largest slope the law reaches, or its linear part where it has none
+                double a0 = b.aux0.length > 0 ? b.aux0[j] : 0, a1 = b.aux1.length > 0 ? b.aux1[j] : 0;
+                double kk = Assumption.linkK(assumed, b, j);
+                double k = b.kind.boundStiffness(kk, a0, a1);
+                double z = b.kind.boundDamping(kk, b.z[j], a0, a1);
+                if (z < 0 && negativeLink < 0) {
+                    negativeLink = b.id[j];
+                }
+                c = coefficient(k, z);
             } else {
                 double k = b.kind.hasStiffness() ? Assumption.linkK(assumed, b, j) : 0;
                 double z = b.kind.hasDamping() ? b.z[j] : 0;

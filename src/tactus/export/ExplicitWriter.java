@@ -49,6 +49,23 @@ final class ExplicitWriter {
             "with { law(d2) = select2((d2 > lim*lim) & (d2 != 0), 0, 0 - a/(d2*sqrt(d2))); };",
             "// SpringDamper1D, along z on the signed difference e = z1 - z2 (e0: its value now)",
             "sd1(k, z, l0, e0, z1, z2) = 0, 0, 0 - f, 0, 0, f with { e = z1 - z2; f = k*(e - l0) + z*(e - prev(e0, e)); };",
+            "// mi.lib's nonlinear laws in 3-D: its 1-D function f(x1, x2) fed with (d - l0, 0) (a collision: with (0, d)),",
+            "// so its delayed inputs give the damper d - d(n-1); its force on mass 1 (2) acts along u",
+            "nlAlong(f, l0, x1, y1, z1, x2, y2, z2) = link(law, x1, y1, z1, x2, y2, z2)",
+            "with { law(d2) = select2(d > 0, 0, ((d - l0, 0) : f : (_, !))/d) with { d = sqrt(d2); }; };",
+            "nlApart(f, x1, y1, z1, x2, y2, z2) = link(law, x1, y1, z1, x2, y2, z2)",
+            "with { law(d2) = select2(d > 0, 0, ((0, d) : f : (!, _))/d) with { d = sqrt(d2); }; };",
+            "// Bow3D: mi.lib's nlBow law F(w) on the relative velocity w = (X1 - X1') - (X2 - X2'), against w",
+            "bow3(z, scale, profile, ex, ey, ez, x1, y1, z1, x2, y2, z2) = push(wx, wy, wz, s)",
+            "with {",
+            "  dx = x1 - x2; dy = y1 - y2; dz = z1 - z2;",
+            "  wx = dx - prev(ex, dx); wy = dy - prev(ey, dy); wz = dz - prev(ez, dz);",
+            "  w = sqrt(wx*wx + wy*wy + wz*wz);",
+            "  tip = scale/3; zEnd = z/3;",
+            "  f = select2(profile > 0, select2(w < tip, select2(w < scale, 0, tip*z - zEnd*w), (z - zEnd)*w),",
+            "    0.63*z*w*exp(-4*pow(w/scale, 2) + 0.5));",
+            "  s = select2(w > 0, 0, 0 - f/w);",
+            "};",
             "// a plane across one axis at pos, pushing toward its positive side; q0: the mass's coordinate now",
             "plane(k, z, l0, pos, q0, q) = select2(t < 0, 0, 0 - k*t - z*(q - prev(q0, q))) with { t = q - pos - l0; };",
             "");
@@ -127,6 +144,9 @@ final class ExplicitWriter {
     private static String linkBlock(Scene s, Params p, int j) {
         Scene.LinkRow l = s.links[j];
         String d0 = lit(distance(s.masses[l.a].x0, s.masses[l.b].x0));
+        if (l.type.isNonlinear() && !l.type.isOneDimensional()) {
+            return nonlinear3D(s, p, j, d0);
+        }
         switch (l.type) {
             case Spring3D:
                 return "spring(" + p.linkK[j] + ", " + p.linkL[j] + ")";
@@ -147,6 +167,23 @@ final class ExplicitWriter {
             default:
                 throw new FaustExportException("interaction \"" + l.name + "\"", "no Faust form for " + l.type);
         }
+    }
+
+    /**
+     * A 3-D nonlinear kind: mi.lib's own function, named with its arguments by the kind's descriptor, applied along
+     * the distance ({@code nlAlong}, or {@code nlApart} for a collision); the bow, whose mi.lib function is 1-D in
+     * velocity, as its law on the relative velocity vector ({@code bow3}).
+     */
+    private static String nonlinear3D(Scene s, Params p, int j, String d0) {
+        Scene.LinkRow l = s.links[j];
+        double[] a = s.masses[l.a].x0, b = s.masses[l.b].x0;
+        if (l.type.miLibFunction() == null) {
+            return "bow3(" + p.linkZ[j] + ", " + lit(l.extra[0]) + ", " + lit(l.extra[1]) + ", " + lit(a[0] - b[0])
+                    + ", " + lit(a[1] - b[1]) + ", " + lit(a[2] - b[2]) + ")";
+        }
+        boolean collision = l.type.miLibFunction().startsWith("nlCollision");
+        String f = MiLibWriter.call(l, p, j) + (collision ? "0.0, 0 - " + d0 : p.linkL[j] + " - " + d0 + ", 0.0") + ")";
+        return collision ? "nlApart(" + f + ")" : "nlAlong(" + f + ", " + p.linkL[j] + ")";
     }
 
     private static double distance(double[] a, double[] b) {

@@ -16,6 +16,9 @@ import tactus.matModuleType;
  * <li>{@code Ground1D}: {@code mi.ground(z0)};</li>
  * <li>{@code SpringDamper1D}: {@code mi.springDamper(K, Z, ...)} ({@code mi.spring} without damping), with the rest
  * length subtracted from mass 1's position first (mi.lib's springs have none);</li>
+ * <li>mi.lib's nonlinear interactions in 1-D ({@code QuadraticSpringDamper1D}, {@code CubicSpringDamper1D},
+ * {@code ClippedSpringDamper1D}, {@code Pluck1D}, {@code Bow1D}, {@code ClippedContact1D}): the mi.lib function
+ * their descriptor names ({@code mi.nlSpringDamper2}, ...), with the arguments in mi.lib's order;</li>
  * <li>{@code Contact3D} between two masses on the same vertical line: {@code mi.collision(K, Z, r, ...)} with the
  * lower mass first; {@code PlaneContact3D} across z: {@code mi.collision} against the plane's coordinate.</li>
  * </ul>
@@ -35,7 +38,8 @@ final class MiLibWriter {
             }
         }
         for (Scene.LinkRow l : s.links) {
-            if (l.type == linkModuleType.SpringDamper1D || l.type == linkModuleType.PlaneContact3D) {
+            if (l.type == linkModuleType.SpringDamper1D || l.type == linkModuleType.PlaneContact3D
+                    || (l.type.isNonlinear() && l.type.isOneDimensional())) {
                 continue;
             }
             if (l.type == linkModuleType.Contact3D) {
@@ -77,6 +81,9 @@ final class MiLibWriter {
                     block = "(-(" + p.linkL[j] + "), _) : " + block;
                 }
                 net.addLink(block, new int[] {pos[l.a], pos[l.b]}, new int[] {port[l.a], port[l.b]});
+            } else if (l.type.isNonlinear()) {
+                net.addLink(nonlinearBlock(s, p, j), new int[] {pos[l.a], pos[l.b]},
+                        new int[] {port[l.a], port[l.b]});
             } else if (l.type == linkModuleType.Contact3D) {
                 boolean aLow = s.masses[l.a].x0[2] < s.masses[l.b].x0[2];
                 int lo = aLow ? l.a : l.b;
@@ -105,6 +112,49 @@ final class MiLibWriter {
             boolean moves = in.axis == 2 && s.masses[i].type != matModuleType.Ground1D;
             net.addInput(moves ? port[i] : -1, s.forceScale());
         }
+    }
+
+    /**
+     * One of mi.lib's nonlinear interactions, written from its descriptor: the function and its arguments in mi.lib's
+     * order, then the initial delayed positions. A kind with a rest length has it subtracted from mass 1's position
+     * first, as for the linear spring; a collision adds its threshold to mass 1's position inside mi.lib, so its
+     * first delayed position is minus mass 1's position plus the threshold.
+     */
+    private static String nonlinearBlock(Scene s, Params p, int j) {
+        Scene.LinkRow l = s.links[j];
+        boolean collision = l.type.miLibFunction().startsWith("nlCollision");
+        boolean rest = !collision && l.l0 != 0;
+        StringBuilder b = new StringBuilder(call(l, p, j));
+        double xa = s.masses[l.a].x0[2];
+        String za = collision ? neg(add(lit(xa), p.linkL[j])) : rest ? sub(p.linkL[j], lit(xa)) : lit(-xa);
+        b.append(za).append(", ").append(lit(-s.masses[l.b].x0[2])).append(')');
+        return rest ? "(-(" + p.linkL[j] + "), _) : " + b : b.toString();
+    }
+
+    /**
+     * @return the start of a call of the kind's mi.lib function, {@code "mi.nlPluck(K, scale, Z, "}, its arguments in
+     *     mi.lib's order as the descriptor names them, ready for the two initial delayed positions
+     */
+    static String call(Scene.LinkRow l, Params p, int j) {
+        String[] extraNames = l.type.extraParameterNames();
+        StringBuilder b = new StringBuilder("mi.").append(l.type.miLibFunction()).append('(');
+        for (String arg : l.type.miLibArguments()) {
+            switch (arg) {
+                case "K":
+                    b.append(p.linkK[j]);
+                    break;
+                case "Z":
+                    b.append(p.linkZ[j]);
+                    break;
+                case "dist":
+                    b.append(p.linkL[j]);
+                    break;
+                default:
+                    b.append(lit(l.extra[java.util.Arrays.asList(extraNames).indexOf(arg)]));
+            }
+            b.append(", ");
+        }
+        return b.toString();
     }
 
     private static String massBlock(Scene s, Params p, int i) {

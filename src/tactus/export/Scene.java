@@ -40,6 +40,8 @@ final class Scene {
         double attraction;
         int axis = -1;
         double planePos;
+        /** The parameters beyond K, Z and the length of a nonlinear kind, per step, in its descriptor's order. */
+        double[] extra = new double[0];
     }
 
     final int fs;
@@ -154,6 +156,21 @@ final class Scene {
         r.name = model.getLinkNameAt(i);
         r.type = model.getLinkTypeAt(i);
         r.a = model.getLinkMat1IdxAt(i);
+        if (r.type.isNonlinear()) {
+            // the kind's descriptor names its parameters and how each converts to a per-step value
+            r.b = model.getLinkMat2IdxAt(i);
+            r.k = stiffnessIn(model.getLinkStiffnessAt(i));
+            r.z = dampingIn(model.getLinkDampingAt(i));
+            r.l0 = model.getLinkDRestAt(i);
+            String[] names = r.type.extraParameterNames();
+            r.extra = new double[names.length];
+            for (int k = 0; k < names.length; k++) {
+                double v = model.getInteractionAt(i).getExtraParameter(names[k]);
+                int power = r.type.extraParameterRatePower(k);
+                r.extra[k] = !real || power == 0 ? v : power == 1 ? v / fs : v / ((double) fs * fs);
+            }
+            return r;
+        }
         switch (r.type) {
             case PlaneContact3D:
                 r.k = stiffnessIn(model.getLinkStiffnessAt(i));

@@ -10,6 +10,7 @@ import tactus.haptics.emulator.Hand3D;
 import tactus.haptics.emulator.HaplyConnection;
 import tactus.haptics.emulator.InverseServiceEmulator;
 import tactus.haptics.emulator.SimulatedInverse3;
+import tactus.haptics.inverse.Inverse3Choice;
 import tactus.haptics.inverse.Inverse3Device;
 import tactus.haptics.inverse.InverseState;
 import tactus.haptics.pantograph.PantographDevice;
@@ -44,6 +45,13 @@ import tactus.haptics.session.StatusBand;
 public final class HapticSession3D implements AutoCloseable {
     /** The real-time priority each loop asks for (Linux SCHED_FIFO; refused quietly where not allowed). */
     public static final int REALTIME_PRIORITY = 50;
+    /**
+     * The link timeout of a loop on the in-process emulator, in milliseconds: the emulator answers from threads of
+     * the sketch's own JVM, which a loaded machine can hold back for hundreds of milliseconds while the loop's
+     * real-time thread ticks on; that is no device switched off, so the loop waits longer than the 500 ms it gives
+     * a real device.
+     */
+    public static final int EMULATED_LINK_TIMEOUT_MS = 5000;
     /** Period of the idle tour's lap, in seconds. */
     public static final double TOUR_PERIOD = 12.0;
 
@@ -51,6 +59,9 @@ public final class HapticSession3D implements AutoCloseable {
     private final HapticDevice device;
     private final Inverse3Device inverse;           // null for a 2DIY board
     private final InverseServiceEmulator emulator;  // null on real hardware
+    private final SimulatedInverse3 sim;            // this session's emulated device, or null
+    private boolean ownsEmulator = true;            // false for the second hand of a pair (the first closes it)
+    private boolean mirrored;                       // the emulated hand follows the mouse mirrored left-right
     private final HaplyConnection board;            // null unless a 2DIY board
     private final String banner;
     private final double[] centre = new double[3];  // device metres
@@ -72,6 +83,7 @@ public final class HapticSession3D implements AutoCloseable {
         this.device = device;
         this.inverse = inverse;
         this.emulator = emulator;
+        this.sim = emulator == null ? null : inverse != null ? emulator.device(inverse.deviceId()) : emulator.device();
         this.board = board;
         this.banner = banner;
         System.arraycopy(centre, 0, this.centre, 0, 3);
@@ -121,6 +133,63 @@ public final class HapticSession3D implements AutoCloseable {
             c.close();
         }
         return openEmulated(app, firstSentence(why));
+    }
+
+    /**
+     * Opens the Inverse3 this choice names (by id, index or handedness) on the Inverse Service at the address of
+     * the property {@code tactus.haptics.inverse.uri} (default {@code ws://localhost:10001}), guarded, with no
+     * fallback: for a second device, or one hand of two.
+     *
+     * @throws HaplyLinkException if the service is not there or does not list that device (the message lists those
+     *                            it has)
+     */
+    public static HapticSession3D open(PApplet app, Inverse3Choice which) {
+        URI uri = URI.create(System.getProperty("tactus.haptics.inverse.uri", "ws://localhost:10001"));
+        Inverse3Device d = Inverse3Device.openGuarded(uri, HapticSession.CONNECT_MS, which);
+        d.setReconnect(HapticSession.RECONNECT_MS);
+        return onInverse(app, d, null, "Haply " + d.kind() + " " + d.deviceId() + handed(d) + " through the Inverse "
+                + "Service at " + uri);
+    }
+
+    /**
+     * Opens two hands on the in-process emulator serving two Inverse3s: element 0 drives the left-handed one
+     * (id {@value #LEFT_ID}), element 1 the right-handed one ({@link InverseServiceEmulator#DEVICE_ID}), each with
+     * its own connection, loop and emulated hand; the mouse (or the idle tour) moves the right hand, and the left
+     * hand as its mirror image. Closing element 0 closes the emulator too.
+     */
+    public static HapticSession3D[] openEmulatedPair(PApplet app) {
+        double[] h = SimulatedInverse3.HOME;
+        SimulatedInverse3 right = new SimulatedInverse3();
+        right.setHand(Hand3D.following(h[0], h[1], h[2], 300, 3));
+        SimulatedInverse3 left = new SimulatedInverse3();
+        left.setHand(Hand3D.following(h[0], h[1], h[2], 300, 3));
+        InverseServiceEmulator emu = InverseServiceEmulator.start(0, right);
+        emu.addInverse3(LEFT_ID, "left", left, true);
+        HapticSession3D l = null;
+        try {
+            Inverse3Device dl = Inverse3Device.open(emu.uri(), 5000, Inverse3Choice.byHandedness("left"));
+            l = onInverse(app, dl, emu, "Emulated left-handed Inverse3 " + dl.deviceId() + ", the mouse (mirrored) is your "
+                    + "left hand");
+            l.mirrored = true;
+            Inverse3Device dr = Inverse3Device.open(emu.uri(), 5000, Inverse3Choice.byHandedness("right"));
+            HapticSession3D r = onInverse(app, dr, emu, "Emulated right-handed Inverse3 " + dr.deviceId() + ", the mouse is "
+                    + "your right hand");
+            r.ownsEmulator = false;
+            return new HapticSession3D[] {l, r};
+        } catch (RuntimeException e) {
+            if (l != null) {
+                l.close();
+            }
+            emu.close();
+            throw e;
+        }
+    }
+
+    /** The id of the left-handed Inverse3 of {@link #openEmulatedPair}. */
+    public static final String LEFT_ID = "1EF7";
+
+    private static String handed(Inverse3Device d) {
+        return d.handedness() == null ? "" : " (" + d.handedness() + "-handed)";
     }
 
     /** Opens the in-process Inverse Service emulator with the mouse as the hand, even if a device is there. */
@@ -190,8 +259,8 @@ public final class HapticSession3D implements AutoCloseable {
 
     /**
      * Stops the current loop, if any, and makes a new one (not started) on the model's avatar, with this
-     * session's mapping, a force gain of 1 N per model force unit ({@link HapticLoop#setForceGain}) and a
-     * real-time request.
+     * session's mapping, a force gain of 1 N per model force unit ({@link HapticLoop#setForceGain}), a
+     * real-time request and, on the emulator, a link timeout of {@value #EMULATED_LINK_TIMEOUT_MS} ms.
      */
     public HapticLoop attach(PhysicalModel model, String avatar) {
         return attach(new PhysicalModelAvatar(model, avatar));
@@ -210,6 +279,9 @@ public final class HapticSession3D implements AutoCloseable {
         l.setWorkspaceMapping(mapping);
         l.setForceGain(1);
         l.setRealtimePriority(REALTIME_PRIORITY);
+        if (emulator != null) {
+            l.setLinkTimeoutMillis(EMULATED_LINK_TIMEOUT_MS);
+        }
         loop = l;
         return l;
     }
@@ -352,7 +424,7 @@ public final class HapticSession3D implements AutoCloseable {
      * has moved (x and y; the depth swings slowly), and tours the workspace until then.
      */
     public void pre() {
-        if (app == null || emulator == null) {
+        if (app == null || sim == null) {
             return;
         }
         double t = hand.tourSeconds(System.nanoTime());
@@ -371,7 +443,10 @@ public final class HapticSession3D implements AutoCloseable {
         for (int i = 0; i < 3; i++) {
             tmpDevice[i] = Math.max(centre[i] - halfSize[i], Math.min(centre[i] + halfSize[i], tmpDevice[i]));
         }
-        emulator.device().hand().setTarget(tmpDevice[0], tmpDevice[1], tmpDevice[2]);
+        if (mirrored) {
+            tmpDevice[0] = 2 * centre[0] - tmpDevice[0];
+        }
+        sim.hand().setTarget(tmpDevice[0], tmpDevice[1], tmpDevice[2]);
     }
 
     /**
@@ -412,7 +487,7 @@ public final class HapticSession3D implements AutoCloseable {
         if (board != null) {
             board.close();
         }
-        if (emulator != null) {
+        if (emulator != null && ownsEmulator) {
             emulator.close();
         }
     }

@@ -3,6 +3,7 @@ package tactus.io;
 import java.util.Arrays;
 import java.util.List;
 import tactus.PhysicalModel;
+import tactus.linkModuleType;
 
 /**
  * The module type names of the file format, in the order the paper's engine writes its groups, and
@@ -13,10 +14,31 @@ final class FileTypes {
     static final List<String> MASS_GROUPS = Arrays.asList("Ground1D", "Ground3D", "HapticInput3D", "Mass1D",
             "Mass2DPlane", "Mass3D", "Mass3DSimple", "Osc1D", "Osc3D", "PosInput3D");
     /** Interaction groups of the {@code Link} section; Attractor3D is a Tactus addition at the end. */
-    static final List<String> LINK_GROUPS = Arrays.asList("Damper3D", "Bubble3D", "Contact3D", "PlaneContact3D",
-            "Rope3D", "Spring3D", "SpringDamper1D", "SpringDamper3D", "Attractor3D");
+    static final List<String> LINK_GROUPS = linkGroups();
 
     private FileTypes() {
+    }
+
+    /** The paper's groups, then the Tactus additions: Attractor3D and every kind with extra parameters, by type. */
+    private static List<String> linkGroups() {
+        List<String> g = new java.util.ArrayList<>(Arrays.asList("Damper3D", "Bubble3D", "Contact3D",
+                "PlaneContact3D", "Rope3D", "Spring3D", "SpringDamper1D", "SpringDamper3D", "Attractor3D"));
+        for (linkModuleType t : linkModuleType.values()) {
+            if (t.isNonlinear()) {
+                g.add(t.name());
+            }
+        }
+        return java.util.Collections.unmodifiableList(g);
+    }
+
+    /** @return true for a type whose parameters beyond K, Z and the length are named by its descriptor. */
+    static boolean hasExtraParameters(String type) {
+        return LINK_GROUPS.contains(type) && linkModuleType.valueOf(type).isNonlinear();
+    }
+
+    /** @return the names of the parameters of a type beyond K, Z and the length, as attributes of the file. */
+    static String[] extraParameters(String type) {
+        return linkModuleType.valueOf(type).extraParameterNames();
     }
 
     /** @return the file type name of mass {@code i} (works whether the model returns a String or an enum). */

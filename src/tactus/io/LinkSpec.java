@@ -14,6 +14,8 @@ final class LinkSpec {
     int orientation;
     double planePosition;
     double attraction;
+    /** The parameters beyond K, Z and the length of a nonlinear kind, in the order of its descriptor. */
+    double[] extra = new double[0];
     /** Where it came from: the element's name and 1-based line, for error messages. */
     String element;
     int line = -1;

@@ -7,6 +7,7 @@ import java.util.Set;
 import tactus.PhysicalModel;
 import tactus.StabilityPolicy;
 import tactus.Vect3D;
+import tactus.linkModuleType;
 
 /**
  * Adds the content of a {@link ModelFile} to a model, all or nothing: it checks names and
@@ -176,6 +177,11 @@ final class ModelApplier {
         }
 
         private void addLink(LinkSpec s) {
+            if (FileTypes.hasExtraParameters(s.type)) {
+                m.addInteraction(linkModuleType.valueOf(s.type), s.name, s.length, s.stiffness, s.damping, s.extra,
+                        s.m1, s.m2);
+                return;
+            }
             switch (s.type) {
                 case "Spring3D":
                     m.addSpring3D(s.name, s.length, s.stiffness, s.m1, s.m2);

@@ -83,6 +83,13 @@ final class ModelCapture {
                 s.stiffness = model.getLinkStiffnessAt(i);
                 s.damping = model.getLinkDampingAt(i);
         }
+        if (FileTypes.hasExtraParameters(s.type)) {
+            String[] names = FileTypes.extraParameters(s.type);
+            s.extra = new double[names.length];
+            for (int k = 0; k < names.length; k++) {
+                s.extra[k] = model.getInteractionAt(i).getExtraParameter(names[k]);
+            }
+        }
         return s;
     }
 }

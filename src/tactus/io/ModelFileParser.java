@@ -145,6 +145,13 @@ final class ModelFileParser {
                     l.planePosition = number(e, "position");
                 }
         }
+        if (FileTypes.hasExtraParameters(type)) {
+            String[] names = FileTypes.extraParameters(type);
+            l.extra = new double[names.length];
+            for (int k = 0; k < names.length; k++) {
+                l.extra[k] = number(e, names[k]);
+            }
+        }
         return l;
     }
 

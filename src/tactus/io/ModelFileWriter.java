@@ -114,6 +114,12 @@ final class ModelFileWriter {
         add(a, "m1", l.m1);
         add(a, "m2", l.m2);
         add(a, "name", l.name);
+        if (FileTypes.hasExtraParameters(l.type)) {
+            String[] names = FileTypes.extraParameters(l.type);
+            for (int k = 0; k < names.length; k++) {
+                add(a, names[k], num(l.extra[k]));
+            }
+        }
         if (plane) {
             add(a, "orientation", Integer.toString(l.orientation));
             add(a, "position", num(l.planePosition));

@@ -64,22 +64,7 @@ public final class RenderStyle {
 
     /** {@return the default style of an interaction type, as a new object} */
     public static LinkStyle defaultLink(linkModuleType type) {
-        switch (type) {
-            case Damper3D:
-            case Spring3D:
-                return new LinkStyle(30, 100, 100, 255, 2);
-            case SpringDamper3D:
-                return new LinkStyle(30, 250, 250, 255, 2);
-            case SpringDamper1D:
-                return new LinkStyle(50, 255, 250, 255, 2);
-            case Contact3D:
-                return new LinkStyle(255, 100, 100, 0, 2);
-            case Bubble3D:
-                return new LinkStyle(30, 100, 100, 0, 2);
-            case Rope3D:
-                return new LinkStyle(0, 255, 100, 255, 2);
-            default:
-                return new LinkStyle(125, 125, 125, 0, 2);
-        }
+        int c = type.defaultColor(); // the kind's descriptor: 0xAARRGGBB, alpha 0 for the kinds drawn without a line
+        return new LinkStyle((c >> 16) & 0xFF, (c >> 8) & 0xFF, c & 0xFF, (c >>> 24) & 0xFF, 2);
     }
 }

@@ -8,9 +8,30 @@
 //!   SENT <k> <fx> <fy> <fz>
 //!   POS <k> <x> <y> <z>
 //!   DONE
+//!   CRATE-ERROR <target>: <message>           (and CRATE-WARN: whatever the crate logs at those levels)
 use haply::device_model::*;
 use haply::HaplyDevice;
 use std::time::{Duration, Instant};
+
+/// Prints every warning and error the crate logs as a line "CRATE-<LEVEL> <target>: <message>", so that the test
+/// sees the parse errors the crate would otherwise hide behind its fallback parsing.
+struct Loud;
+
+impl log::Log for Loud {
+    fn enabled(&self, m: &log::Metadata) -> bool {
+        m.level() <= log::Level::Warn
+    }
+
+    fn log(&self, r: &log::Record) {
+        if self.enabled(r.metadata()) {
+            println!("CRATE-{} {}: {}", r.level(), r.target(), r.args());
+        }
+    }
+
+    fn flush(&self) {}
+}
+
+static LOUD: Loud = Loud;
 
 fn fail(msg: &str) -> ! {
     eprintln!("haply-probe: {}", msg);
@@ -19,6 +40,9 @@ fn fail(msg: &str) -> ! {
 
 #[tokio::main]
 async fn main() {
+    if log::set_logger(&LOUD).is_ok() {
+        log::set_max_level(log::LevelFilter::Warn);
+    }
     let args: Vec<String> = std::env::args().collect();
     if args.len() != 3 {
         fail("usage: haply-probe PORT N");

@@ -130,4 +130,63 @@ class HapticSession3DTest {
         pm.init();
         return pm;
     }
+
+    @Test
+    void anEmulatedSessionsLoopOutlivesAnEmulatorHeldBackForASecond() {
+        try (HapticSession3D s = HapticSession3D.openEmulated(null)) {
+            PhysicalModel pm = new PhysicalModel(1000);
+            pm.addHapticInput3D("avatar", s.home(), 1);
+            pm.init();
+            HapticLoop loop = s.attach(pm, "avatar");
+            loop.start();
+            long t = System.nanoTime() + 20_000_000_000L;
+            while (loop.ticks() < 100 && System.nanoTime() < t) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            s.emulator().setMute(true);     // no answers for a second: what a loaded machine can do to it
+            LockSupport.parkNanos(1_000_000_000L);
+            s.emulator().setMute(false);
+            long ticks = loop.ticks();
+            while (loop.ticks() < ticks + 100 && System.nanoTime() < t) {
+                LockSupport.parkNanos(1_000_000);
+            }
+            assertEquals(null, loop.failure(), "the loop on the emulator waits longer than 500 ms for its answers");
+            assertTrue(loop.isRunning());
+        }
+    }
+
+    @Test
+    void aPairOfEmulatedHandsDrivesTwoDevicesEachThroughItsOwnSession() {
+        HapticSession3D[] pair = HapticSession3D.openEmulatedPair(null);
+        try {
+            assertEquals("left", ((Inverse3Device) pair[0].device()).handedness());
+            assertEquals("right", ((Inverse3Device) pair[1].device()).handedness());
+            assertEquals(HapticSession3D.LEFT_ID, ((Inverse3Device) pair[0].device()).deviceId());
+            assertEquals(InverseServiceEmulator.DEVICE_ID, ((Inverse3Device) pair[1].device()).deviceId());
+            assertTrue(pair[0].emulator() == pair[1].emulator(), "one emulator serves both");
+            // each emulated hand is moved apart; each session's model avatar follows its own hand
+            double[] h = SimulatedInverse3.HOME;
+            pair[0].emulator().device(HapticSession3D.LEFT_ID).hand().setTarget(h[0] - 0.05, h[1], h[2]);
+            pair[1].emulator().device().hand().setTarget(h[0] + 0.05, h[1], h[2]);
+            PhysicalModel pm = new PhysicalModel(1000);
+            pm.addHapticInput3D("left", pair[0].home(), 1);
+            pm.addHapticInput3D("right", pair[1].home(), 1);
+            pm.init();
+            HapticLoop r = pair[1].attach(pm, "right");
+            HapticLoop l = pair[0].attach(pm, "left");
+            l.setMode(HapticLoop.Mode.AUDIO);
+            r.start();
+            l.start();
+            long t = System.nanoTime() + 20_000_000_000L;
+            while ((pm.getMatPosition("right").x - pm.getMatPosition("left").x) < 50 && System.nanoTime() < t) {
+                LockSupport.parkNanos(5_000_000);
+            }
+            assertTrue(pm.getMatPosition("right").x - pm.getMatPosition("left").x >= 50,
+                    "the avatars are 0.1 m apart in the device, some hundred pixels on screen: "
+                    + pm.getMatPosition("left") + " " + pm.getMatPosition("right"));
+        } finally {
+            pair[1].close();
+            pair[0].close();
+        }
+    }
 }

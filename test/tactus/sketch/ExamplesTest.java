@@ -233,7 +233,7 @@ class ExamplesTest {
         }
     }
 
-    private static String pdeSource(Path dir) throws IOException {
+    static String pdeSource(Path dir) throws IOException {
         try (Stream<Path> s = Files.list(dir)) {
             StringBuilder all = new StringBuilder();
             for (Path p : s.filter(p -> p.toString().endsWith(".pde")).sorted().collect(Collectors.toList())) {
@@ -243,7 +243,7 @@ class ExamplesTest {
         }
     }
 
-    private static void copyTree(Path from, Path to) throws IOException {
+    static void copyTree(Path from, Path to) throws IOException {
         try (Stream<Path> s = Files.walk(from)) {
             for (Path p : s.collect(Collectors.toList())) {
                 Path target = to.resolve(from.relativize(p).toString());
@@ -256,7 +256,7 @@ class ExamplesTest {
         }
     }
 
-    private static void deleteTree(Path root) throws IOException {
+    static void deleteTree(Path root) throws IOException {
         if (!Files.exists(root)) {
             return;
         }

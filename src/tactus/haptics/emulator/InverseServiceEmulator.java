@@ -111,6 +111,21 @@ public final class InverseServiceEmulator implements AutoCloseable {
     private final double[] tmpP = new double[3];
     private final double[] tmpV = new double[3];
     private final double[] tmpF = new double[3];
+    private final List<Listed> listed = new CopyOnWriteArrayList<>();   // in the order the service lists them
+    private volatile java.util.function.UnaryOperator<String> rewrite;
+
+    /** One Inverse3 the emulator lists: its id, handedness and simulation. */
+    private static final class Listed {
+        final String id;
+        final String handedness;
+        final SimulatedInverse3 sim;
+
+        Listed(String id, String handedness, SimulatedInverse3 sim) {
+            this.id = id;
+            this.handedness = handedness;
+            this.sim = sim;
+        }
+    }
 
     private InverseServiceEmulator(ServerSocket server, SimulatedInverse3 device) {
         this.server = server;
@@ -119,6 +134,48 @@ public final class InverseServiceEmulator implements AutoCloseable {
         acceptor.setDaemon(true);
         this.ticker = new Thread(this::tick, "tactus-inverse-emulator-device");
         ticker.setDaemon(true);
+        listed.add(new Listed(DEVICE_ID, "right", device));
+    }
+
+    /**
+     * Lists another Inverse3 beside the first ({@link #DEVICE_ID}, right-handed): with this id (not yet listed),
+     * handedness ("left" or "right") and simulation, before the others if first is true, else after them. Its
+     * forces are applied as they come (the hold, exclusivity and lapse settings concern the first device only).
+     */
+    public void addInverse3(String id, String handedness, SimulatedInverse3 sim, boolean first) {
+        if (id == null || id.isEmpty() || sim == null || !("left".equals(handedness) || "right".equals(handedness))) {
+            throw new IllegalArgumentException("InverseServiceEmulator.addInverse3: need an id, \"left\" or \"right\" "
+                    + "and a simulated device, got " + id + ", " + handedness + ", " + sim);
+        }
+        for (Listed l : listed) {
+            if (l.id.equals(id)) {
+                throw new IllegalArgumentException("InverseServiceEmulator.addInverse3: the id " + id + " is listed already");
+            }
+        }
+        if (first) {
+            listed.add(0, new Listed(id, handedness, sim));
+        } else {
+            listed.add(new Listed(id, handedness, sim));
+        }
+    }
+
+    /** The simulated Inverse3 listed with this id, or null. */
+    public SimulatedInverse3 device(String id) {
+        for (Listed l : listed) {
+            if (l.id.equals(id)) {
+                return l.sim;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * Passes every message the emulator sends over the WebSocket (snapshots and state frames) through this function
+     * first (null: none), to inject faults a real service might show: text that is not JSON, null fields, absurd
+     * numbers, unknown device types.
+     */
+    public void setRewrite(java.util.function.UnaryOperator<String> f) {
+        rewrite = f;
     }
 
     /** Starts an emulator with a fresh {@link SimulatedInverse3} on this port of localhost (0: any free port). */
@@ -386,12 +443,12 @@ public final class InverseServiceEmulator implements AutoCloseable {
         connections.add(c);
         connectionsOpened++;
         try {
-            c.sendText(frame(sessionIds.getOrDefault(c, 0L), true, true));
+            c.sendText(rewritten(frame(sessionIds.getOrDefault(c, 0L), true, true)));
             boolean first = true;
             for (String m = c.readText(); m != null; m = c.readText()) {
                 String reply = handle(c, m, first);
                 if (!mute) {
-                    c.sendText(reply);
+                    c.sendText(rewritten(reply));
                 }
                 first = false;
             }
@@ -404,6 +461,11 @@ public final class InverseServiceEmulator implements AutoCloseable {
             c.close();
             ended(c);
         }
+    }
+
+    private String rewritten(String frame) {
+        java.util.function.UnaryOperator<String> f = rewrite;
+        return f == null ? frame : f.apply(frame);
     }
 
     /** A session's connection ended: its force goes to zero (unless kept), and it owns the device no more. */
@@ -479,6 +541,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
     /** Handles one message and returns the frame that answers it. */
     synchronized String handle(WebSocketServerConnection from, String message, boolean first) throws IOException {
         messages++;
+        String[] commandFor = new String[1];
         boolean full = false;
         boolean session = false;
         boolean profile = false;
@@ -514,8 +577,13 @@ public final class InverseServiceEmulator implements AutoCloseable {
                         }
                     } else if ("inverse3".equals(name) && t == JsonToken.START_ARRAY) {
                         while (p.nextToken() == JsonToken.START_OBJECT) {
-                            double[] cmd = inverse3Command(p);
-                            if (cmd != null) {
+                            double[] cmd = inverse3Command(p, commandFor);
+                            if (cmd != null && !DEVICE_ID.equals(commandFor[0])) {
+                                SimulatedInverse3 other = device(commandFor[0]);
+                                if (other != null) {
+                                    other.setForce(cmd[0], cmd[1], cmd[2]);
+                                }
+                            } else if (cmd != null) {
                                 force = true;
                                 fx = cmd[0];
                                 fy = cmd[1];
@@ -552,7 +620,9 @@ public final class InverseServiceEmulator implements AutoCloseable {
         }
         double dt = lockstep > 0 ? lockstep : lastNanos == 0 ? 0 : Math.min(0.05, (now - lastNanos) * 1e-9);
         lastNanos = now;
-        device.advance(dt);
+        for (Listed l : listed) {
+            l.sim.advance(dt);
+        }
         return frame(idOf(from), full, true);
     }
 
@@ -699,8 +769,8 @@ public final class InverseServiceEmulator implements AutoCloseable {
         return found;
     }
 
-    /** Reads one entry of the inverse3 list; returns its set_cursor_force vector if it is for our device. */
-    private static double[] inverse3Command(JsonParser p) throws IOException {
+    /** Reads one entry of the inverse3 list; returns its set_cursor_force vector (null: none), its device id in idOut[0]. */
+    private static double[] inverse3Command(JsonParser p, String[] idOut) throws IOException {
         String id = null;
         double[] vector = null;
         while (p.nextToken() == JsonToken.FIELD_NAME) {
@@ -742,7 +812,8 @@ public final class InverseServiceEmulator implements AutoCloseable {
                 p.skipChildren();
             }
         }
-        return DEVICE_ID.equals(id) ? vector : null;
+        idOut[0] = id;
+        return id == null ? null : vector;
     }
 
     /** The full snapshot (with each device's config) or a state frame, as JSON text. */
@@ -758,38 +829,12 @@ public final class InverseServiceEmulator implements AutoCloseable {
             g.writeStartObject();
             g.writeNumberField("session_id", session);
             g.writeArrayFieldStart("inverse3");
-            g.writeStartObject();
-            g.writeStringField("device_id", DEVICE_ID);
-            if (full) {
-                inverse3Config(g);
+            for (Listed l : listed) {
+                l.sim.position(tmpP);
+                l.sim.velocity(tmpV);
+                l.sim.force(tmpF);
+                inverse3Entry(g, l, full);
             }
-            g.writeObjectFieldStart("state");
-            vec(g, "cursor_position", tmpP);
-            vec(g, "cursor_velocity", tmpV);
-            g.writeObjectFieldStart("angular_position");
-            g.writeNumberField("a0", 0.0);
-            g.writeNumberField("a1", 0.0);
-            g.writeNumberField("a2", 0.0);
-            g.writeEndObject();
-            g.writeObjectFieldStart("angular_velocity");
-            g.writeNumberField("a0", 0.0);
-            g.writeNumberField("a1", 0.0);
-            g.writeNumberField("a2", 0.0);
-            g.writeEndObject();
-            quat(g, "body_orientation", 1, 0, 0, 0);
-            vec(g, "current_cursor_force", tmpF);
-            g.writeStringField("mode", "idle");
-            g.writeStringField("control_domain", "cartesian");
-            g.writeStringField("control_mode", forceCommands > 0 ? "force" : "idle");
-            g.writeEndObject();
-            g.writeObjectFieldStart("status");
-            g.writeBooleanField("calibrated", true);
-            g.writeBooleanField("in_use", connections.size() > 0);
-            g.writeBooleanField("power_supply", true);
-            g.writeBooleanField("ready", true);
-            g.writeBooleanField("started", true);
-            g.writeEndObject();
-            g.writeEndObject();
             g.writeEndArray();
             String kind = gripKind;
             g.writeArrayFieldStart("verse_grip");
@@ -807,24 +852,60 @@ public final class InverseServiceEmulator implements AutoCloseable {
         return w.toString();
     }
 
-    private static void inverse3Config(JsonGenerator g) throws IOException {
+    /** One entry of the inverse3 list, from tmpP, tmpV and tmpF. Called holding this. */
+    private void inverse3Entry(JsonGenerator g, Listed l, boolean full) throws IOException {
+        g.writeStartObject();
+        g.writeStringField("device_id", l.id);
+        if (full) {
+            inverse3Config(g, l);
+        }
+        g.writeObjectFieldStart("state");
+        vec(g, "cursor_position", tmpP);
+        vec(g, "cursor_velocity", tmpV);
+        g.writeObjectFieldStart("angular_position");
+        g.writeNumberField("a0", 0.0);
+        g.writeNumberField("a1", 0.0);
+        g.writeNumberField("a2", 0.0);
+        g.writeEndObject();
+        g.writeObjectFieldStart("angular_velocity");
+        g.writeNumberField("a0", 0.0);
+        g.writeNumberField("a1", 0.0);
+        g.writeNumberField("a2", 0.0);
+        g.writeEndObject();
+        quat(g, "body_orientation", 1, 0, 0, 0);
+        vec(g, "current_cursor_force", tmpF);
+        g.writeStringField("mode", "idle");
+        g.writeStringField("control_domain", "cartesian");
+        g.writeStringField("control_mode", forceCommands > 0 ? "force" : "idle");
+        g.writeEndObject();
+        g.writeObjectFieldStart("status");
+        g.writeBooleanField("calibrated", true);
+        g.writeBooleanField("in_use", connections.size() > 0);
+        g.writeBooleanField("power_supply", true);
+        g.writeBooleanField("ready", true);
+        g.writeBooleanField("started", true);
+        g.writeEndObject();
+        g.writeEndObject();
+    }
+
+    private static void inverse3Config(JsonGenerator g, Listed l) throws IOException {
         g.writeObjectFieldStart("config");
         g.writeStringField("type", "inverse3");
         g.writeStringField("port", "emulated");
         g.writeObjectFieldStart("device_info");
         g.writeNumberField("major_version", 7);
         g.writeNumberField("minor_version", 4);
-        g.writeStringField("id", DEVICE_ID);
+        g.writeStringField("id", l.id);
         g.writeNumberField("device_type", 4);
-        g.writeStringField("uuid", "TACTUS-EMULATED-INVERSE3-" + DEVICE_ID);
+        g.writeStringField("uuid", "TACTUS-EMULATED-INVERSE3-" + l.id);
         g.writeEndObject();
-        g.writeStringField("extended_device_id", "TACTUS-EMULATED-INVERSE3-" + DEVICE_ID);
+        g.writeStringField("extended_device_id", "TACTUS-EMULATED-INVERSE3-" + l.id);
         g.writeStringField("extended_firmware_version", "tactus-emulator");
         g.writeObjectFieldStart("gravity_compensation");
         g.writeBooleanField("enabled", true);
         g.writeNumberField("scaling_factor", 1.0);
         g.writeEndObject();
-        g.writeStringField("handedness", "right");
+        g.writeStringField("handedness", l.handedness);
         g.writeStringField("streaming_mode", "USB");
         g.writeObjectFieldStart("torque_scaling");
         g.writeBooleanField("enabled", true);

@@ -30,8 +30,12 @@ public final class Inverse3Device implements HapticDevice {
     public static final int RAMP_MS = 100;
     private static final long RAMP_NANOS = RAMP_MS * 1_000_000L;
 
+    /** Farther than this from the service's origin, in metres, a reported position is no Inverse3's (a fault). */
+    public static final double REACH_M = 1.0;
+
     private volatile InverseServiceClient client;
     private final URI uri;
+    private final Inverse3Choice choice;
     private final InverseState state = new InverseState();   // the loop thread's copy
     private long lastFrame = -1;
     private InverseGuardLink guard = InverseGuardLink.NONE;
@@ -56,6 +60,7 @@ public final class Inverse3Device implements HapticDevice {
         this.client = client;
         this.uri = client.uri();
         client.read(state);
+        this.choice = state.deviceId == null ? Inverse3Choice.FIRST : Inverse3Choice.byId(state.deviceId);
     }
 
     /** Connects to the service at {@link InverseServiceClient#DEFAULT_URI} (2 s at most). */
@@ -65,7 +70,15 @@ public final class Inverse3Device implements HapticDevice {
 
     /** Connects to the service at this address (e.g. {@code ws://localhost:10001}), waiting at most timeoutMillis. */
     public static Inverse3Device open(URI uri, long timeoutMillis) {
-        return new Inverse3Device(InverseServiceClient.connect(uri, timeoutMillis));
+        return open(uri, timeoutMillis, Inverse3Choice.FIRST);
+    }
+
+    /**
+     * Connects to the service at this address and drives the Inverse3 this choice names (by id, index or
+     * handedness), waiting at most timeoutMillis.
+     */
+    public static Inverse3Device open(URI uri, long timeoutMillis, Inverse3Choice which) {
+        return new Inverse3Device(InverseServiceClient.connect(uri, timeoutMillis, which));
     }
 
     /**
@@ -74,9 +87,14 @@ public final class Inverse3Device implements HapticDevice {
      * session with the service.
      */
     public static Inverse3Device openGuarded(URI uri, long timeoutMillis) {
-        Inverse3Device d = open(uri, timeoutMillis);
+        return openGuarded(uri, timeoutMillis, Inverse3Choice.FIRST);
+    }
+
+    /** As {@link #openGuarded(URI, long)}, driving (and guarding) the Inverse3 this choice names. */
+    public static Inverse3Device openGuarded(URI uri, long timeoutMillis, Inverse3Choice which) {
+        Inverse3Device d = open(uri, timeoutMillis, which);
         if (InverseGuardLink.enabled()) {
-            InverseGuardLink g = InverseGuardLink.start(uri);
+            InverseGuardLink g = InverseGuardLink.start(uri, d.state.deviceId);
             if (g.isGuarded() && !g.awaitReady(5_000)) {
                 System.err.println("Tactus: the Inverse3 guard could not open its own session with the service at " + uri
                         + " in 5 s; it keeps trying");
@@ -135,6 +153,16 @@ public final class Inverse3Device implements HapticDevice {
         return client.read(out);
     }
 
+    /** The device's id as the service names it (e.g. "049D"). */
+    public String deviceId() {
+        return state.deviceId;
+    }
+
+    /** The device's handedness from its configuration, "left" or "right" (null if the service gave none). */
+    public String handedness() {
+        return state.handedness;
+    }
+
     /** The device's kind as the service names it: "inverse3", "inverse3x" or "minverse". */
     public String kind() {
         return state.deviceType == null ? "inverse3" : state.deviceType;
@@ -188,12 +216,29 @@ public final class Inverse3Device implements HapticDevice {
         }
         long f = c.read(state);
         if (f == lastFrame) {
+            if (c.badFramesInARow() >= InverseServiceClient.BAD_RUN) {
+                throw new HaplyLinkException(c.badFramesReport());
+            }
             return false;
         }
         lastFrame = f;
-        if (state.inverse3Count == 0) {
+        if (!state.chosenListed) {
             throw new HaplyLinkException("the Haply Inverse Service no longer lists the Inverse3 " + state.deviceId
-                    + ": was it unplugged or switched off?");
+                    + " (it lists " + state.listing + "): was it unplugged or switched off?");
+        }
+        if (state.positionBad) {
+            throw new HaplyLinkException("the Haply Inverse Service sends frames for the Inverse3 " + state.deviceId
+                    + " (" + f + " so far) whose cursor_position is null or lacks a number: is the device calibrated "
+                    + "and started (the Haply Hub shows its status)?");
+        }
+        double px = state.px;
+        double py = state.py;
+        double pz = state.pz;
+        if (px * px + py * py + pz * pz > REACH_M * REACH_M || Double.isInfinite(px) || Double.isInfinite(py)
+                || Double.isInfinite(pz)) {
+            throw new HaplyLinkException("the Haply Inverse Service reports the Inverse3 " + state.deviceId + " at ("
+                    + px + ", " + py + ", " + pz + ") m, beyond any Inverse3's reach (" + REACH_M + " m from the "
+                    + "service's origin): the force is stopped; check the service's basis, mount and units settings");
         }
         return !Double.isNaN(state.px);
     }
@@ -292,7 +337,7 @@ public final class Inverse3Device implements HapticDevice {
             attempt++;
             try {
                 InverseServiceClient n = InverseServiceClient.connect(uri, Math.max(1, Math.min(1000,
-                        giveUpMillis - (System.nanoTime() - start) / 1_000_000L)));
+                        giveUpMillis - (System.nanoTime() - start) / 1_000_000L)), choice);
                 if (closed) {
                     n.close();
                     return;

@@ -52,6 +52,7 @@ public final class InverseGuard {
     private volatile GuardMemory memory;
     private volatile long staleNanos = 100_000_000L;
     private volatile URI service;
+    private volatile String deviceId;   // the Inverse3 to zero; null: the first listed
     private volatile InverseServiceClient client;
     private volatile boolean acting;
     private final InverseState state = new InverseState();
@@ -96,6 +97,8 @@ public final class InverseGuard {
                 }
                 staleNanos = ms * 1_000_000L;
                 memory = GuardMemory.open(f[2], parentPid);
+            } else if (f[0].equals("device") && f.length == 2 && service == null) {
+                deviceId = f[1];
             } else if (f[0].equals("service") && f.length == 2 && service == null) {
                 service = URI.create(f[1]);
                 daemon(this::keepConnected, "tactus-inverse-guard-connect");
@@ -139,7 +142,9 @@ public final class InverseGuard {
 
     private InverseServiceClient tryConnect() {
         try {
-            return InverseServiceClient.connect(service, CONNECT_TIMEOUT_MS, PROFILE);
+            String id = deviceId;
+            return InverseServiceClient.connect(service, CONNECT_TIMEOUT_MS, PROFILE,
+                    id == null ? Inverse3Choice.FIRST : Inverse3Choice.byId(id));
         } catch (HaplyLinkException | IllegalArgumentException e) {
             return null;
         }

@@ -52,8 +52,11 @@ final class InverseGuardLink {
         return !"false".equalsIgnoreCase(System.getProperty(PROPERTY, "true"));
     }
 
-    /** Starts a guard for the service at this address; {@link #NONE} (with a warning) if it cannot. */
-    static InverseGuardLink start(URI service) {
+    /**
+     * Starts a guard for the Inverse3 with this id (null: the first listed) on the service at this address;
+     * {@link #NONE} (with a warning) if it cannot.
+     */
+    static InverseGuardLink start(URI service, String deviceId) {
         GuardMemory memory;
         try {
             memory = GuardMemory.create();
@@ -64,7 +67,8 @@ final class InverseGuardLink {
         }
         try {
             InverseGuardLink link = new InverseGuardLink(GuardProcess.start(command(), "the Inverse3 guard"), memory);
-            link.guard.send(InverseGuard.HELLO + "\nheartbeat " + HEARTBEAT_STALE_MS + " " + memory.path() + "\nservice " + service);
+            link.guard.send(InverseGuard.HELLO + "\nheartbeat " + HEARTBEAT_STALE_MS + " " + memory.path()
+                    + (deviceId == null ? "" : "\ndevice " + deviceId) + "\nservice " + service);
             Thread beat = new Thread(link::beatWhileArmed, BEAT_THREAD);
             beat.setDaemon(true);
             beat.start();

@@ -30,8 +30,13 @@ import tactus.haptics.HaplyLinkException;
  * socket's own thread into a state that any thread can read with {@link #read} (a sequence lock: readers never
  * block the socket, nor each other).
  *
- * <p>Endings: a service that is absent, refuses the upgrade, sends no snapshot in time or lists no Inverse3
- * makes {@link #connect} throw a {@link HaplyLinkException} that says what to check. A socket that closes or
+ * <p>Which Inverse3: the one an {@link Inverse3Choice} names (the first listed by default), followed by its
+ * {@code device_id} from the snapshot on; forces go to that id.
+ *
+ * <p>Endings: a service that is absent, refuses the upgrade, sends no snapshot in time, sends frames that are not
+ * JSON, lists no Inverse3 (at once, on the first empty list), does not list the chosen one, or gives it a type
+ * this client does not know makes {@link #connect} throw a {@link HaplyLinkException} that says what arrived
+ * and what to check. A socket that closes or
  * fails later marks the client lost ({@link #lostReason()}); the next {@link #sendForce} throws. Every ending the
  * client controls sends zero force first: {@link #close()}, and a JVM shutdown hook (System.exit, SIGTERM,
  * Ctrl-C) while it is open. Where the JVM ends with no hook (SIGKILL, a crash) the operating system closes the
@@ -69,9 +74,13 @@ public final class InverseServiceClient implements AutoCloseable {
     private final long[] roundTrips = new long[WINDOW];
     private volatile long roundTripCount;
 
-    private InverseServiceClient(URI uri, String profile) {
+    private final Inverse3Choice choice;
+
+    private InverseServiceClient(URI uri, String profile, Inverse3Choice choice) {
         this.uri = uri;
         this.profile = profile;
+        this.choice = choice;
+        receiver.parser.choose(choice);
     }
 
     /** Connects to the service at {@link #DEFAULT_URI}, waiting up to 2 s; see {@link #connect(URI, long)}. */
@@ -86,16 +95,31 @@ public final class InverseServiceClient implements AutoCloseable {
      * @throws HaplyLinkException with a message that names the address and what to check
      */
     public static InverseServiceClient connect(URI uri, long timeoutMillis) {
-        return connect(uri, timeoutMillis, PROFILE);
+        return connect(uri, timeoutMillis, PROFILE, Inverse3Choice.FIRST);
+    }
+
+    /**
+     * As {@link #connect(URI, long)}, driving the Inverse3 this choice names (by id, index or handedness) among
+     * those the service lists.
+     *
+     * @throws HaplyLinkException if the service lists no such device (the message lists those it has)
+     */
+    public static InverseServiceClient connect(URI uri, long timeoutMillis, Inverse3Choice which) {
+        return connect(uri, timeoutMillis, PROFILE, which);
     }
 
     /** As {@link #connect(URI, long)}, with this profile name in the session handshake (the guard's own session). */
     static InverseServiceClient connect(URI uri, long timeoutMillis, String profile) {
-        if (uri == null || timeoutMillis < 1) {
-            throw new IllegalArgumentException("InverseServiceClient.connect: need an address and a timeout >= 1 ms, got "
-                    + uri + ", " + timeoutMillis);
+        return connect(uri, timeoutMillis, profile, Inverse3Choice.FIRST);
+    }
+
+    /** As {@link #connect(URI, long, Inverse3Choice)}, with this profile name in the session handshake. */
+    static InverseServiceClient connect(URI uri, long timeoutMillis, String profile, Inverse3Choice which) {
+        if (uri == null || timeoutMillis < 1 || which == null) {
+            throw new IllegalArgumentException("InverseServiceClient.connect: need an address, a timeout >= 1 ms and a "
+                    + "choice of Inverse3, got " + uri + ", " + timeoutMillis + ", " + which);
         }
-        InverseServiceClient c = new InverseServiceClient(uri, profile);
+        InverseServiceClient c = new InverseServiceClient(uri, profile, which);
         c.open(timeoutMillis);
         return c;
     }
@@ -129,13 +153,13 @@ public final class InverseServiceClient implements AutoCloseable {
         InverseState s = new InverseState();
         while (true) {
             read(s);
-            if (s.snapshotSeen && s.deviceId != null) {
-                break;
-            }
-            if (s.snapshotSeen && s.inverse3Count == 0) {
+            String refused = refusal(s);
+            if (refused != null) {
                 socket.abort();
-                throw new HaplyLinkException("the Haply Inverse Service at " + uri + " lists no Inverse3: plug the device "
-                        + "in and power it; the Haply Hub shows the devices it sees");
+                throw new HaplyLinkException(refused);
+            }
+            if (s.snapshotSeen && s.chosenListed && s.deviceId != null) {
+                break;
             }
             if (lost != null) {
                 throw new HaplyLinkException("the Haply Inverse Service at " + uri + " dropped the connection before "
@@ -173,6 +197,52 @@ public final class InverseServiceClient implements AutoCloseable {
         } catch (IllegalStateException e) {
             // the JVM is already shutting down
         }
+    }
+
+    /** The device types this client drives, as the service names them in each Inverse3's configuration. */
+    static final java.util.List<String> KNOWN_TYPES = java.util.List.of("inverse3", "inverse3x", "minverse");
+
+    /**
+     * Why the connection must not go on, from what has arrived so far (null: nothing wrong yet): unreadable
+     * frames, an empty device list, a snapshot without the chosen device, a device type this client does not know.
+     */
+    private String refusal(InverseState s) {
+        if (receiver.badRun > 0 && !s.snapshotSeen) {   // its snapshot cannot be read: nothing to drive
+            return badFramesReport();
+        }
+        if (s.inverse3Listed && s.inverse3Count == 0) {
+            return "the Haply Inverse Service at " + uri + " lists no Inverse3: plug the device in and power it; "
+                    + "the Haply Hub shows the devices it sees";
+        }
+        if (s.snapshotSeen && !s.chosenListed) {
+            return "the Haply Inverse Service at " + uri + " lists " + s.listing + " but not " + choice
+                    + ": choose one of those (Inverse3Choice.byId, byIndex or byHandedness)";
+        }
+        if (s.snapshotSeen && s.deviceType != null && !KNOWN_TYPES.contains(s.deviceType)) {
+            return "the Haply Inverse Service at " + uri + " lists the device " + s.deviceId + " as type \"" + s.deviceType
+                    + "\", which Tactus does not know how to drive (it drives " + String.join(", ", KNOWN_TYPES)
+                    + "): choose another device or update Tactus";
+        }
+        return null;
+    }
+
+    /** Frames in a row that could not be read after which the connection is given up as unreadable. */
+    public static final int BAD_RUN = 3;
+
+    /** How many frames in a row, up to now, could not be read (0 once one is read). */
+    public long badFramesInARow() {
+        return receiver.badRun;
+    }
+
+    /** What arrived that could not be read and what to check, for a message (null if every frame was read). */
+    public String badFramesReport() {
+        String why = receiver.lastBad;
+        if (why == null) {
+            return null;
+        }
+        return "the Haply Inverse Service at " + uri + " sends frames Tactus cannot read (" + receiver.bad + " so far, "
+                + receiver.badRun + " in a row; the last: " + why + "): check that it is the Haply Inverse Service, "
+                + "version 3.5 or later, and that nothing rewrites its messages (NaN and Infinity are not JSON)";
     }
 
     /**
@@ -438,6 +508,8 @@ public final class InverseServiceClient implements AutoCloseable {
         private final InverseState good = new InverseState();
         private char[] chars = new char[4096];
         volatile long bad;
+        volatile long badRun;
+        volatile String lastBad;
 
         @Override
         public void onOpen(WebSocket ws) {
@@ -465,9 +537,14 @@ public final class InverseServiceClient implements AutoCloseable {
                 parser.parse(chars, n, scratch);
             } catch (IOException | RuntimeException e) {
                 scratch.copyFrom(good);
+                String m = String.valueOf(e.getMessage());
+                int eol = m.indexOf('\n');
+                lastBad = (eol < 0 ? m : m.substring(0, eol)) + "; it began: " + new String(chars, 0, Math.min(n, 80));
                 bad++;
+                badRun++;
                 return;
             }
+            badRun = 0;
             good.copyFrom(scratch);
             int s = seq;
             seq = s + 1;

@@ -1,7 +1,7 @@
 package tactus.haptics.inverse;
 
 /**
- * What the Inverse Service last said about the first Inverse3 and the first VerseGrip it lists: plain fields,
+ * What the Inverse Service last said about the chosen Inverse3 (see {@link Inverse3Choice}) and the first VerseGrip it lists: plain fields,
  * filled by {@link InverseMessageParser} and copied by {@link #copyFrom}. Not thread-safe by itself:
  * {@link InverseServiceClient} hands it between threads under a sequence lock.
  *
@@ -16,6 +16,14 @@ public final class InverseState {
     public String handedness;
     /** How many Inverse3 entries the last frame listed. */
     public int inverse3Count;
+    /** True once a frame carried an {@code inverse3} list (even an empty one). */
+    public boolean inverse3Listed;
+    /** True if the last {@code inverse3} list held the chosen Inverse3. */
+    public boolean chosenListed;
+    /** The Inverse3s of the last list, for messages, e.g. "7E31 (inverse3, right-handed)"; null before any list. */
+    public String listing;
+    /** True if the chosen Inverse3's last {@code cursor_position} was null or lacked a number (the position keeps NaN). */
+    public boolean positionBad;
     /** The session id the service gave this connection (0 if not sent). */
     public long sessionId;
 
@@ -90,6 +98,10 @@ public final class InverseState {
         deviceType = o.deviceType;
         handedness = o.handedness;
         inverse3Count = o.inverse3Count;
+        inverse3Listed = o.inverse3Listed;
+        chosenListed = o.chosenListed;
+        listing = o.listing;
+        positionBad = o.positionBad;
         sessionId = o.sessionId;
         px = o.px;
         py = o.py;

@@ -1,6 +1,7 @@
 package tactus.internal.calls;
 
 import tactus.Vect3D;
+import tactus.linkModuleType;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
 import tactus.internal.edit.ModuleBuilder;
@@ -172,6 +173,94 @@ public final class BuildCalls extends Calls {
             int a = core.dir.endMass(op, name, m1);
             int b = kind.isSingleMass() ? a : core.dir.endMass(op, name, m2);
             return core.builder.addLink(op, kind, name, a, b, K, Z, len, aux, axis);
+        });
+    }
+
+    // ---- mi.lib's nonlinear interactions: kinds with parameters beyond K, Z and the length
+
+    public int addQuadraticSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return addLinkWithAux("addQuadraticSpringDamper3D", LinkKind.QUADRATIC_SPRING_DAMPER3D, name, m1, m2, K, Z,
+                dist, Q);
+    }
+
+    public int addQuadraticSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1,
+            String m2) {
+        return addLinkWithAux("addQuadraticSpringDamper1D", LinkKind.QUADRATIC_SPRING_DAMPER1D, name, m1, m2, K, Z,
+                dist, Q);
+    }
+
+    public int addCubicSpringDamper3D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return addLinkWithAux("addCubicSpringDamper3D", LinkKind.CUBIC_SPRING_DAMPER3D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public int addCubicSpringDamper1D(String name, double dist, double K, double Z, double Q, String m1, String m2) {
+        return addLinkWithAux("addCubicSpringDamper1D", LinkKind.CUBIC_SPRING_DAMPER1D, name, m1, m2, K, Z, dist, Q);
+    }
+
+    public int addClippedSpringDamper3D(String name, double dist, double K, double Z, double C, double Kmax, String m1,
+            String m2) {
+        return addLinkWithAux("addClippedSpringDamper3D", LinkKind.CLIPPED_SPRING_DAMPER3D, name, m1, m2, K, Z, dist, C,
+                Kmax);
+    }
+
+    public int addClippedSpringDamper1D(String name, double dist, double K, double Z, double C, double Kmax, String m1,
+            String m2) {
+        return addLinkWithAux("addClippedSpringDamper1D", LinkKind.CLIPPED_SPRING_DAMPER1D, name, m1, m2, K, Z, dist, C,
+                Kmax);
+    }
+
+    public int addPluck3D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return addLinkWithAux("addPluck3D", LinkKind.PLUCK3D, name, m1, m2, K, Z, dist, scale);
+    }
+
+    public int addPluck1D(String name, double dist, double K, double Z, double scale, String m1, String m2) {
+        return addLinkWithAux("addPluck1D", LinkKind.PLUCK1D, name, m1, m2, K, Z, dist, scale);
+    }
+
+    public int addBow3D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return addLinkWithAux("addBow3D", LinkKind.BOW3D, name, m1, m2, 0, Z, 0, scale, profile);
+    }
+
+    public int addBow1D(String name, double Z, double scale, int profile, String m1, String m2) {
+        return addLinkWithAux("addBow1D", LinkKind.BOW1D, name, m1, m2, 0, Z, 0, scale, profile);
+    }
+
+    public int addClippedContact3D(String name, double dist, double K, double Z, double C, double Kmax, String m1,
+            String m2) {
+        return addLinkWithAux("addClippedContact3D", LinkKind.CLIPPED_CONTACT3D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public int addClippedContact1D(String name, double dist, double K, double Z, double C, double Kmax, String m1,
+            String m2) {
+        return addLinkWithAux("addClippedContact1D", LinkKind.CLIPPED_CONTACT1D, name, m1, m2, K, Z, dist, C, Kmax);
+    }
+
+    public int addInteraction(linkModuleType type, String name, double dist, double K, double Z, double[] extra,
+                              String m1, String m2) {
+        LinkKind kind = type == null ? null : LinkKind.byLabel(type.name());
+        if (kind == null || !kind.isNonlinear()) {
+            throw new IllegalArgumentException("addInteraction(" + type + ", \"" + name + "\"): only the nonlinear"
+                    + " types are added by type; use the add call of " + type);
+        }
+        if (extra == null || extra.length != kind.auxCount()) {
+            throw new IllegalArgumentException("addInteraction(" + type + ", \"" + name + "\"): a " + type
+                    + " takes the extra parameters " + java.util.Arrays.toString(kind.auxNames()));
+        }
+        return addLinkWithAux("addInteraction", kind, name, m1, m2, kind.hasStiffness() ? K : 0, Z,
+                kind.hasLength() ? dist : 0, extra.clone());
+    }
+
+    private int addLinkWithAux(String op, LinkKind kind, String name, String m1, String m2, double K, double Z,
+                               double len, double... aux) {
+        Check.name(op, name);
+        Check.finite(op, name, "K", K);
+        Check.finite(op, name, "Z", Z);
+        tactus.internal.edit.ParamEditor.checkLength(op, name, kind, len);
+        return structural(() -> {
+            int a = core.dir.endMass(op, name, m1);
+            int b = core.dir.endMass(op, name, m2);
+            return core.builder.addLinkWithAux(op, kind, name, a, b, K, Z, len, aux);
         });
     }
 

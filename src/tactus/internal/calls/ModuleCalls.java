@@ -240,4 +240,26 @@ public final class ModuleCalls extends Calls {
             exit();
         }
     }
+
+    /** Reads parameter {@code index} beyond stiffness, damping and length of a nonlinear interaction. */
+    public double linkAux(int id, String op, int index) {
+        enter();
+        try {
+            link(id);
+            return core.params.aux(op, id, index);
+        } finally {
+            exit();
+        }
+    }
+
+    /** Sets parameter {@code index} beyond stiffness, damping and length of a nonlinear interaction. */
+    public void setLinkAux(int id, String op, int index, double v) {
+        enterChange();
+        try {
+            link(id);
+            core.params.setAux(op, id, index, v);
+        } finally {
+            exit();
+        }
+    }
 }

@@ -107,6 +107,34 @@ public final class ModuleBuilder {
         return id;
     }
 
+    /**
+     * Adds an interaction whose kind has parameters beyond K, Z and the length (mi.lib's nonlinear interactions):
+     * {@code aux} holds them in the order of {@link LinkKind#auxNames()}, in the model's units. Validates them all
+     * first, then adds as {@link #addLink}.
+     */
+    public int addLinkWithAux(String op, LinkKind kind, String name, int a, int b, double K, double Z, double len,
+                              double... aux) {
+        if (aux.length != kind.auxCount()) {
+            throw new IllegalArgumentException(op + ": a " + kind.label() + " takes " + kind.auxCount()
+                    + " parameters beyond K, Z and the length, got " + aux.length);
+        }
+        for (int i = 0; i < aux.length; i++) {
+            ParamEditor.checkAux(op, name, kind, i, aux[i]);
+        }
+        if (a == b) {
+            throw Check.fail(op, name, "cannot link mass \"" + c.dir.massName(a) + "\" to itself");
+        }
+        UnitScale u = c.units();
+        int id = engine.addLink(kind, a, b, u.stiffnessIn(K), u.dampingIn(Z), len);
+        for (int i = 0; i < aux.length; i++) {
+            engine.setLinkAux(id, i, u.paramIn(kind.auxUnit(i), aux[i]));
+        }
+        c.dir.registerLink(name, id, kind);
+        guard.afterChange(() -> topology.removeLink(id));
+        topology.compileIfRunning();
+        return id;
+    }
+
     /** The warning printed once, when a Contact3D is added between two masses at exactly the same position. */
     public static String coincidentContactWarning(String link, String m1, String m2) {
         return "Tactus: Contact3D \"" + link + "\" joins \"" + m1 + "\" and \"" + m2 + "\" at exactly the same"

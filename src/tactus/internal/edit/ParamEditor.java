@@ -219,6 +219,48 @@ public final class ParamEditor {
         return engine.linkAxis(id);
     }
 
+    /**
+     * @return parameter {@code index} beyond K, Z and the length of a link whose kind has it (its name is
+     *     {@code kind.auxNames()[index]}), in the model's units
+     */
+    public double aux(String op, int id, int index) {
+        LinkKind kind = requireAux(op, id, index);
+        return c.units().paramOut(kind.auxUnit(index), engine.linkAux(id, index));
+    }
+
+    /** Sets parameter {@code index} beyond K, Z and the length of a link, in the model's units, validated first. */
+    public void setAux(String op, int id, int index, double value) {
+        LinkKind kind = requireAux(op, id, index);
+        checkAux(op, c.dir.linkName(id), kind, index, value);
+        double old = engine.linkAux(id, index);
+        c.writes().setLinkAux(id, index, c.units().paramIn(kind.auxUnit(index), value));
+        guard.afterChange(() -> engine.setLinkAux(id, index, old));
+    }
+
+    /**
+     * Validates a parameter beyond K, Z and the length: finite; a pluck's or a bow's scale &gt; 0; a bow's profile 0
+     * (piecewise linear) or 1 (smooth); a clipped law's cubic stiffness C and bound Kmax &ge; 0.
+     */
+    public static void checkAux(String op, String element, LinkKind kind, int index, double value) {
+        String name = kind.auxNames()[index];
+        Check.finite(op, element, name, value);
+        if (name.equals("scale")) {
+            Check.positive(op, element, name, value);
+        } else if (name.equals("profile") && value != 0 && value != 1) {
+            throw Check.fail(op, element, "profile must be 0 (piecewise linear) or 1 (smooth), got " + value);
+        } else if (name.equals("C") || name.equals("Kmax")) {
+            Check.nonNegative(op, element, name, value);
+        }
+    }
+
+    private LinkKind requireAux(String op, int id, int index) {
+        LinkKind k = engine.linkKind(id);
+        if (index < 0 || index >= k.auxCount()) {
+            throw Check.fail(op, c.dir.linkName(id), "a " + k.label() + " has no such parameter");
+        }
+        return k;
+    }
+
     private void requireKind(String op, int id, LinkKind kind) {
         LinkKind k = engine.linkKind(id);
         if (k != kind) {

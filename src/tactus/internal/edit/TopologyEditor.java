@@ -8,9 +8,12 @@ import tactus.internal.stability.DivergenceWatch;
 
 /**
  * Removes modules, turns masses into fixed points and clears the model, keeping the directory, the subsets,
- * the contact groups and the divergence state consistent with the engine. Once the model is initialised,
- * every topology edit recompiles the step plan at once, on the editing thread, so that the threads that step
- * the model or exchange with it (audio, haptics) never compile. The caller holds the model's lock.
+ * the contact groups and the divergence state consistent with the engine. Once the model is initialised and
+ * stepped in realtime ({@code beginRealtimeStepping}), every topology edit recompiles the step plan at once, on
+ * the editing thread, so that the threads that step the model or exchange with it (audio, haptics) never
+ * compile. Otherwise a thread that steps takes the model's lock, and so waits for an edit anyway: the plan is
+ * compiled once, by the next step (or the next read of the plan), however many edits came before it, so that
+ * removing k of N modules costs O(k + N), not O(k N). The caller holds the model's lock.
  */
 public final class TopologyEditor {
     private final ModelBase c;
@@ -34,7 +37,9 @@ public final class TopologyEditor {
      * ({@link InstallCommand}).
      */
     public void compileIfRunning() {
-        if (c.initialized) {
+        if (c.initialized && c.own == null) {
+            snapshots.topologyChanged();   // the plan is compiled by the next step, once for every edit before it
+        } else if (c.initialized) {
             engine.compile();
             if (engine.isHoldingTopology()) {
                 snapshots.topologyEdited(); // the install publishes the new topology
@@ -53,12 +58,10 @@ public final class TopologyEditor {
 
     public void removeMass(int id) {
         boolean wasDiverged = engine.divergedMass() == id;
-        for (int l : c.dir.links.ids()) {
-            if (engine.linkMassA(l) == id || engine.linkMassB(l) == id) {
-                engine.removeLink(l);
-                subsets.forgetLink(l);
-                c.dir.forgetLink(l);
-            }
+        for (int l : engine.linksOf(id)) {
+            engine.removeLink(l);
+            subsets.forgetLink(l);
+            c.dir.forgetLink(l);
         }
         engine.removeMass(id);
         c.dir.forgetMass(id);

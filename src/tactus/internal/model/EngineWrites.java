@@ -19,6 +19,9 @@ public interface EngineWrites {
 
     void setAttraction(int id, double attr);
 
+    /** Sets parameter {@code index} beyond K, Z and the length of a link whose kind has it (per step). */
+    void setLinkAux(int id, int index, double value);
+
     void setPosition(int id, double x, double y, double z);
 
     /** Moves a mass with zero velocity, its links keeping their previous distances (the paper engine's move). */
@@ -64,6 +67,10 @@ public interface EngineWrites {
 
             public void setAttraction(int id, double attr) {
                 e.setAttraction(id, attr);
+            }
+
+            public void setLinkAux(int id, int index, double value) {
+                e.setLinkAux(id, index, value);
             }
 
             public void setPosition(int id, double x, double y, double z) {

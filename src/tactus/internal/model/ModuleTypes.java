@@ -37,28 +37,8 @@ public final class ModuleTypes {
         }
     }
 
+    /** @return the public type of a kind: the constant of {@link linkModuleType} named by its label. */
     public static linkModuleType of(LinkKind k) {
-        switch (k) {
-            case SPRING3D:
-                return linkModuleType.Spring3D;
-            case DAMPER3D:
-                return linkModuleType.Damper3D;
-            case SPRING_DAMPER3D:
-                return linkModuleType.SpringDamper3D;
-            case SPRING_DAMPER1D:
-                return linkModuleType.SpringDamper1D;
-            case ROPE3D:
-                return linkModuleType.Rope3D;
-            case CONTACT3D:
-                return linkModuleType.Contact3D;
-            case BUBBLE3D:
-                return linkModuleType.Bubble3D;
-            case PLANE_CONTACT3D:
-                return linkModuleType.PlaneContact3D;
-            case ATTRACTOR3D:
-                return linkModuleType.Attractor3D;
-            default:
-                return linkModuleType.UNDEFINED;
-        }
+        return linkModuleType.valueOf(k.label());
     }
 }

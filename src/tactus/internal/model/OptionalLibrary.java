@@ -1,7 +1,7 @@
 package tactus.internal.model;
 
 /**
- * A library that Tactus compiles against but does not bundle (Processing core, Minim), and the check that turns its
+ * A library that the model compiles against but does not bundle (Processing core), and the check that turns its
  * absence into a message saying what to do instead of a bare {@link NoClassDefFoundError}.
  *
  * <p>The check loads one class of the library by name, once per JVM, and never touches the library's types itself,
@@ -9,9 +9,7 @@ package tactus.internal.model;
  */
 public enum OptionalLibrary {
     /** Processing's core.jar: {@code PVector}, {@code PApplet}; needed only to draw and by the PVector calls. */
-    PROCESSING_CORE("processing.core.PVector", "Processing core (core.jar, org.processing:core)"),
-    /** Minim: {@code UGen}, {@code AudioOutput}; needed to play or render sound. */
-    MINIM("ddf.minim.UGen", "Minim (the Processing library, or net.compartmental.code:minim:2.2.2 from Maven)");
+    PROCESSING_CORE("processing.core.PVector", "Processing core (core.jar, org.processing:core)");
 
     private final String probeClass;
     private final String label;

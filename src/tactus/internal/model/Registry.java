@@ -10,6 +10,9 @@ import java.util.HashMap;
  * <p>A registry either keeps names unique (masses) or lets several modules share one name (interactions, as
  * the paper's sketches do: seventy contacts all called "col"). With shared names, {@link #id(String)} is the
  * first live module of that name in insertion order, which is how the paper's engine resolves them.
+ *
+ * <p>Removals are lazy: a removed id is marked, and the insertion order is compacted once, when it is next read,
+ * so that removing k modules of N costs O(k + N), not O(k N).
  */
 public final class Registry {
     private final boolean uniqueNames;
@@ -20,6 +23,9 @@ public final class Registry {
     private int size;
     private int[] indexOfId = new int[0];
     private boolean indexStale = true;
+    private boolean[] removed = new boolean[16];   // ids removed but still in order[] until the next compaction
+    private int pending;                           // how many of those
+    private long compactions;
 
     public Registry(boolean uniqueNames) {
         this.uniqueNames = uniqueNames;
@@ -36,6 +42,12 @@ public final class Registry {
         }
         if (id >= names.length) {
             names = Arrays.copyOf(names, Math.max(id + 1, names.length * 2));
+        }
+        if (id >= removed.length) {
+            removed = Arrays.copyOf(removed, Math.max(id + 1, removed.length * 2));
+        }
+        if (removed[id]) {
+            compact();   // the id comes back before its removal was compacted away
         }
         if (size == order.length) {
             order = Arrays.copyOf(order, order.length * 2);
@@ -70,18 +82,41 @@ public final class Registry {
                 byName.put(name, Arrays.copyOf(kept, n));
             }
         }
+        if (!removed[id]) {
+            removed[id] = true;
+            pending++;
+        }
+        indexStale = true;
+    }
+
+    /** Drops the removed ids from the insertion order, in one pass. */
+    private void compact() {
+        if (pending == 0) {
+            return;
+        }
         int w = 0;
         for (int r = 0; r < size; r++) {
-            if (order[r] != id) {
-                order[w++] = order[r];
+            int id = order[r];
+            if (removed[id]) {
+                removed[id] = false;
+            } else {
+                order[w++] = id;
             }
         }
         size = w;
-        indexStale = true;
+        pending = 0;
+        compactions++;
+    }
+
+    /** How many times the insertion order was compacted after removals (for the cost tests). */
+    public long compactions() {
+        return compactions;
     }
 
     public void clear() {
         byName.clear();
+        Arrays.fill(removed, false);
+        pending = 0;
         size = 0;
         indexStale = true;
     }
@@ -103,17 +138,19 @@ public final class Registry {
     }
 
     public int size() {
-        return size;
+        return size - pending;
     }
 
     /** @return the id at an insertion-order index, or -1 when the index is out of range. */
     public int idAt(int index) {
+        compact();
         return index >= 0 && index < size ? order[index] : -1;
     }
 
     /** @return the insertion-order index of a live id, or -1. */
     public int indexOf(int id) {
         if (indexStale) {
+            compact();
             indexOfId = new int[names.length];
             Arrays.fill(indexOfId, -1);
             for (int i = 0; i < size; i++) {
@@ -126,6 +163,7 @@ public final class Registry {
 
     /** @return a copy of the live ids in insertion order. */
     public int[] ids() {
+        compact();
         return Arrays.copyOf(order, size);
     }
 }

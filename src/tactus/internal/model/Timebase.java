@@ -104,6 +104,18 @@ public final class Timebase {
                 engine.setAttraction(id, engine.attraction(id) * r2);
             }
         }
+        java.util.List<double[]> auxSaved = new java.util.ArrayList<>();
+        for (int id : links) {
+            LinkKind kind = engine.linkKind(id);
+            for (int i = 0; i < kind.auxCount(); i++) {
+                double scale = scaleFor(kind.auxUnit(i), ratio);
+                if (scale != 1) {
+                    double v = engine.linkAux(id, i);
+                    auxSaved.add(new double[] {id, i, v});
+                    engine.setLinkAux(id, i, v * scale);
+                }
+            }
+        }
         for (int gid : groupIds) {
             double[] p = engine.contactGroupParams(gid);
             saved[w++] = p[0];
@@ -112,6 +124,9 @@ public final class Timebase {
             engine.setContactGroupParams(gid, p[0], p[1] * r2, p[2] * ratio);
         }
         return () -> {
+            for (double[] a : auxSaved) {
+                engine.setLinkAux((int) a[0], (int) a[1], a[2]);
+            }
             int r = 0;
             for (int id : oscs) {
                 engine.setOscillator(id, saved[r], saved[r + 1]);
@@ -129,6 +144,19 @@ public final class Timebase {
                 r += 3;
             }
         };
+    }
+
+    /** @return the factor a per-step parameter of unit class u takes when the step lengthens by {@code ratio}. */
+    private static double scaleFor(LinkKind.ParamUnit u, double ratio) {
+        switch (u) {
+            case STIFFNESS:
+                return ratio * ratio;
+            case DAMPING:
+            case VELOCITY:
+                return ratio;
+            default:
+                return 1;
+        }
     }
 
     /**

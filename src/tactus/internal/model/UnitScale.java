@@ -1,5 +1,6 @@
 package tactus.internal.model;
 
+import tactus.engine.LinkKind;
 import tactus.engine.Units;
 import tactus.paramSystem;
 
@@ -68,5 +69,39 @@ public final class UnitScale {
 
     public double velocityOut(double v) {
         return Units.velocityToSecond(v, fs);
+    }
+
+    /** Converts a parameter of unit class {@code u} from the model's units to per-step units. */
+    public double paramIn(LinkKind.ParamUnit u, double v) {
+        if (!real) {
+            return v;
+        }
+        switch (u) {
+            case STIFFNESS:
+                return Units.stiffnessToAlgo(v, fs);
+            case DAMPING:
+                return Units.dampingToAlgo(v, fs);
+            case VELOCITY:
+                return Units.velocityToStep(v, fs);
+            default:
+                return v;
+        }
+    }
+
+    /** Converts a parameter of unit class {@code u} from per-step units to the model's units. */
+    public double paramOut(LinkKind.ParamUnit u, double v) {
+        if (!real) {
+            return v;
+        }
+        switch (u) {
+            case STIFFNESS:
+                return Units.stiffnessToReal(v, fs);
+            case DAMPING:
+                return Units.dampingToReal(v, fs);
+            case VELOCITY:
+                return Units.velocityToSecond(v, fs);
+            default:
+                return v;
+        }
     }
 }

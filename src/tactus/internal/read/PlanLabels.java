@@ -30,6 +30,12 @@ public final class PlanLabels {
         LABELS.put("Plane", "plane contacts");
         LABELS.put("Attractor", "attractors");
         LABELS.put("ContactGroupKernel", "contact groups");
+        LABELS.put("Elastic3D", "nonlinear spring-dampers and plucks");
+        LABELS.put("Elastic1D", "1D nonlinear spring-dampers and plucks");
+        LABELS.put("Bow3D", "bows");
+        LABELS.put("Bow1D", "1D bows");
+        LABELS.put("Contact3D", "clipped contacts");
+        LABELS.put("Contact1D", "1D clipped contacts");
     }
 
     private PlanLabels() {

@@ -12,7 +12,7 @@ import tactus.internal.ModelCore;
  */
 public final class WriteBatch extends Command implements EngineWrites {
     private static final int MASS = 0, OSC = 1, LINK = 2, PLANE = 3, ATTR = 4, POS = 5, STATE = 6, FORCE = 7,
-            TARGET = 8, MEDIUM = 9, VELOCITY = 10, POS_KEEP = 11;
+            TARGET = 8, MEDIUM = 9, VELOCITY = 10, POS_KEEP = 11, AUX = 12;
     private final double[] tmp = new double[3];
     private int[] ops = new int[4];
     private int[] ids = new int[4];
@@ -22,7 +22,7 @@ public final class WriteBatch extends Command implements EngineWrites {
     /** @return true when the batch changes a parameter or the medium (not only the state). */
     public boolean changesParameters() {
         for (int i = 0; i < n; i++) {
-            if (ops[i] <= ATTR || ops[i] == MEDIUM) {
+            if (ops[i] <= ATTR || ops[i] == MEDIUM || ops[i] == AUX) {
                 return true;
             }
         }
@@ -81,6 +81,12 @@ public final class WriteBatch extends Command implements EngineWrites {
         v[at] = attr;
     }
 
+    public void setLinkAux(int id, int index, double value) {
+        int at = add(AUX, id);
+        v[at] = index;
+        v[at + 1] = value;
+    }
+
     public void setPosition(int id, double x, double y, double z) {
         put3(add(POS, id), x, y, z);
     }
@@ -137,7 +143,7 @@ public final class WriteBatch extends Command implements EngineWrites {
             int id = ids[i];
             int at = 6 * i;
             int op = ops[i];
-            if (op != MEDIUM && !(op == LINK || op == PLANE || op == ATTR ? e.isLink(id) : e.isMass(id))) {
+            if (op != MEDIUM && !(op == LINK || op == PLANE || op == ATTR || op == AUX ? e.isLink(id) : e.isMass(id))) {
                 full = false;
                 continue;
             }
@@ -158,6 +164,9 @@ public final class WriteBatch extends Command implements EngineWrites {
                     break;
                 case PLANE:
                     e.setPlanePosition(id, v[at]);
+                    break;
+                case AUX:
+                    e.setLinkAux(id, (int) v[at], v[at + 1]);
                     break;
                 case ATTR:
                     e.setAttraction(id, v[at]);

@@ -381,7 +381,7 @@ public final class SnapshotWriter {
                 shapes[l] = SHAPE_PLANE + engine.linkAxis(id);
                 planeLinks[planeCount++] = l;
             } else {
-                shapes[l] = kind == LinkKind.SPRING_DAMPER1D ? SHAPE_1D : SHAPE_3D;
+                shapes[l] = kind.isOneDimensional() ? SHAPE_1D : SHAPE_3D;
             }
         }
         linkCount = nl;

@@ -39,7 +39,7 @@ public final class StabilityMessages {
             String param;
             double value;
             double limit;
-            if (k == LinkKind.DAMPER3D) {
+            if (!k.hasStiffness() && k.hasDamping()) {
                 param = "Z";
                 value = u.dampingOut(e.linkDamping(id));
                 limit = value * scale;

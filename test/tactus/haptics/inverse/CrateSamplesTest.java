@@ -32,7 +32,6 @@ class CrateSamplesTest {
         int samples = 0;
         int withPosition = 0;
         int withGrip = 0;
-        InverseMessageParser parser = new InverseMessageParser();
         for (String[] lit : literals) {
             JsonElement tree = JsonParser.parseString(lit[1]);
             if (!tree.isJsonObject() || !concernsDevices(tree.getAsJsonObject())) {
@@ -42,7 +41,9 @@ class CrateSamplesTest {
             JsonObject o = tree.getAsJsonObject();
             InverseState s = new InverseState();
             char[] text = lit[1].toCharArray();
-            parser.parse(text, text.length, s);
+            // a parser per sample: each is a service's first message (a parser follows the Inverse3 its first
+            // snapshot gave by id, so one parser for every sample would follow the first sample's device)
+            new InverseMessageParser().parse(text, text.length, s);
             assertEquals(1, s.frames, lit[0]);
             JsonArray inv = o.has("inverse3") && o.get("inverse3").isJsonArray() ? o.getAsJsonArray("inverse3") : null;
             if (inv != null) {

@@ -17,7 +17,9 @@ import tactus.haptics.emulator.InverseServiceEmulator;
  * Haply's own client (the {@code haply} crate, in the probe program of test-resources/haply-probe) against our
  * emulator: it must find the Inverse3 in the snapshot, and the forces it sends must be the forces our emulator
  * receives, and the positions it reads must be positions our emulator sent, in order; the crate's HTTP client must
- * read the emulator's GET /version, GET /devices and GET /sessions on the same port.
+ * read the emulator's GET /version, GET /devices and GET /sessions on the same port. The probe prints every warning
+ * and error the crate logs (its parser falls back to partial parsing after logging a schema error, which would
+ * otherwise pass unseen): there must be none.
  */
 @Timeout(value = 25, unit = TimeUnit.MINUTES)   // the first build of the probe compiles about 200 crates
 class HaplyCrateFidelityTest {
@@ -39,7 +41,11 @@ class HaplyCrateFidelityTest {
             boolean version = false;
             boolean httpDevice = false;
             boolean session = false;
+            List<String> logged = new ArrayList<>();
             for (String line : out.split("\n")) {
+                if (line.startsWith("CRATE-")) {
+                    logged.add(line);
+                }
                 String[] w = line.trim().split(" ");
                 if (w[0].equals("DEVICE")) {
                     device |= w[1].equals(InverseServiceEmulator.DEVICE_ID) && w[2].equals("Inverse3");
@@ -57,6 +63,8 @@ class HaplyCrateFidelityTest {
                     done = true;
                 }
             }
+            assertTrue(logged.isEmpty(), "the crate logged warnings or errors reading the emulator (a schema error its "
+                    + "fallback parsing would hide):\n" + String.join("\n", logged));
             assertTrue(device, "the crate lists the emulated Inverse3 from the snapshot:\n" + out);
             assertTrue(done, out);
             assertTrue(version, "the crate's HTTP client reads the emulator's GET /version:\n" + out);
