@@ -1254,7 +1254,7 @@ public class PhysicalModel {
         return getParamController(name);
     }
 
-    /** @return true when a mass or link subset with this name exists. */
+    /** {@return true when a mass or link subset with this name exists} */
     boolean subsetExists(String subset) {
         return query.subsetExists(subset);
     }

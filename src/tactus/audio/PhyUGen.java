@@ -179,7 +179,7 @@ public class PhyUGen extends UGen {
 
     // ------------------------------------------------------------------ binding (never on the audio path in steady state)
 
-    /** @return the stepped view of the model, binding {@link #mdl} first if the subclass replaced it. */
+    /** {@return the stepped view of the model, binding {@link #mdl} first if the subclass replaced it} */
     protected final SteppedModel steppedModel() {
         if (mdl != boundModel) {
             bind();

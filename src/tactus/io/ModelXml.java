@@ -69,8 +69,8 @@ public final class ModelXml {
     }
 
     /**
-     * @return why a file could not be read or written, in words: "there is no such file", "permission denied", or
-     *     the exception's own message
+     * {@return why a file could not be read or written, in words: "there is no such file", "permission denied", or
+     *     the exception's own message}
      */
     static String reason(IOException e) {
         if (e instanceof java.nio.file.NoSuchFileException) {

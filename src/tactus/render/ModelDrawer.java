@@ -256,7 +256,7 @@ public final class ModelDrawer {
         cache.invalidate();
     }
 
-    /** @return how many times inertias and lengths were read from a model under its lock (for tests). */
+    /** {@return how many times inertias and lengths were read from a model under its lock (for tests)} */
     int cacheRefreshes() {
         return cache.refreshes();
     }

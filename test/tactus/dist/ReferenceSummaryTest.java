@@ -18,7 +18,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * Keeps the public reference whole: every public type, constructor and method outside {@code tactus.internal} and
+ * Keeps the public reference whole: every public or protected type, constructor and method outside {@code tactus.internal} and
  * {@code tactus.engine} has a Javadoc whose first sentence is text (a Javadoc that opens with a block tag such as
  * {@code @return} or {@code @param} gives an empty summary in the reference). A method marked {@code @Override}
  * inherits its documentation and is exempt.
@@ -27,7 +27,7 @@ class ReferenceSummaryTest {
 
     /** A public declaration line: a type, a constructor or a method (fields are not in the summary tables). */
     private static final Pattern PUBLIC_DECLARATION = Pattern.compile(
-            "^\\s*public\\s+(?:(?:static|final|abstract|synchronized|default|sealed)\\s+)*"
+            "^\\s*(?:public|protected)\\s+(?:(?:static|final|abstract|synchronized|default|sealed)\\s+)*"
                     + "(?:(?:class|interface|enum|record)\\s+\\w+|[^;=()]*\\()");
 
     @Test
@@ -48,12 +48,14 @@ class ReferenceSummaryTest {
         List<String> paramFirst = List.of("class A {", "    /**", "     * @param k stiffness (N/m)", "     */",
                 "    public void setK(double k) {", "    }", "}");
         List<String> none = List.of("class A {", "    public void step() {", "    }", "}");
+        List<String> protectedNone = List.of("class A {", "    protected final int view() {", "        return 0;", "    }", "}");
         List<String> good = List.of("/** A thing. */", "public class A {", "    /** {@return the mass (kg)} */",
                 "    @Deprecated", "    public double getMass() {", "        return 1;", "    }",
                 "    @Override", "    public String toString() {", "        return \"\";", "    }", "}");
         assertEquals(1, problemsIn("A.java", tagFirst).size());
         assertEquals(1, problemsIn("A.java", paramFirst).size());
         assertEquals(1, problemsIn("A.java", none).size());
+        assertEquals(1, problemsIn("A.java", protectedNone).size());
         assertEquals(List.of(), problemsIn("A.java", good));
     }
 
