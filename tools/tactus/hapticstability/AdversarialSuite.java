@@ -1,0 +1,141 @@
+package tactus.hapticstability;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Consumer;
+import tactus.haptics.HapticLoop;
+import tactus.haptics.passivity.VirtualCoupling;
+
+/**
+ * The adversarial suite of hands and walls (docs/haptics-stability.md, "The adversarial suite"): the cases that try
+ * to break a configuration of the haptic loop, the configurations that existed before the recommended one, and a
+ * main that runs every case on each and prints the Markdown table (simulated time; each run takes its simulated
+ * length, about 1 s). Run: {@code gradle adversarialSuite}.
+ */
+public final class AdversarialSuite {
+    /**
+     * The largest energy the hand may receive (J): the numerical floor of the energy count on passive runs (the
+     * energy integral over the plant's 50 microsecond substeps, the encoders' steps through a wall the loop renders
+     * well inside its bound) is below 2 microjoules; 10 microjoules is five times that and a fifth of 0.05 mJ.
+     */
+    public static final double ENERGY_TOLERANCE = 1e-5;
+    /** The largest force step between ticks (N) that is not a buzz. */
+    public static final double FORCE_STEP_LIMIT = 0.5;
+
+    private AdversarialSuite() {
+    }
+
+    /** No control: the model's force goes to the device as it is. */
+    public static final Consumer<HapticLoop> UNCONTROLLED = loop -> {
+    };
+
+    /** The passivity controller alone, told of the exchange's one tick of delay. */
+    public static final Consumer<HapticLoop> PASSIVITY_CONTROL = loop -> {
+        loop.setExchangeDelay(1);
+        loop.setPassivityControl(true);
+    };
+
+    /** The coupling sized for the pen grip (800 N/m, 1 N s/m) with the controller and its 1 mJ tolerance. */
+    public static final Consumer<HapticLoop> GRIP_COUPLING_PC = loop -> {
+        loop.setExchangeDelay(1);
+        loop.setVirtualCoupling(VirtualCoupling.forContacts(PassivityVariants.GRIP_COUPLING_STIFFNESS,
+                PassivityVariants.GRIP_COUPLING_DAMPING, PassivityVariants.GRIP_LARGEST_CONTACT, 1.0 / loop.rate()));
+        loop.setPassivityTolerance(PassivityVariants.GRIP_TOLERANCE);
+        loop.setPassivityControl(true);
+    };
+
+    /** The configurations of the table, by name. */
+    public static Map<String, Consumer<HapticLoop>> configurations() {
+        Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
+        m.put("uncontrolled", UNCONTROLLED);
+        m.put("passivity control", PASSIVITY_CONTROL);
+        m.put("grip coupling + PC", GRIP_COUPLING_PC);
+        return m;
+    }
+
+    /** A case with friction and no shift. */
+    private static AdversarialCase of(AdversarialCase.Kind kind, AdversarialCase.Grip grip, double multiple,
+                                      double speed) {
+        return new AdversarialCase(kind, grip, multiple * AdversarialCase.K0, speed, true, 0);
+    }
+
+    /**
+     * The suite's cases: every scene with the pen grip at 200 K0, and with friction or without; the grips from a
+     * stiff pinch to a loose hold on presses and wall changes; taps from 50 to 200 mm/s; slow presses at 5 and 20 mm/s;
+     * walls of 20, 80, 200 and 400 K0; a wall change at another phase of the tick.
+     */
+    public static List<AdversarialCase> cases() {
+        List<AdversarialCase> l = new ArrayList<>();
+        AdversarialCase.Grip pen = AdversarialCase.Grip.PEN;
+        for (AdversarialCase.Kind k : new AdversarialCase.Kind[] {AdversarialCase.Kind.SWITCH_ON,
+                AdversarialCase.Kind.MOVE_IN, AdversarialCase.Kind.RELEASE}) {
+            l.add(of(k, pen, 200, 0.02));
+        }
+        l.add(of(AdversarialCase.Kind.STIFFEN, pen, 200, 0.02));
+        l.add(of(AdversarialCase.Kind.STIFFEN, pen, 400, 0.02));
+        for (double m : new double[] {20, 80, 200, 400}) {
+            l.add(of(AdversarialCase.Kind.PRESS, pen, m, 0.02));
+        }
+        l.add(of(AdversarialCase.Kind.PRESS, pen, 200, 0.005));
+        for (double v : new double[] {0.05, 0.2}) {
+            l.add(of(AdversarialCase.Kind.TAP, pen, 200, v));
+        }
+        for (AdversarialCase.Grip g : new AdversarialCase.Grip[] {AdversarialCase.Grip.STIFF_PINCH,
+                AdversarialCase.Grip.LOOSE_HOLD}) {
+            l.add(of(AdversarialCase.Kind.PRESS, g, 200, 0.02));
+            l.add(of(AdversarialCase.Kind.SWITCH_ON, g, 200, 0.02));
+            l.add(of(AdversarialCase.Kind.TAP, g, 400, 0.1));
+        }
+        l.add(of(AdversarialCase.Kind.PRESS, AdversarialCase.Grip.LOOSE_HOLD, 400, 0.005));
+        for (AdversarialCase.Kind k : new AdversarialCase.Kind[] {AdversarialCase.Kind.PRESS,
+                AdversarialCase.Kind.SWITCH_ON, AdversarialCase.Kind.STIFFEN, AdversarialCase.Kind.TAP}) {
+            l.add(new AdversarialCase(k, pen, 200 * AdversarialCase.K0, k == AdversarialCase.Kind.TAP ? 0.1 : 0.02,
+                    false, 0));
+        }
+        l.add(new AdversarialCase(AdversarialCase.Kind.SWITCH_ON, pen, 400 * AdversarialCase.K0, 0.02, true, 0.00037));
+        return l;
+    }
+
+    /**
+     * True if the run passes: stable, energy to the hand within the tolerance, force steps within the limit, and no
+     * tick at which the loop refused the force (a wall the loop's force limit zeroes is not rendered at all).
+     */
+    public static boolean passes(AdversarialRig.Result r) {
+        return r.stable && r.maxEnergyToHand <= ENERGY_TOLERANCE && r.forceStep <= FORCE_STEP_LIMIT && r.faultTicks == 0;
+    }
+
+    /** One Markdown row of the table. */
+    public static String row(String configuration, AdversarialRig.Result r) {
+        return String.format(Locale.ROOT, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2f | %d | %s | %s |", configuration,
+                r.c.label(), r.stable ? "yes" : "**no**", r.maxEnergyToHand * 1e3, r.endEnergyToHand * 1e3,
+                r.observerMaxEnergyToHand * 1e3, r.forceStep, r.faultTicks, Double.isNaN(r.felt) ? "-"
+                        : String.format(Locale.ROOT, "%.0f", r.felt), passes(r) ? "pass" : "**fails**");
+    }
+
+    /** The table's header. */
+    public static final String HEADER = "| configuration | case | stable | max energy to hand (mJ) | at the end (mJ) "
+            + "| observer's max (mJ) | largest force step (N) | refused ticks | felt (N/m) | verdict |\n"
+            + "|---|---|---|---|---|---|---|---|---|---|";
+
+    /** Prints the table for every configuration (or those whose names are given) over every case. */
+    public static void main(String[] args) {
+        Locale.setDefault(Locale.ROOT);
+        System.out.println(HEADER);
+        for (Map.Entry<String, Consumer<HapticLoop>> e : configurations().entrySet()) {
+            if (args.length > 0 && !List.of(args).contains(e.getKey())) {
+                continue;
+            }
+            int failed = 0;
+            List<AdversarialCase> cs = cases();
+            for (AdversarialCase c : cs) {
+                AdversarialRig.Result r = AdversarialRig.run(c, e.getValue());
+                failed += passes(r) ? 0 : 1;
+                System.out.println(row(e.getKey(), r));
+            }
+            System.out.printf("%n%s: %d of %d cases fail%n%n", e.getKey(), failed, cs.size());
+        }
+    }
+}
