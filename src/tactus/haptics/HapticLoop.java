@@ -764,6 +764,84 @@ public final class HapticLoop implements AutoCloseable {
         return port.reserveLimit();
     }
 
+    /**
+     * The stiffness (N/m at the handle) {@link #useStiffContacts} is given for a stiff wall held with a pen grip on a
+     * 2DIY at 1 kHz: the stiffest the energy bound renders there without a force step above 0.5 N between ticks and
+     * with the hand never getting energy back, measured on the emulated plant (docs/haptics-stability.md, "Stiff
+     * contacts").
+     */
+    public static final double TWO_DIY_STIFF_CONTACT = 1600;
+    /** The energy bound's seed {@link #useStiffContacts} sets, J. */
+    private static final double STIFF_CONTACT_SEED = 1e-5;
+    /** The largest rise of the force per tick {@link #useStiffContacts} sets, N. */
+    private static final double STIFF_CONTACT_RISE = 0.5;
+
+    /**
+     * Sets the recommended configuration for stiff walls and contacts, at any time (also while the loop runs): the
+     * energy bound at this stiffness (N/m at the handle), the force allowed to rise by at most 0.5 N per tick, the
+     * passivity controller off and no virtual coupling. The hand then feels every contact as at most this stiff (a
+     * stiffer wall of the model is felt as this stiffness), never gets back more energy than it put in, and a wall that
+     * appears, moves or stiffens around the handle does not push it out. Give it the stiffest contact your device
+     * renders without buzz ({@link #TWO_DIY_STIFF_CONTACT} for the 2DIY at 1 kHz); softer contacts of the model are
+     * rendered as they are. On a Haply board, also {@code setExchangeDelay(1)} before {@link #start()}, so that the
+     * energy account charges each displacement to the force that acted over it.
+     *
+     * @param stiffness the largest stiffness felt, N/m at the handle (finite, &gt; 0)
+     * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
+     */
+    public void useStiffContacts(double stiffness) {
+        if (!(stiffness > 0) || !Double.isFinite(stiffness)) {
+            throw new IllegalArgumentException("HapticLoop.useStiffContacts: stiffness must be a finite number > 0 N/m"
+                    + " (the stiffest contact the hand should feel, e.g. HapticLoop.TWO_DIY_STIFF_CONTACT), got " + stiffness);
+        }
+        port.setControl(false);
+        port.setCoupling(null);
+        port.setEnergyBoundSeed(STIFF_CONTACT_SEED);
+        port.setForceRiseLimit(STIFF_CONTACT_RISE);
+        port.setEnergyBound(stiffness);
+    }
+
+    /**
+     * Bounds the force sent by the energy the hand put in through the port, as a spring of this stiffness (N/m at the
+     * handle; finite, &gt;= 0; 0, the default, switches it off), at any time: the force never holds more energy than
+     * {@code F^2 / (2 K)} allows, so no contact gives the hand back more than it took (up to a seed of 10 µJ), a
+     * contact stiffer than K is felt as K, and the force rises by at most {@link #setForceRiseLimit} per tick.
+     * {@link #useStiffContacts} sets it with the rest of the recommended configuration.
+     *
+     * @throws IllegalArgumentException naming the value when it is negative, infinite or NaN; nothing changes then
+     */
+    public void setEnergyBound(double stiffness) {
+        if (!(stiffness >= 0) || !Double.isFinite(stiffness)) {
+            throw new IllegalArgumentException("HapticLoop.setEnergyBound: stiffness must be a finite number >= 0 N/m"
+                    + " (0 switches the bound off), got " + stiffness);
+        }
+        port.setEnergyBound(stiffness);
+    }
+
+    /** The stiffness (N/m at the handle) of the energy bound; 0 when it is off. */
+    public double energyBound() {
+        return port.energyBound();
+    }
+
+    /**
+     * Sets the largest rise (N at the handle; finite, &gt; 0; default 0.5) of the force's magnitude from one tick to the
+     * next while the {@linkplain #setEnergyBound energy bound} is on, at any time.
+     *
+     * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
+     */
+    public void setForceRiseLimit(double newtons) {
+        if (!(newtons > 0) || !Double.isFinite(newtons)) {
+            throw new IllegalArgumentException("HapticLoop.setForceRiseLimit: limit must be a finite number > 0 N, got "
+                    + newtons);
+        }
+        port.setForceRiseLimit(newtons);
+    }
+
+    /** The largest rise (N) of the force per tick while the energy bound is on. */
+    public double forceRiseLimit() {
+        return port.forceRiseLimit();
+    }
+
     /** The virtual coupling between the handle and the avatar, or null. */
     public VirtualCoupling virtualCoupling() {
         return port.coupling();

@@ -73,10 +73,33 @@ public final class PortLink extends ForwardingAvatarLink {
         return this;
     }
 
+    /** Bounds the force by the energy the hand put in, as a spring of this stiffness (N/m; 0: off). */
+    public PortLink energyBound(double stiffness) {
+        port.setEnergyBound(stiffness);
+        return this;
+    }
+
+    /** Sets the energy bound's seed, J. */
+    public PortLink energyBoundSeed(double joules) {
+        port.setEnergyBoundSeed(joules);
+        return this;
+    }
+
+    /** Sets the largest rise of the force per tick while the energy bound is on, N. */
+    public PortLink forceRiseLimit(double newtons) {
+        port.setForceRiseLimit(newtons);
+        return this;
+    }
+
     /** Sets the friction compensation. */
     public PortLink friction(FrictionCompensation f) {
         port.setFriction(f);
         return this;
+    }
+
+    /** The port itself (its options and figures). */
+    public HapticPort port() {
+        return port;
     }
 
     /** The observer. */

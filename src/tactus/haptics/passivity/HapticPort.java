@@ -17,6 +17,7 @@ import tactus.haptics.HapticLoop;
 public final class HapticPort {
     private final PassivityObserver observer = new PassivityObserver();
     private final PassivityController controller = new PassivityController();
+    private final EnergyBound bound = new EnergyBound();
     private volatile boolean controlOn;
     private volatile FrictionCompensation friction;
     private volatile VirtualCoupling coupling;   // as set, from any thread
@@ -143,6 +144,44 @@ public final class HapticPort {
         return coupling;
     }
 
+    /**
+     * Bounds the port's force by the energy the hand put in, as a spring of this stiffness (N/m, > 0; 0: off), from
+     * any thread; see {@link EnergyBound}. Switched on, the budget starts at the seed.
+     */
+    public void setEnergyBound(double stiffness) {
+        bound.setStiffness(stiffness);
+    }
+
+    /** The stiffness (N/m) the energy bound assumes; 0 when it is off. */
+    public double energyBound() {
+        return bound.stiffness();
+    }
+
+    /** Sets the energy bound's seed (J, >= 0): what a contact may push with before the hand has put anything in. */
+    public void setEnergyBoundSeed(double joules) {
+        bound.setSeed(joules);
+    }
+
+    /** The energy bound's seed, J. */
+    public double energyBoundSeed() {
+        return bound.seed();
+    }
+
+    /** Sets the largest rise (N, > 0) of the force's magnitude from one tick to the next while the bound is on. */
+    public void setForceRiseLimit(double newtons) {
+        bound.setRise(newtons);
+    }
+
+    /** The largest rise of the force per tick while the bound is on, N. */
+    public double forceRiseLimit() {
+        return bound.rise();
+    }
+
+    /** The energy bound's budget (J) after the last tick: what the force sent may still hold. */
+    public double energyBudget() {
+        return bound.budget();
+    }
+
     /** Sets the friction compensation (null: none), from any thread. */
     public void setFriction(FrictionCompensation f) {
         friction = f;
@@ -179,6 +218,7 @@ public final class HapticPort {
         slot = 0;
         active = null;
         controller.reset();
+        bound.reset();
         observer.reset();
     }
 
@@ -216,6 +256,7 @@ public final class HapticPort {
             }
             boolean on = controlOn;
             controller.observe(into, on);
+            bound.observe(into);
             observer.record(into, damped);
         }
         if (late == 0) {
@@ -254,6 +295,7 @@ public final class HapticPort {
         }
         if (!fresh) {
             controller.observe(0, controlOn);
+            bound.observe(0);
             observer.record(0, 0);
             lateSpan = n + 1 - lastFresh;
             return;
@@ -282,6 +324,7 @@ public final class HapticPort {
         velocity[1] = dy / span;
         velocity[2] = dz / span;
         controller.observe(into, controlOn);
+        bound.observe(into);
         observer.record(into, damped);
         System.arraycopy(position, 0, previous, 0, 3);
         lastFresh = n;
@@ -323,6 +366,7 @@ public final class HapticPort {
                 f[i] = -onProxy;
             }
         }
+        bound.apply(f);
         double alpha = 0;
         if (controlOn) {
             System.arraycopy(f, 0, damper, 0, 3);
