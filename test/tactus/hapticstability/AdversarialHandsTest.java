@@ -38,13 +38,27 @@ class AdversarialHandsTest {
 
     @Test
     @Timeout(value = 90, unit = TimeUnit.SECONDS)   // 24 runs of about 1 s of simulated time each
-    @Disabled("until the recommended configuration's call exists: switch StiffContactsUnderTest.configure to it")
+    @Disabled("useStiffContacts(TWO_DIY_STIFF_CONTACT) still fails 11 of 24 cases (docs/haptics-stability.md, "
+            + "\"The adversarial suite\"): enable when it passes")
     void theRecommendedConfigurationPassesEveryCase() {
         List<AdversarialCase> cases = AdversarialSuite.cases();
         assertTrue(cases.size() >= 20, "the suite has " + cases.size() + " cases");
         List<String> failed = failures(StiffContactsUnderTest::configure, cases);
         assertTrue(failed.isEmpty(), failed.size() + " of " + cases.size() + " cases fail:\n"
                 + AdversarialSuite.HEADER + "\n" + String.join("\n", failed));
+    }
+
+    @Test
+    void theSuitePassesAWallTheLoopRendersWithoutControl() {
+        // 10 K0 with the pen grip (it holds about 20 K0 uncontrolled): a press and a tap are passive and still
+        AdversarialCase press = new AdversarialCase(AdversarialCase.Kind.PRESS, AdversarialCase.Grip.PEN,
+                10 * AdversarialCase.K0, 0.02, true, 0);
+        AdversarialCase tap = new AdversarialCase(AdversarialCase.Kind.TAP, AdversarialCase.Grip.PEN,
+                10 * AdversarialCase.K0, 0.1, true, 0);
+        for (AdversarialCase c : new AdversarialCase[] {press, tap}) {
+            AdversarialRig.Result r = AdversarialRig.run(c, AdversarialSuite.UNCONTROLLED);
+            assertTrue(AdversarialSuite.passes(r), AdversarialSuite.HEADER + "\n" + AdversarialSuite.row("uncontrolled", r));
+        }
     }
 
     @Test

@@ -56,6 +56,8 @@ public final class AdversarialRig {
         public double observerMaxEnergyToHand;
         /** The largest change of the force the loop sent from one tick to the next, N. */
         public double forceStep;
+        /** True if that largest change made the force larger (a rise), false if smaller (a fall, as at a release). */
+        public boolean forceStepRises;
         /** The stiffness the hand felt (N/m): see {@link AdversarialRig}'s docs page; NaN if not read. */
         public double felt;
         /** The loop's failure message, or null. */
@@ -98,6 +100,7 @@ public final class AdversarialRig {
         final BoardEmulator em;
         final double tStart;
         final double eventAt;
+        final double endAt;
         final double[] obsT;
         final double[] obsNet;
         final double[] f = new double[3];
@@ -108,12 +111,15 @@ public final class AdversarialRig {
         double lastX = Double.NaN;
         double lastY;
         double forceStep;
+        boolean forceStepRises;
+        long faultTicks = -1;
 
-        Watch(AvatarLink inner, BoardEmulator em, double tStart, double eventAt, int capacity) {
+        Watch(AvatarLink inner, BoardEmulator em, double tStart, double eventAt, double endAt, int capacity) {
             super(inner);
             this.em = em;
             this.tStart = tStart;
             this.eventAt = eventAt;
+            this.endAt = endAt;
             obsT = new double[capacity];
             obsNet = new double[capacity];
         }
@@ -122,10 +128,17 @@ public final class AdversarialRig {
         public void step(int n) {
             HapticLoop l = loop;
             double now = em.time() - tStart;
-            if (l != null) {
+            if (l != null && now > endAt && faultTicks < 0) {
+                faultTicks = l.telemetry().faultTicks;   // the run's ticks only: the loop runs on until stopped
+            }
+            if (l != null && now <= endAt) {
                 l.deviceForce(f);
                 if (!Double.isNaN(lastX)) {
-                    forceStep = Math.max(forceStep, Math.hypot(f[0] - lastX, f[1] - lastY));
+                    double step = Math.hypot(f[0] - lastX, f[1] - lastY);
+                    if (step > forceStep) {
+                        forceStep = step;
+                        forceStepRises = Math.hypot(f[0], f[1]) > Math.hypot(lastX, lastY);
+                    }
                 }
                 lastX = f[0];
                 lastY = f[1];
@@ -191,7 +204,7 @@ public final class AdversarialRig {
             pm.init();
             double eventAt = c.eventTime();
             watch = new Watch(new PhysicalModelAvatar(pm, "avatar"), em, tStart,
-                    Double.isNaN(eventAt) ? Double.POSITIVE_INFINITY : eventAt, ticks + 20);
+                    Double.isNaN(eventAt) ? Double.POSITIVE_INFINITY : eventAt, ticks * PERIOD, ticks + 20);
             HapticLoop loop = new HapticLoop(dev, preset.newKinematics(), watch);
             loop.useRealUnits();
             loop.setOrigin(-x0, -y0, 0);
@@ -215,7 +228,7 @@ public final class AdversarialRig {
                 LockSupport.parkNanos(200_000);
             }
             loop.stop();
-            r.faultTicks = loop.telemetry().faultTicks;
+            r.faultTicks = watch.faultTicks >= 0 ? watch.faultTicks : loop.telemetry().faultTicks;
             r.failure = loop.failure();
             em.setProbe(null);
         }
@@ -290,6 +303,7 @@ public final class AdversarialRig {
         }
         r.observerMaxEnergyToHand = oMax;
         r.forceStep = watch.forceStep;
+        r.forceStepRises = watch.forceStepRises;
         // residual: RMS of y about its 20 ms moving average in the settled window
         int w = Math.max(1, (int) Math.round(0.02 / dt));
         double[] pre = new double[n + 1];
@@ -324,24 +338,7 @@ public final class AdversarialRig {
             return Double.NaN;
         }
         if (c.kind == AdversarialCase.Kind.PRESS) {
-            double sp = 0;
-            double sf = 0;
-            double spp = 0;
-            double spf = 0;
-            int np = 0;
-            for (int i = firstIn; i < rec.n && rec.t[i] < c.inEnd(); i++) {
-                double pen = wallY - rec.y[i];
-                if (pen > 0) {
-                    double f = -rec.fy[i];
-                    sp += pen;
-                    sf += f;
-                    spp += pen * pen;
-                    spf += pen * f;
-                    np++;
-                }
-            }
-            double den = np * spp - sp * sp;
-            return np > 10 && den > 0 ? (np * spf - sp * sf) / den : Double.NaN;
+            return Touch.pressSlope(rec.t, rec.y, rec.fy, rec.n, firstIn, wallY, c.inEnd());
         }
         double[] win = c.settledWindow();
         double sf = 0;

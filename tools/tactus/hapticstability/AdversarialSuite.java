@@ -47,12 +47,19 @@ public final class AdversarialSuite {
         loop.setPassivityControl(true);
     };
 
+    /** The recommended configuration for stiff walls on the 2DIY: the energy bound at the 2DIY's stiff contact. */
+    public static final Consumer<HapticLoop> STIFF_CONTACTS = loop -> {
+        loop.setExchangeDelay(1);
+        loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+    };
+
     /** The configurations of the table, by name. */
     public static Map<String, Consumer<HapticLoop>> configurations() {
         Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
         m.put("uncontrolled", UNCONTROLLED);
         m.put("passivity control", PASSIVITY_CONTROL);
         m.put("grip coupling + PC", GRIP_COUPLING_PC);
+        m.put("stiff contacts", STIFF_CONTACTS);
         return m;
     }
 
@@ -109,10 +116,12 @@ public final class AdversarialSuite {
 
     /** One Markdown row of the table. */
     public static String row(String configuration, AdversarialRig.Result r) {
-        return String.format(Locale.ROOT, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2f | %d | %s | %s |", configuration,
-                r.c.label(), r.stable ? "yes" : "**no**", r.maxEnergyToHand * 1e3, r.endEnergyToHand * 1e3,
-                r.observerMaxEnergyToHand * 1e3, r.forceStep, r.faultTicks, Double.isNaN(r.felt) ? "-"
-                        : String.format(Locale.ROOT, "%.0f", r.felt), passes(r) ? "pass" : "**fails**");
+        return String.format(Locale.ROOT, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2f (%s) | %d | %s | %s |",
+                configuration, r.c.label(), r.stable ? "yes" : String.format(Locale.ROOT, "**no** (%.1f um)",
+                        r.residual * 1e6), r.maxEnergyToHand * 1e3, r.endEnergyToHand * 1e3,
+                r.observerMaxEnergyToHand * 1e3, r.forceStep, r.forceStepRises ? "rise" : "fall", r.faultTicks,
+                Double.isNaN(r.felt) ? "-" : String.format(Locale.ROOT, "%.0f", r.felt),
+                passes(r) ? "pass" : "**fails**");
     }
 
     /** The table's header. */

@@ -108,15 +108,26 @@ public final class Touch {
         // felt stiffness: the slope of the hand's push against the penetration while it presses in slowly (a
         // least-squares line, so that a constant sliding friction and the hand's damping at a steady speed drop out),
         // from the first contact to the end of the press
+        double felt = pressSlope(t.t, t.y, t.fy, n, firstIn, wall, pressEnd) / c.stiffness;
+        boolean stable = t.failure == null && residual < RESIDUAL_LIMIT;
+        return new Touch(stable, peak, residual, energy, felt, Double.NaN);
+    }
+
+    /**
+     * The least-squares slope (N/m) of the hand's push (-fy) against the penetration below the wall (wall - y, m), over
+     * the samples from firstIn (-1: none) while the time is before pressEnd and the handle is inside; NaN with 10
+     * samples or fewer.
+     */
+    static double pressSlope(double[] time, double[] y, double[] fy, int n, int firstIn, double wall, double pressEnd) {
         double sp = 0;
         double sf = 0;
         double spp = 0;
         double spf = 0;
         int np = 0;
-        for (int i = Math.max(0, firstIn); firstIn >= 0 && i < n && t.t[i] < pressEnd; i++) {
-            double pen = wall - t.y[i];
+        for (int i = Math.max(0, firstIn); firstIn >= 0 && i < n && time[i] < pressEnd; i++) {
+            double pen = wall - y[i];
             if (pen > 0) {
-                double f = -t.fy[i];
+                double f = -fy[i];
                 sp += pen;
                 sf += f;
                 spp += pen * pen;
@@ -125,8 +136,6 @@ public final class Touch {
             }
         }
         double den = np * spp - sp * sp;
-        double felt = np > 10 && den > 0 ? ((np * spf - sp * sf) / den) / c.stiffness : Double.NaN;
-        boolean stable = t.failure == null && residual < RESIDUAL_LIMIT;
-        return new Touch(stable, peak, residual, energy, felt, Double.NaN);
+        return np > 10 && den > 0 ? (np * spf - sp * sf) / den : Double.NaN;
     }
 }
