@@ -15,7 +15,12 @@
  * The red dot is the avatar, the ring the handle, the blue line the handle's recent path. The 2DIY's motors give at most about 1.5 N,
  * so a deep push only feels the torque limit: the buzz is at the face of the wall.
  *
- * Controls: P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
+ * By default the sketch uses the recommended setting for stiff walls (S): loop.useStiffContacts
+ * bounds the force by the energy your hand put in, so the wall is felt as stiff as the 2DIY can
+ * render without buzz (1600 N/m), never gives back more than it took, and a wall that appears
+ * or stiffens under the handle (keys 1-4) does not push it out.
+ *
+ * Controls: S stiff-contact setting on/off, P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
  * T print the loop's telemetry.
  * Units: ALGO_UNITS, 1 model unit = 1 pixel; the wall's stiffness is given in N/m at the handle.
  */
@@ -32,7 +37,8 @@ float forceGain = 1;                  // newtons per model force unit
 float[] wallNm = {300, 1000, 3000, 10000};   // wall stiffness at the handle, N/m
 int wallChoice = 2;
 float wallX;                          // the wall's face, pixels: the wall fills x < wallX
-boolean controller = true;
+boolean stiff = true;                 // the recommended configuration for stiff walls (S)
+boolean controller = false;
 boolean coupling = false;
 double deviceDamping = 0.5;           // N s/m: the emulator's handle; measure your device's
 int history = 300;                    // frames in the plot
@@ -78,6 +84,10 @@ void startLoop() {
     loop.setVirtualCoupling(VirtualCoupling.forDevice(deviceDamping, 1.0 / loop.rate(), 1));
   }
   loop.setPassivityControl(controller);
+  if (stiff) {
+    // felt as at most 1600 N/m, passive, no buzz, also when the wall changes under the handle
+    loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+  }
   loop.start();
   lastOut = 0;
   lastDissipated = 0;
@@ -174,7 +184,16 @@ void drawPlot(float x, float y, float w, float h) {
 }
 
 void keyPressed() {
-  if (key == 'p' || key == 'P') {
+  if (key == 's' || key == 'S') {
+    stiff = !stiff;
+    if (stiff) {
+      loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);   // at once, while the loop runs
+      controller = false;
+      coupling = false;
+    } else {
+      loop.setEnergyBound(0);
+    }
+  } else if (key == 'p' || key == 'P') {
     controller = !controller;
     loop.setPassivityControl(controller);   // switches at once, while the loop runs
   } else if (key == 'v' || key == 'V') {

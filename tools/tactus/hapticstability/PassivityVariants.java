@@ -62,8 +62,30 @@ public final class PassivityVariants {
     }
 
     /**
+     * The recommended configuration for stiff walls ("stiff contacts"): the energy bound at
+     * {@code HapticLoop.TWO_DIY_STIFF_CONTACT}, its seed and its rise limit, as {@code HapticLoop.useStiffContacts}
+     * sets them, with the plant's exchange delay.
+     */
+    static WallRig.Variant stiffContacts(int delayTicks) {
+        return new WallRig.Variant() {
+            @Override
+            public String name() {
+                return "stiff contacts";
+            }
+
+            @Override
+            public AvatarLink wrap(AvatarLink model, double period) {
+                return new PortLink(model, period, 1, 1, false).delay(delayTicks)
+                        .energyBound(tactus.haptics.HapticLoop.TWO_DIY_STIFF_CONTACT).energyBoundSeed(1e-5)
+                        .forceRiseLimit(0.5);
+            }
+        };
+    }
+
+    /**
      * The passivity controller ("passivity control"), the coupling ("virtual coupling"), both ("coupling + PC") and
-     * the coupling sized for the grip with the controller and its 1 mJ tolerance ("grip coupling + PC"), for a device
+     * the coupling sized for the grip with the controller and its 1 mJ tolerance ("grip coupling + PC") and the
+     * recommended configuration for stiff walls ("stiff contacts", {@link #stiffContacts}), for a device
      * of this damping along the wall's axis (N s/m) and exchange delay (ticks).
      */
     public static List<WallRig.Variant> all(double deviceDamping, int delayTicks) {
@@ -72,6 +94,7 @@ public final class PassivityVariants {
                 variant("coupling + PC", true, deviceDamping, delayTicks, true),
                 variant("grip coupling + PC", true, GRIP_TOLERANCE, delayTicks,
                         t -> VirtualCoupling.forContacts(GRIP_COUPLING_STIFFNESS, GRIP_COUPLING_DAMPING,
-                                GRIP_LARGEST_CONTACT, t)));
+                                GRIP_LARGEST_CONTACT, t)),
+                stiffContacts(delayTicks));
     }
 }

@@ -2,23 +2,26 @@ package tactus.haptics.passivity;
 
 /**
  * Energy bounding of the port's force (after Kim &amp; Ryu): the force sent may never hold more energy, as a spring of
- * stiffness K, than the hand has put in through the port plus a small seed, {@code |F|^2 / (2 K) <= E + E0}. No
- * damper and no velocity multiplies the force, so the encoders' steps do not make it buzz.
+ * stiffness K, than the budget the hand has put in through the port plus a small seed,
+ * {@code |F|^2 / (2 K) <= E + E0}. No damper and no velocity multiplies the force, so the encoders' steps do not
+ * make it buzz.
  *
- * <p>The budget E is the port's ledger (the work of the held forces over the measured displacements, as the
- * {@link PassivityObserver} counts it, with the exchange delay), trimmed each tick to what the force sent holds,
- * {@code E <= |F|^2 / (2 K)}: energy the hand spent on the model's dampers, or in free space, is no reserve for a later
- * contact, so a contact that appears, moves or stiffens around the handle starts with the seed only. While the cap
- * binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the energy the
- * hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact stiffer than
- * K is felt as K. A rise of |F| is limited to a given step per tick (it only removes energy); falls are not limited.
+ * <p>The budget E is the port's ledger (the work of the held forces over the measured displacements, with the exchange
+ * delay, as the {@link PassivityObserver} counts it), trimmed each tick to what the force sent would hold in a spring
+ * {@value #TRIM} times softer than K, {@code E <= TRIM |F|^2 / (2 K)}: energy the hand spent on the model's dampers,
+ * or in free space, is no reserve for a later contact, so a contact that appears, moves or stiffens around the handle
+ * starts with the seed only; a contact down to K / {@value #TRIM} still gets back, on release, what it stored. While
+ * the cap binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the
+ * energy the hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact
+ * stiffer than K is felt as K. A rise of |F| is limited to a given step per tick (it only removes energy); falls are
+ * not limited.
  *
- * <p>The budget is kept at or above zero: a deficit is forgiven. With the 2DIY's encoders (about 0.15 mm per count at
- * the handle along y) the ledger charges a one-count flicker at the contact with |F| times a count, which can exceed
- * the whole stored energy near the surface; a budget left below zero would hold the force at zero for the rest of the
- * contact (measured: the wall vanished). The cost is that the hand may get up to the seed back per such event; the
- * energy the plant really gave the hand is what the tests bound. The cap reacts to a release one exchange late (it
- * does not predict the displacement: a prediction from the quantised velocity made force steps of 0.6-0.7 N).
+ * <p>A deficit (E below zero: the port gave back more than the budget, over a release the cap reacted to one exchange
+ * late, or over an encoder count that the ledger charges in full) is forgiven only down to the port's net energy since
+ * the bound was switched on: {@code E >= min(0, N)}. So the energy the port has given the hand, as the ledger counts
+ * it, stays below the seed plus what one exchange can leak; and a hand that has put more in than it got back is not
+ * held at zero force by a deficit the encoders' steps made. The cap does not predict the next displacement: a
+ * prediction from the quantised velocity made force steps of 0.6-0.7 N on the 2DIY.
  *
  * <p>One thread (the haptic loop's) calls everything but the setters; nothing allocates.
  */
@@ -27,12 +30,15 @@ final class EnergyBound {
     static final double DEFAULT_SEED = 1e-5;
     /** The default largest rise of the force per tick, N. */
     static final double DEFAULT_RISE = 0.5;
+    /** How much softer than K a contact may be and still get back, on release, the energy it stored. */
+    static final double TRIM = 8;
 
     private volatile double stiffness;                // N/m; 0: off
     private volatile double seed = DEFAULT_SEED;      // J
     private volatile double rise = DEFAULT_RISE;      // N per tick
     private boolean on;                               // what the loop's thread last saw
     private double budget;                            // J
+    private double net;                               // J: the port's net energy in since the bound was switched on
     private double lastMagnitude;                     // |F| sent at the last tick, N
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
@@ -70,12 +76,14 @@ final class EnergyBound {
     void reset() {
         on = false;
         budget = 0;
+        net = 0;
         lastMagnitude = 0;
     }
 
     /** Adds the energy (J) that entered the model through the port during the last tick. */
     void observe(double intoModel) {
         budget += intoModel;
+        net += intoModel;
     }
 
     /** Caps the force f (N, in place) sent at this tick; returns the factor f was scaled by (1 when untouched). */
@@ -90,11 +98,14 @@ final class EnergyBound {
         if (!on) {
             on = true;
             budget = 0;   // switched on: a contact starts with the seed only, whatever came before
+            net = 0;
         }
-        if (budget < 0) {
-            budget = 0;
+        double floor = Math.min(0, net);
+        if (budget < floor) {
+            budget = floor;
         }
-        double cap = Math.min(Math.sqrt(2 * k * (budget + seed)), lastMagnitude + rise);
+        double available = budget + seed;
+        double cap = Math.min(available > 0 ? Math.sqrt(2 * k * available) : 0, lastMagnitude + rise);
         double scale = 1;
         if (magnitude > cap) {
             scale = cap / magnitude;
@@ -103,7 +114,7 @@ final class EnergyBound {
             f[2] *= scale;
             magnitude = cap;
         }
-        budget = Math.min(budget, magnitude * magnitude / (2 * k));
+        budget = Math.min(budget, TRIM * magnitude * magnitude / (2 * k));
         lastMagnitude = magnitude;
         return scale;
     }

@@ -4,9 +4,15 @@ import java.util.Locale;
 import tactus.haptics.AvatarLink;
 import tactus.haptics.emulator.PlantParameters;
 
-/** Scratch scan of the energy bound (args: K multiples...). */
-public final class BoundScan {
-    private BoundScan() {
+/**
+ * The energy bound ({@code HapticLoop.useStiffContacts}) on the sweep's pen-grip press through the real loop on the
+ * emulated 2DIY: per wall (args: multiples of K0 = 40.7 N/m), stability, the stiffness felt while holding, the energy
+ * the plant gave the hand (at the end and the most at any instant) and the largest force step. System properties:
+ * kb (the bound's stiffness, N/m; default the wall's), seed (J), rise (N), scale (encoder counts multiplied),
+ * period (s), trace, ticks/from/to (print per tick). docs/haptics-stability.md, "Stiff contacts".
+ */
+public final class StiffContactScan {
+    private StiffContactScan() {
     }
 
     static WallRig.Variant bound(double kb, double seed, double rise) {
@@ -50,7 +56,7 @@ public final class BoundScan {
     }
 
     /** Felt stiffness while holding (N/m): mean hand force over mean penetration in the hold window. */
-    static double feltHolding(WallRig.Config c, WallRig.Trace t) {
+    public static double feltHolding(WallRig.Config c, WallRig.Trace t) {
         double wall = WallRig.wallY(c);
         double sf = 0, sp = 0;
         for (int i = 0; i < t.n; i++) {
@@ -63,7 +69,7 @@ public final class BoundScan {
     }
 
     /** The largest energy (J) the device had given the hand at any instant (running sum of -F_hand . v dt). */
-    static double peakEnergyToHand(WallRig.Trace t) {
+    public static double peakEnergyToHand(WallRig.Trace t) {
         double e = 0, peak = 0;
         for (int i = 1; i < t.n; i++) {
             e += -(t.fx[i] * t.vx[i] + t.fy[i] * t.vy[i]) * (t.t[i] - t.t[i - 1]);
