@@ -107,11 +107,29 @@ public final class AdversarialSuite {
     }
 
     /**
-     * True if the run passes: stable, energy to the hand within the tolerance, force steps within the limit, and no
-     * tick at which the loop refused the force (a wall the loop's force limit zeroes is not rendered at all).
+     * The least felt stiffness, as a fraction of the wall's stiffness or of the stiffest wall the pen grip holds without
+     * control (20 K0), whichever is smaller, for a press or a stiffened wall: a configuration that passes by not
+     * rendering the wall fails here.
+     */
+    public static final double FELT_FRACTION = 0.5;
+
+    /** The least felt stiffness for this case (N/m); 0 where the suite does not ask for one. */
+    public static double feltFloor(AdversarialCase c) {
+        if (c.kind != AdversarialCase.Kind.PRESS && c.kind != AdversarialCase.Kind.STIFFEN) {
+            return 0;   // taps and releases have no hold; a wall that appears around the handle need not push it out
+        }
+        return FELT_FRACTION * Math.min(c.stiffness, 20 * AdversarialCase.K0);
+    }
+
+    /**
+     * True if the run passes: stable, energy to the hand within the tolerance, force steps within the limit, no tick
+     * at which the loop refused the force (a wall the loop's force limit zeroes is not rendered at all), and the wall
+     * felt at least {@link #feltFloor}.
      */
     public static boolean passes(AdversarialRig.Result r) {
-        return r.stable && r.maxEnergyToHand <= ENERGY_TOLERANCE && r.forceStep <= FORCE_STEP_LIMIT && r.faultTicks == 0;
+        double floor = feltFloor(r.c);
+        return r.stable && r.maxEnergyToHand <= ENERGY_TOLERANCE && r.forceStep <= FORCE_STEP_LIMIT && r.faultTicks == 0
+                && (floor == 0 || r.felt >= floor);
     }
 
     /** One Markdown row of the table. */
