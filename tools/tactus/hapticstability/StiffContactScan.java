@@ -9,7 +9,7 @@ import tactus.haptics.emulator.PlantParameters;
  * emulated 2DIY: per wall (args: multiples of K0 = 40.7 N/m), stability, the stiffness felt while holding, the energy
  * the plant gave the hand (at the end and the most at any instant) and the largest force step. System properties:
  * kb (the bound's stiffness, N/m; default the wall's), seed (J), rise (N), scale (encoder counts multiplied),
- * period (s), trace, ticks/from/to (print per tick). docs/haptics-stability.md, "Stiff contacts".
+ * period (s), uncontrolled (true: no bound), hand (m,k,b of the grip), trace, ticks/from/to (print per tick). docs/haptics-stability.md, "Stiff contacts".
  */
 public final class StiffContactScan {
     private StiffContactScan() {
@@ -85,6 +85,15 @@ public final class StiffContactScan {
         for (String a : args) {
             double k = Double.parseDouble(a) * 40.7;
             WallRig.Config c = StabilitySweep.pressConfig(PlantParameters.twoDiy(), bound(System.getProperty("kb") != null ? Double.parseDouble(System.getProperty("kb")) : k, seed, rise), k, 0);
+            if (Boolean.getBoolean("uncontrolled")) {
+                c.variant = WallRig.UNCONTROLLED;
+            }
+            String hand = System.getProperty("hand");   // m,k,b of the grip (kg, N/m, N s/m); default the pen grip
+            if (hand != null) {
+                String[] h = hand.split(",");
+                c.hand = tactus.haptics.emulator.Hand.grasp(StabilitySweep.press(c.preset.d() / 2, WallRig.START_Y, c.gap,
+                        0.003), Double.parseDouble(h[0]), Double.parseDouble(h[1]), Double.parseDouble(h[2]));
+            }
             c.encoderScale = Float.parseFloat(System.getProperty("scale", "1"));
             c.period = Double.parseDouble(System.getProperty("period", "0.001"));
             c.ticks = (int) Math.round(1.8 / c.period);
