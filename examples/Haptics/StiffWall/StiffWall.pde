@@ -15,10 +15,11 @@
  * The red dot is the avatar, the ring the handle, the blue line the handle's recent path. The 2DIY's motors give at most about 1.5 N,
  * so a deep push only feels the torque limit: the buzz is at the face of the wall.
  *
- * By default the sketch uses the recommended setting for stiff walls (S): loop.useStiffContacts
- * bounds the force by the energy your hand put in, so the wall is felt as stiff as the 2DIY can
- * render without buzz (1600 N/m), never gives back more than it took, and a wall that appears
- * or stiffens under the handle (keys 1-4) does not push it out.
+ * S tries the energy bound (loop.useStiffContacts): the force is bounded by the energy your hand
+ * put in, so the wall never gives back more than it took and does not buzz, felt as at most
+ * 1600 N/m. It is not the default yet: it can lose the wall (no force at all) in slow presses, with
+ * a loose hold and after the wall is stiffened under the handle (docs/haptics-stability.md,
+ * "Stiff contacts" and "The adversarial suite"). P (the passivity controller) is on at start.
  *
  * Controls: S stiff-contact setting on/off, P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
  * T print the loop's telemetry.
@@ -37,8 +38,8 @@ float forceGain = 1;                  // newtons per model force unit
 float[] wallNm = {300, 1000, 3000, 10000};   // wall stiffness at the handle, N/m
 int wallChoice = 2;
 float wallX;                          // the wall's face, pixels: the wall fills x < wallX
-boolean stiff = true;                 // the recommended configuration for stiff walls (S)
-boolean controller = false;
+boolean stiff = false;                // the energy bound for stiff walls (S), not yet the default
+boolean controller = true;
 boolean coupling = false;
 double deviceDamping = 0.5;           // N s/m: the emulator's handle; measure your device's
 int history = 300;                    // frames in the plot
@@ -192,6 +193,8 @@ void keyPressed() {
       coupling = false;
     } else {
       loop.setEnergyBound(0);
+      controller = true;                       // back to the start's setting
+      loop.setPassivityControl(true);
     }
   } else if (key == 'p' || key == 'P') {
     controller = !controller;

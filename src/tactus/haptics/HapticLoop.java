@@ -777,14 +777,19 @@ public final class HapticLoop implements AutoCloseable {
     private static final double STIFF_CONTACT_RISE = 0.5;
 
     /**
-     * Sets the recommended configuration for stiff walls and contacts, at any time (also while the loop runs): the
+     * Sets the energy-bound configuration for stiff walls and contacts, at any time (also while the loop runs): the
      * energy bound at this stiffness (N/m at the handle), the force allowed to rise by at most 0.5 N per tick, the
      * passivity controller off and no virtual coupling. The hand then feels every contact as at most this stiff (a
      * stiffer wall of the model is felt as this stiffness), never gets back more energy than it put in, and a wall that
-     * appears, moves or stiffens around the handle does not push it out. Give it the stiffest contact your device
-     * renders without buzz ({@link #TWO_DIY_STIFF_CONTACT} for the 2DIY at 1 kHz); softer contacts of the model are
-     * rendered as they are. On a Haply board, also {@code setExchangeDelay(1)} before {@link #start()}, so that the
-     * energy account charges each displacement to the force that acted over it.
+     * appears or moves around the handle does not push it out. Give it the stiffest contact your device renders
+     * without buzz ({@link #TWO_DIY_STIFF_CONTACT} for the 2DIY at 1 kHz). On a Haply board, also
+     * {@code setExchangeDelay(1)} before {@link #start()}, so that the energy account charges each displacement to the
+     * force that acted over it.
+     *
+     * <p>Known failures, measured on the emulated 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall
+     * can be lost (no force at all) in slow presses, with a loose hold, after the wall is stiffened under the handle,
+     * and for contacts softer than this stiffness; a fast tap can step the force by about 1 N. For a wall that must
+     * never be lost, use the grip coupling ({@link VirtualCoupling#forContacts}) with the passivity controller.
      *
      * @param stiffness the largest stiffness felt, N/m at the handle (finite, &gt; 0)
      * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
