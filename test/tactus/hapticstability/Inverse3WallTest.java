@@ -60,6 +60,20 @@ class Inverse3WallTest {
     }
 
     @Test
+    void anActuationDelayOfOneTickMovesTheEdgeToTheTheorysOneTickLimit() {
+        // the plant's torques act 1 ms after the command: the loop is the d = 1 one (333.6 N/m here); when the delay
+        // acted one 50 us substep early the edge came out at 345.5 N/m, 3.6 % above, and 1.02 of the theory held
+        double theory = SampledWallTheory.stiffnessLimit(M, B, T, 1, 0);
+        PlantParameters delayed = FULL.withoutFriction().withActuationDelay(T);
+        Inverse3WallRig.Trace below = run(delayed, Inverse3WallSweep.AXIS_Y, 0.98 * theory, false,
+                Inverse3WallRig.Mode.HAPTICS_ONLY);
+        Inverse3WallRig.Trace above = run(delayed, Inverse3WallSweep.AXIS_Y, 1.02 * theory, false,
+                Inverse3WallRig.Mode.HAPTICS_ONLY);
+        assertFalse(below.unstable(), "stable at 0.98 of the one-tick edge " + theory + " N/m");
+        assertTrue(above.unstable(), "unstable at 1.02 of the one-tick edge " + theory + " N/m");
+    }
+
+    @Test
     void thePassivityControllerHoldsADiagonalWallThatIsUnstableWithoutIt() {
         double k = 4 * SampledWallTheory.stiffnessLimit(M, B, T, 0, 0);   // the edge with friction is 2.9 K0 here
         Inverse3WallRig.Trace off = run(FULL, Inverse3WallSweep.DIAGONAL, k, false, Inverse3WallRig.Mode.HAPTICS_ONLY);

@@ -112,7 +112,8 @@ public final class DevicePlant {
     }
 
     /**
-     * Commands motor torques (N m or N, one per joint): they act after the actuation delay (at once if it is 0). A
+     * Commands motor torques (N m or N, one per joint): they act after the actuation delay (at once if it is 0), from
+     * the first substep that starts at or after it (a delay between two substeps is rounded up to the next). A
      * command still waiting when the next arrives is applied first, so a delay longer than the command period
      * shortens to it.
      */
@@ -167,8 +168,8 @@ public final class DevicePlant {
      */
     public boolean moveRigidly(double[] target, double h) {
         System.arraycopy(q, 0, qSaved, 0, n);
-        time += h;
         applyPending();
+        time += h;
         if (!kin.inverse(target, q) || !kin.forward(q, x, j)) {
             System.arraycopy(qSaved, 0, q, 0, n);
             kin.forward(q, x, j);
@@ -189,8 +190,8 @@ public final class DevicePlant {
      * hand's push on the handle) and an added task-space mass (kg, the hand's, moving with the handle).
      */
     public void step(double h, double[] externalForce, double addedMass) {
+        applyPending();   // a torque due at the start of this substep acts over all of it (not over the one before)
         time += h;
-        applyPending();
         double m = p.handleMass() + addedMass;
         // dJ/dt dq from the change of J since the last step
         for (int r = 0; r < n; r++) {

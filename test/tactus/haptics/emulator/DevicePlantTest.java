@@ -79,18 +79,29 @@ class DevicePlantTest {
     }
 
     @Test
-    void aTorqueActsAfterTheActuationDelay() {
-        PlantParameters p = PlantParameters.cartesian3Dof().withoutFriction().withActuationDelay(4e-4);
-        DevicePlant pl = axis(p);
-        double h = p.substep();
-        pl.commandTorques(new double[] {1});
-        int before = (int) Math.round(4e-4 / h) - 1;
-        for (int i = 0; i < before; i++) {
-            pl.step(h, NO_FORCE, 0);
-            assertEquals(0, pl.motorTorque(0), 0.0, "no torque yet at " + pl.time() + " s");
+    void aTorqueActsFromExactlyTheActuationDelayOnRoundedUpToASubstep() {
+        // delays of whole substeps and between them; the handle first moves in the substep that starts at the delay
+        // (before the fix it moved one 50 us substep early: a 1 ms delay acted from 0.95 ms)
+        double[] delays = {0, 5e-5, 4e-4, 5e-4, 1e-3, 2.5e-3, 1.02e-3};
+        for (double delay : delays) {
+            PlantParameters p = PlantParameters.cartesian3Dof().withoutFriction().withActuationDelay(delay);
+            DevicePlant pl = axis(p);
+            double h = p.substep();
+            pl.commandTorques(new double[] {1});
+            double[] v = new double[1];
+            double movedFrom = Double.NaN;
+            for (int i = 0; i < 200 && movedFrom != movedFrom; i++) {
+                double start = pl.time();
+                pl.step(h, NO_FORCE, 0);
+                pl.velocity(v);
+                if (v[0] != 0) {
+                    movedFrom = start;
+                }
+            }
+            double expected = Math.ceil(delay / h - 1e-9) * h;
+            assertEquals(expected, movedFrom, 1e-12, "a torque commanded at 0 with an actuation delay of " + delay
+                    + " s acts from the first substep starting at or after it");
         }
-        pl.step(h, NO_FORCE, 0);
-        assertEquals(1, pl.motorTorque(0), 0.0, "the torque acts at 0.4 ms");
     }
 
     @Test

@@ -20,7 +20,7 @@ import tactus.haptics.emulator.BoardEmulator;
  * The energy bound ({@link EnergyBound}, {@code HapticLoop.useStiffContacts}) on one axis of the emulator's plant with
  * the hold and one tick of delay ({@link SampledPlant}), a pen-grip-like hand (0.05 kg with the handle, 300 N/m,
  * 2 N s/m; assumed) and a stiff one-sided wall whose stiffness and presence a test may change while the handle is
- * inside: the device gives the hand at most 30 uJ at any tick (the 10 uJ seed and what one exchange leaks), the force
+ * inside: the device gives the hand at most 40 uJ at any tick (the 10 uJ seed and what one exchange leaks), the force
  * never steps by more than 0.5 N. Simulated time. What this fixture shows the bound does not do yet (a slow press into
  * a 16 kN/m wall by this frictionless light handle ends with no force at all) is in docs/haptics-stability.md.
  */
@@ -29,8 +29,11 @@ class EnergyBoundTest {
     private static final double T = 1e-3;
     private static final double BOUND = 1600;          // N/m, HapticLoop.TWO_DIY_STIFF_CONTACT
     private static final double STIFF = 16_000;        // N/m, the model's wall (400 K0 on the 2DIY)
-    /** The energy (J) the hand may get at any tick: the 10 uJ seed and what one exchange leaks before the cap reacts. */
-    private static final double TOLERANCE = 3e-5;
+    /**
+     * The energy (J) the hand may get at any tick: the 10 uJ seed and what one exchange leaks before the cap reacts
+     * (4 Hz taps: 34.5 uJ since the fixture's one tick of delay lasts a whole tick, not one 50 us substep less).
+     */
+    private static final double TOLERANCE = 4e-5;
     private static final double STEP = 0.5;
 
     /** A one-sided wall at x = 0 (free space at x > 0), stiffness and presence settable between ticks. */
