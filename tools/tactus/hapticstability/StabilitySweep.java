@@ -198,31 +198,51 @@ public final class StabilitySweep {
         }
         System.out.println();
         System.out.println("| variant | B (N s/m) | theory, linear plant (N/m) | passivity (N/m) | emulator, no hand (N/m) "
-                + "| emulator, pen grip: last stable K of the scan (N/m) |");
-        System.out.println("|---|---|---|---|---|---|");
-        LineChart chart = new LineChart("Z-width of the emulated 2DIY (T = 1 ms, one tick of delay)",
-                "wall damping B (N s/m)", "largest stable wall stiffness K (N/m)").markers(true).logY(true);
+                + "| emulator, pen grip: last stable K of the scan (N/m) | pen grip: felt there (N/m) |");
+        System.out.println("|---|---|---|---|---|---|---|");
+        LineChart chart = new LineChart("Z-width of the emulated 2DIY with a pen grip (T = 1 ms, one tick of delay)",
+                "wall damping B (N s/m)", "stiffness the hand feels at the stiffest stable wall (N/m)")
+                .markers(true).logY(true);
+        double scanTop = HAND_GRID[HAND_GRID.length - 1] * theory[0];
         try (PrintWriter w = new PrintWriter(csv, StandardCharsets.UTF_8)) {
             w.println("variant,wall_damping_Ns_per_m,theory_N_per_m,passivity_N_per_m,emulator_no_hand_N_per_m,"
-                    + "emulator_pen_grip_N_per_m");
+                    + "emulator_pen_grip_N_per_m,pen_grip_felt_N_per_m,pen_grip_stable_to_scan_top");
             for (WallRig.Variant v : VARIANTS) {
                 double[] kn = new double[nb];
                 double[] kh = new double[nb];
+                double[] felt = new double[nb];
                 for (int i = 0; i < nb; i++) {
                     double guess = Double.isFinite(theory[i]) ? theory[i] : ax.damping / 0.001;
                     kn[i] = EmulatorBoundary.find(springConfig(plant, v, 0, bs[i]), 0.5 * guess, 2 * guess, 0.02);
                     kh[i] = EmulatorBoundary.lastStable(pressConfig(plant, v, 0, bs[i]), HAND_GRID, theory[0]);
-                    w.printf("%s,%g,%g,%g,%g,%g%n", v.name(), bs[i], theory[i], pass[i], kn[i], kh[i]);
-                    System.out.printf("| %s | %.3f | %.1f | %.1f | %.1f | %.0f |%n", v.name(), bs[i], theory[i], pass[i],
-                            kn[i], kh[i]);
+                    felt[i] = Double.NaN;
+                    if (kh[i] > 0) {
+                        WallRig.Config c = pressConfig(plant, v, kh[i], bs[i]);
+                        Touch r = EmulatorBoundary.judge(c, WallRig.run(c));
+                        felt[i] = r.feltFraction * kh[i];
+                    }
+                    boolean top = kh[i] >= scanTop * (1 - 1e-9);
+                    w.printf("%s,%g,%g,%g,%g,%g,%g,%b%n", v.name(), bs[i], theory[i], pass[i], kn[i], kh[i], felt[i], top);
+                    System.out.printf("| %s | %.3f | %.1f | %.1f | %.1f | %.0f%s | %.0f |%n", v.name(), bs[i], theory[i],
+                            pass[i], kn[i], kh[i], top ? " (scan's top)" : "", felt[i]);
                 }
-                addSeries(chart, v.name() + ", emulator, no hand", bs, kn);
-                addSeries(chart, v.name() + ", emulator, pen grip", bs, kh);
+                ZWidthPoints z = ZWidthPoints.of(bs, kh, felt, scanTop);
+                if (z.edgeB.length > 0) {
+                    chart.series(v.name(), z.edgeB, z.edgeFelt);
+                }
+                chart.lowerBounds(v.name() + ", still stable at the scan's top (at least)", z.boundB, z.boundFelt);
             }
         }
-        addSeries(chart, "theory, linear plant, no hand", bs, theory);
-        addSeries(chart, "passivity bound b > KT(d + 1/2) + |B|", bs, pass);
-        chart.save(png, 900, 560);
+        addSeries(chart, "theory: uncontrolled linear device alone (felt = K)", bs, theory);
+        addSeries(chart, "passivity bound b > KT(d + 1/2) + |B| (none from B = b on)", bs, pass);
+        chart.note(String.format(Locale.ROOT, "Emulator only, no real device measured. 2DIY plant as assumed: m = %.4f kg,"
+                + " b = %.3f N s/m along y; Coulomb friction and a higher static threshold assumed (not measured);", ax.mass,
+                ax.damping));
+        chart.note("encoders 4880 counts/rev (about 148 um at the handle), 12-bit PWM, 0.123 N m clip; T = 1 ms, d = 1 tick."
+                + " Pen grip assumed: 0.03 kg, 300 N/m, 2 N s/m, pressing at 20 mm/s.");
+        chart.note(String.format(Locale.ROOT, "Felt = least-squares slope of the hand's push over the penetration while"
+                + " pressing, at the stiffest wall of the scan 5..400 K0 (K0 = %.1f N/m) that stayed stable.", theory[0]));
+        chart.save(png, 900, 640);
     }
 
     /** Adds the finite, positive points of a series (a log axis cannot show the others). */

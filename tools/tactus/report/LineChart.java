@@ -69,6 +69,8 @@ public final class LineChart {
     private final String yLabel;
     private final List<String> names = new ArrayList<>();
     private final List<double[][]> points = new ArrayList<>();
+    private final List<Boolean> lowerBounds = new ArrayList<>();
+    private final List<String> notes = new ArrayList<>();
     private boolean logX;
     private boolean logY;
     private boolean markers;
@@ -158,7 +160,65 @@ public final class LineChart {
         }
         names.add(n);
         points.add(new double[][] {xs.clone(), ys.clone()});
+        lowerBounds.add(false);
         return this;
+    }
+
+    /**
+     * Adds a series of lower bounds (censored points: the true value is at least y, for example a search that was
+     * still stable at its top), drawn as upward arrows from each point, not joined by lines, in the next colour.
+     * A series with no point is not added (no legend entry without a mark).
+     *
+     * @param name the name shown in the legend
+     * @param xs   the x of each point
+     * @param ys   the lower bound at each point, as many as {@code xs}
+     * @return this chart
+     * @throws IllegalArgumentException as {@link #series}
+     */
+    public LineChart lowerBounds(String name, double[] xs, double[] ys) {
+        if (xs != null && xs.length == 0 && ys != null && ys.length == 0) {
+            return this;
+        }
+        series(name, xs, ys);
+        lowerBounds.set(lowerBounds.size() - 1, true);
+        return this;
+    }
+
+    /**
+     * Adds a line of small text under the chart (an assumption behind the data, say), in the order added.
+     *
+     * @param line the text; {@code null} or empty adds nothing
+     * @return this chart
+     */
+    public LineChart note(String line) {
+        if (line != null && !line.isEmpty()) {
+            notes.add(line);
+        }
+        return this;
+    }
+
+    /**
+     * Tells whether a series is drawn as lower bounds (arrows).
+     *
+     * @param index the series index, from 0
+     * @return true for a series added by {@link #lowerBounds}
+     */
+    public boolean isLowerBounds(int index) {
+        return lowerBounds.get(index);
+    }
+
+    /** An upward arrow whose foot is at the point: a stem of 16 pixels and a head. */
+    private static java.awt.Shape arrow() {
+        java.awt.geom.Path2D.Double a = new java.awt.geom.Path2D.Double();
+        a.moveTo(-1, 0);
+        a.lineTo(-1, -11);
+        a.lineTo(-5, -11);
+        a.lineTo(0, -18);
+        a.lineTo(5, -11);
+        a.lineTo(1, -11);
+        a.lineTo(1, 0);
+        a.closePath();
+        return a;
     }
 
     /** @return the number of series added so far */
@@ -275,6 +335,12 @@ public final class LineChart {
             renderer.setSeriesPaint(i, color(i));
             renderer.setSeriesStroke(i, stroke(pass));
             renderer.setSeriesShape(i, marker(pass));
+            if (lowerBounds.get(i)) {
+                renderer.setSeriesShape(i, arrow());
+                renderer.setSeriesShapesVisible(i, true);
+                renderer.setSeriesShapesFilled(i, true);
+                renderer.setSeriesLinesVisible(i, false);
+            }
         }
 
         XYPlot plot = new XYPlot(data, axis(xLabel, logX, false), axis(yLabel, logY, true), renderer);
@@ -295,6 +361,12 @@ public final class LineChart {
             TextTitle t = new TextTitle(title, new Font(Font.SANS_SERIF, Font.BOLD, 15));
             t.setPaint(TEXT);
             chart.setTitle(t);
+        }
+        for (int i = notes.size() - 1; i >= 0; i--) {   // bottom titles stack outwards: the last added goes first
+            TextTitle t = new TextTitle(notes.get(i), new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+            t.setPaint(TEXT);
+            t.setPosition(RectangleEdge.BOTTOM);
+            chart.addSubtitle(t);
         }
         LegendTitle legend = chart.getLegend();
         if (legend != null) {
