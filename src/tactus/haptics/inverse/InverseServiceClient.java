@@ -61,6 +61,7 @@ public final class InverseServiceClient implements AutoCloseable {
     private volatile String lost;
     private volatile boolean closed;
     private volatile boolean closedAfterZero;
+    private volatile boolean peerClosed;   // the service closed its side (or the connection failed)
     private volatile long sentNanos;
     private volatile long sent;
     private volatile long busy;
@@ -321,7 +322,7 @@ public final class InverseServiceClient implements AutoCloseable {
     }
 
     private boolean trySend(double fx, double fy, double fz) {
-        return trySend(fx, fy, fz, false);
+        return trySend(fx, fy, fz, false, false);
     }
 
     /**
@@ -330,15 +331,23 @@ public final class InverseServiceClient implements AutoCloseable {
      * nothing, while the previous message is still being written or once the connection is lost or closed.
      */
     boolean ping() {
-        return lost == null && !closed && trySend(0, 0, 0, true);
+        return lost == null && !closed && trySend(0, 0, 0, true, false);
     }
 
-    private boolean trySend(double fx, double fy, double fz, boolean empty) {
+    /**
+     * Sends one message unless another is being written; {@code closing}: the zero force of {@link #close()}, the only
+     * message sent once closed. The closed flag is read after taking the sending flag, so a force whose caller saw
+     * the client open just before {@link #close()} either goes out before the zero force or not at all.
+     */
+    private boolean trySend(double fx, double fy, double fz, boolean empty, boolean closing) {
         if (!sending.compareAndSet(false, true)) {
             busy++;
             return false;
         }
         try {
+            if (closed && !closing) {
+                return false;
+            }
             CompletableFuture<WebSocket> p = pending;
             if (p != null) {
                 if (!p.isDone()) {
@@ -381,7 +390,7 @@ public final class InverseServiceClient implements AutoCloseable {
     public boolean zeroForce() {
         long deadline = System.nanoTime() + 100_000_000L;
         while (lost == null && socket != null) {
-            if (trySend(0, 0, 0)) {
+            if (trySend(0, 0, 0, false, true)) {
                 CompletableFuture<WebSocket> p = pending;
                 try {
                     p.get(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L), TimeUnit.MILLISECONDS);
@@ -476,6 +485,14 @@ public final class InverseServiceClient implements AutoCloseable {
         if (ws != null) {
             try {
                 ws.sendClose(WebSocket.NORMAL_CLOSURE, "tactus closed").get(250, TimeUnit.MILLISECONDS);
+                // wait (at most 250 ms) for the service's own close: aborting while its answers are still unread
+                // resets the connection, and a reset can discard our zero force before the service has read it
+                long until = System.nanoTime() + 250_000_000L;
+                while (!peerClosed && System.nanoTime() - until < 0) {
+                    Thread.sleep(1);
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             } catch (Exception e) {
                 // the socket may already be gone: abort below
             }
@@ -568,6 +585,7 @@ public final class InverseServiceClient implements AutoCloseable {
 
         @Override
         public CompletionStage<?> onClose(WebSocket ws, int statusCode, String reason) {
+            peerClosed = true;
             lose("the Haply Inverse Service at " + uri + " closed the connection (code " + statusCode
                     + (reason == null || reason.isEmpty() ? "" : ", " + reason) + "): was it stopped or restarted?");
             return null;
@@ -575,6 +593,7 @@ public final class InverseServiceClient implements AutoCloseable {
 
         @Override
         public void onError(WebSocket ws, Throwable error) {
+            peerClosed = true;
             lose("the connection to the Haply Inverse Service at " + uri + " failed: " + error);
         }
     }

@@ -121,6 +121,46 @@ class InverseServiceRoundTripTest {
     }
 
     @Test
+    void aForceSentWhileAnotherThreadClosesNeverFollowsTheZeroForce() throws Exception {
+        // the haptic thread keeps sending while the sketch closes (beside a CPU hog a sender that checked "open" just
+        // before close() once wrote its force after the zero); the moment of close() varies from run to run
+        for (int run = 0; run < 20; run++) {
+            try (InverseServiceEmulator emu = InverseServiceEmulator.start(0)) {
+                emu.setRecording(true);
+                InverseServiceClient c = InverseServiceClient.connect(emu.uri(), 3000);
+                InverseState s = new InverseState();
+                exchange(c, s, 2, 0, 0);
+                java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
+                Thread sender = new Thread(() -> {
+                    while (!stop.get()) {
+                        try {
+                            c.sendForce(1, 2, 3);
+                        } catch (HaplyLinkException e) {
+                            return;   // closed: what the loop sees next
+                        }
+                        Thread.yield();
+                    }
+                }, "racing-sender");
+                sender.start();
+                Thread.sleep(1 + run % 7);
+                c.close();
+                stop.set(true);
+                sender.join(2_000);
+                long deadline = System.nanoTime() + 2_000_000_000L;
+                while (emu.zeroedOnDisconnect() == 0 && System.nanoTime() < deadline) {
+                    Thread.yield();
+                }
+                List<double[]> got = emu.receivedForces();
+                double[] last = got.get(got.size() - 1);
+                assertEquals(0, last[0] * last[0] + last[1] * last[1] + last[2] * last[2], 0,
+                        "run " + run + ": the last force the service got is zero, after " + got.size() + " forces; zero written: "
+                        + c.closedAfterZero() + ": " + got.stream().map(java.util.Arrays::toString)
+                        .collect(java.util.stream.Collectors.joining(" ")));
+            }
+        }
+    }
+
+    @Test
     void anAbsentServiceIsNamedQuicklyAndClearly() throws Exception {
         int port;
         try (ServerSocket free = new ServerSocket(0)) {
