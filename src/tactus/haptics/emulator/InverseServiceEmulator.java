@@ -89,6 +89,8 @@ public final class InverseServiceEmulator implements AutoCloseable {
     private volatile boolean keepOnClose;
     private volatile boolean exclusive;
     private WebSocketServerConnection owner;          // the session whose force is on (guarded by this)
+    private volatile long ownerLingerNanos;           // how long a closed owner session still owns the device
+    private long ownerReleasedAtNanos;                // when a closed owner's ownership ends (guarded by this)
     private volatile long lastForceNanos;             // its last force command (written holding this)
     private volatile long forceZeroedAtNanos;
     private volatile long forcesRefused;
@@ -254,6 +256,17 @@ public final class InverseServiceEmulator implements AutoCloseable {
      */
     public void setExclusive(boolean on) {
         exclusive = on;
+    }
+
+    /**
+     * Keeps an exclusive owner's ownership for this long after its connection ends, in milliseconds (0, the
+     * default: it ends with the connection): a service that notices a vanished client late.
+     */
+    public void setOwnerLinger(long ms) {
+        if (ms < 0) {
+            throw new IllegalArgumentException("owner linger " + ms + " ms: give 0 or more milliseconds");
+        }
+        ownerLingerNanos = ms * 1_000_000L;
     }
 
     /**
@@ -479,8 +492,20 @@ public final class InverseServiceEmulator implements AutoCloseable {
             zeroedOnDisconnect++;
         }
         if (owner == c) {
-            owner = null;
+            if (ownerLingerNanos > 0) {
+                ownerReleasedAtNanos = System.nanoTime() + ownerLingerNanos;
+            } else {
+                owner = null;
+            }
         }
+    }
+
+    /** Whether a session other than {@code from} owns the device at {@code now}. Called holding this. */
+    private boolean ownedByAnother(WebSocketServerConnection from, long now) {
+        if (owner == null || owner == from) {
+            return false;
+        }
+        return connections.contains(owner) || now - ownerReleasedAtNanos < 0;
     }
 
     /** Sets the device's force, noting when it goes from non-zero to zero. Called holding this. */
@@ -607,7 +632,7 @@ public final class InverseServiceEmulator implements AutoCloseable {
         long now = System.nanoTime();
         if (force) {
             forceCommands++;
-            if (exclusive && owner != null && owner != from && connections.contains(owner)) {
+            if (exclusive && ownedByAnother(from, now)) {
                 forcesRefused++;   // device-busy: another session owns it
             } else {
                 owner = from;

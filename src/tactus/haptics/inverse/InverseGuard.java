@@ -30,8 +30,9 @@ import tactus.haptics.HaplyLinkException;
  * on Linux it waits up to {@value #STARVED_LIMIT_MS} ms while the sketch's heartbeat thread is runnable, that is
  * starved rather than stopped): one zero force through its session, counted in the shared memory so that the
  * sketch ramps its force back in when it runs again;</li>
- * <li>when its standard input ends or the sketch's process is gone without {@code clean}: zero force, then it
- * closes its session and exits. Every wait is bounded: it halts at the latest {@value #ACT_LIMIT_MS} ms after
+ * <li>when its standard input ends or the sketch's process is gone without {@code clean}: zero force, resent every
+ * {@value #RETRY_PAUSE_MS} ms for up to {@value #RETRY_MS} ms until the service reports it taken (the dead sketch's
+ * session may own the device until the service sees its connection end), then it closes its session and exits. Every wait is bounded: it halts at the latest {@value #ACT_LIMIT_MS} ms after
  * it starts acting.</li>
  * </ul>
  * After each zero it reads the force the service reports, and says so if the service did not take the zero
@@ -44,6 +45,10 @@ public final class InverseGuard {
     static final String PROFILE = "tactus-guard";
     /** How long the guard may spend acting on a gone sketch before it halts, in milliseconds. */
     static final long ACT_LIMIT_MS = 3_000;
+    /** How long the guard keeps resending a zero the service has not taken, in milliseconds. */
+    static final long RETRY_MS = 1_500;
+    /** The pause between two zeros the service has not taken, in milliseconds. */
+    static final long RETRY_PAUSE_MS = 5;
     /** How long a starved (runnable) sketch JVM may give no heartbeat before the guard acts anyway, in milliseconds. */
     static final long STARVED_LIMIT_MS = 500;
     private static final long PARENT_POLL_MS = 100;
@@ -222,7 +227,30 @@ public final class InverseGuard {
         return took;
     }
 
-    /** Zeroes the force once, within {@link #ACT_LIMIT_MS}, closes the session, and ends the process. */
+    /**
+     * Sends zero force until the service reports it taken, for at most {@link #RETRY_MS} ms; says how it ended.
+     * A sketch's JVM that has just died may still own the device for a few milliseconds, until the service sees its
+     * connection end, and a service refuses a second session's force meanwhile.
+     */
+    private String zeroUntilTaken() {
+        long deadline = System.nanoTime() + RETRY_MS * 1_000_000L;
+        String said = zero();
+        int attempts = 1;
+        while (!taken() && System.nanoTime() - deadline < 0) {
+            LockSupport.parkNanos(RETRY_PAUSE_MS * 1_000_000L);
+            said = zero();
+            attempts++;
+        }
+        return attempts == 1 ? said : said + " (attempt " + attempts + ": the service "
+                + (taken() ? "took it once the sketch's session had ended)" : "never took it within " + RETRY_MS + " ms)");
+    }
+
+    /** Whether the service's last reported force is zero. */
+    private boolean taken() {
+        return state.fx == 0 && state.fy == 0 && state.fz == 0;
+    }
+
+    /** Zeroes the force, within {@link #ACT_LIMIT_MS}, closes the session, and ends the process. */
     private void act(String why) {
         synchronized (this) {
             if (acting) {
@@ -240,7 +268,7 @@ public final class InverseGuard {
             if (m != null) {
                 m.countAct();
             }
-            System.err.println("tactus inverse guard: " + why + "; " + zero());
+            System.err.println("tactus inverse guard: " + why + "; " + zeroUntilTaken());
             System.err.flush();
         }
         quit();

@@ -105,7 +105,33 @@ class InverseGuardTest {
             awaitZero(emu, t0, c, "SIGKILL, guarded");
             await(() -> c.log().contains("tactus inverse guard: the sketch's JVM"), 5_000, () -> "the guard says so:\n"
                     + c.log());
-            assertEquals(0, emu.forcesRefused(), "the guard's zero was taken");
+            String log = c.log();
+            assertTrue(log.contains("sent zero force"), "the guard's zero went out:\n" + log);
+            assertTrue(!log.contains("never took it") && !log.contains("did not take"), "the guard's zero was taken:\n"
+                    + log);
+            if (emu.forcesRefused() > 0) {   // refused while the killed session still owned the device: then resent
+                assertTrue(log.contains("took it once the sketch's session had ended"), emu.forcesRefused()
+                        + " zeros refused, and the guard does not say it resent one until it was taken:\n" + log);
+            }
+        }
+    }
+
+    @Test
+    void theGuardResendsItsZeroUntilAServiceThatSeesTheKilledSessionEndLateTakesIt() throws Exception {
+        try (InverseServiceEmulator emu = worstCase()) {
+            emu.setExclusive(true);
+            emu.setOwnerLinger(150);   // the killed session owns the device for 150 ms after its connection ends
+            Child c = child(emu, true);
+            long t0 = System.nanoTime();
+            c.process.destroyForcibly();
+            long ms = awaitZero(emu, t0, c, "SIGKILL, guarded, owner lingers 150 ms");
+            await(() -> c.log().contains("tactus inverse guard: the sketch's JVM"), 5_000, () -> "the guard says so:\n"
+                    + c.log());
+            String log = c.log();
+            assertTrue(emu.forcesRefused() > 0, "the lingering owner refused the guard's first zero (" + ms + " ms)");
+            assertTrue(log.contains("took it once the sketch's session had ended"), "the guard resent its zero until "
+                    + "it was taken, and says so:\n" + log);
+            assertTrue(ms >= 150, "zero only once the ownership ended, after " + ms + " ms");
         }
     }
 
