@@ -119,9 +119,21 @@ class ExamplesTest {
         Path png = work.resolve("frame.png");
         String source = pdeSource(dir);
         String input = inputScript(source);
+        Map<String, String> props = Map.of(RECORD_PROPERTY, wav.toAbsolutePath().toString(),
+                SketchRunner.INPUT_PROPERTY, input);
         SketchHarness.Run run = SketchHarness.run(sketch.className, classes, classpath, FRAMES, png,
-                TIMEOUT_SECONDS, sketchCopy, Map.of(RECORD_PROPERTY, wav.toAbsolutePath().toString(),
-                        SketchRunner.INPUT_PROPERTY, input));
+                TIMEOUT_SECONDS, sketchCopy, props);
+        if (joglStartStarved(run)) {
+            // Processing's OpenGL surface gives setup() and the first frame 5 s (processing4 issue 340); software
+            // OpenGL under Xvfb on a 2-core machine at load 5-8 took longer twice. Once more, and said.
+            System.out.println(sketch.className + ": the OpenGL surface did not start within Processing's 5 s "
+                    + "(machine load " + loadAverage() + "); running it once more");
+            deleteTree(sketchCopy);
+            copyTree(dir, sketchCopy);
+            Files.deleteIfExists(wav);
+            run = SketchHarness.run(sketch.className, classes, classpath, FRAMES, png, TIMEOUT_SECONDS, sketchCopy,
+                    props);
+        }
         SketchHarness.check(run, FRAMES);
         int expectedEvents = SketchRunner.inputEvents(input, 100, 100).size();
         if (!run.stdout.contains(SketchRunner.INPUT_MARKER + expectedEvents)) {
@@ -168,6 +180,20 @@ class ExamplesTest {
         System.out.printf(Locale.ROOT, "%s: %d frames in %.1f s (JVM and Xvfb start included), frame %s, "
                 + "%.1f %% drawn, %.1f %% changed since frame %d%s; then %d input events (%s)%n", sketch.className,
                 run.frames, run.seconds, png, 100 * drawn, 100 * changed, FRAMES / 2, sound, expectedEvents, input);
+    }
+
+    /** Whether a run ended only because Processing's OpenGL animator waited more than 5 s for setup to finish. */
+    static boolean joglStartStarved(SketchHarness.Run run) {
+        return run.stderr.contains("Waited 5000ms for") && run.stderr.contains("PSurfaceJOGL")
+                && run.frames <= 0;
+    }
+
+    private static String loadAverage() {
+        try {
+            return Files.readString(Path.of("/proc/loadavg")).split(" ")[0];
+        } catch (IOException | RuntimeException e) {
+            return "unknown";
+        }
     }
 
     private static final Pattern KEY_EQUALS = Pattern.compile("\\bkey\\s*==\\s*'(\\\\.|[^'\\\\])'");

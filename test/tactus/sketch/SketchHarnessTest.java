@@ -180,4 +180,16 @@ class SketchHarnessTest {
         AssertionError e = assertThrows(AssertionError.class, () -> SketchHarness.check(run, 10));
         assertTrue(e.getMessage().contains("blank"), e.getMessage());
     }
+
+    @Test
+    void onlyAnOpenGlSurfaceThatNeverStartedCountsAsStarvedAndIsRunAgain() {
+        String starved = "java.lang.RuntimeException: Waited 5000ms for: <9322f69, 7f5d03f>[count 2, qsz 0, owner "
+                + "<main-FPSAWTAnimator#00-Timer0>] - <main-FPSAWTAnimator#00-Timer0-FPSAWTAnimator#00-Timer1>\n"
+                + "\tat processing.opengl.PSurfaceJOGL.lambda$initAnimator$2(PSurfaceJOGL.java:409)\n";
+        assertTrue(ExamplesTest.joglStartStarved(new SketchHarness.Run("S", 3, 3, -1, null, "", starved, 15)));
+        assertTrue(!ExamplesTest.joglStartStarved(new SketchHarness.Run("S", 3, 3, 120, null, "", starved, 15)),
+                "a sketch that drew frames before the wait is not retried");
+        assertTrue(!ExamplesTest.joglStartStarved(new SketchHarness.Run("S", 3, 3, -1, null, "",
+                "java.lang.NullPointerException\n\tat S.setup(S.java:12)\n", 15)), "any other failure is not retried");
+    }
 }
