@@ -18,7 +18,7 @@
  * S tries the energy bound (loop.useStiffContacts): the force is bounded by the energy your hand
  * put in, so the wall never gives back more than it took and does not buzz, felt as at most
  * 1600 N/m. It is not the default yet: it can lose the wall (no force at all) in slow presses, with
- * a loose hold and after the wall is stiffened under the handle (docs/haptics-stability.md,
+ * a loose hold and on a device without friction (docs/haptics-stability.md,
  * "Stiff contacts" and "The adversarial suite"). P (the passivity controller) is on at start.
  *
  * Controls: S stiff-contact setting on/off, P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,

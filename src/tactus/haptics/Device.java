@@ -363,6 +363,15 @@ public class Device {
         return out;
     }
 
+    /**
+     * The resolution of the encoder with this index (1 or 2 on a 2DIY), in counts per turn as given to
+     * {@link #add_encoder}; NaN when there is no such encoder.
+     */
+    public float resolution(int index) {
+        Sensor e = index >= 1 && index <= MAX_INDEX ? encoders[index - 1] : null;
+        return e == null ? Float.NaN : e.get_resolution();
+    }
+
     /** Writes the encoder angle of encoder index (1..4) in degrees, or NaN if absent, without allocating. */
     public float angle(int index) {
         Sensor e = index >= 1 && index <= MAX_INDEX ? encoders[index - 1] : null;

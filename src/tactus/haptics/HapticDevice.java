@@ -46,6 +46,17 @@ public interface HapticDevice extends AutoCloseable {
     void velocity(double[] out);
 
     /**
+     * The position's quantum at the current pose: the largest change of the position along each axis when each of
+     * the device's sensors moves by at most one count, in metres, written into out[0..2]. The default writes 0 (a resolution too
+     * fine to matter, or unknown).
+     */
+    default void positionQuantum(double[] out) {
+        out[0] = 0;
+        out[1] = 0;
+        out[2] = 0;
+    }
+
+    /**
      * Sends a force in newtons along the device's axes (a planar device ignores fz). The device may reduce it
      * to its own limits, keeping its direction.
      *

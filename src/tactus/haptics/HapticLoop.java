@@ -127,6 +127,8 @@ public final class HapticLoop implements AutoCloseable {
     // per-tick state, loop thread only
     private final double[] force = new double[3];
     private final double[] portTarget = new double[3];
+    private final double[] quantum = new double[3];   // the device's position quantum this tick, m
+    private volatile boolean contactPlay;
     private final double[] pos3 = new double[3];
     private final double[] model3 = new double[3];
     private final double[] held3 = new double[3];   // the force per step being rendered (model units)
@@ -786,10 +788,11 @@ public final class HapticLoop implements AutoCloseable {
      * {@code setExchangeDelay(1)} before {@link #start()}, so that the energy account charges each displacement to the
      * force that acted over it.
      *
-     * <p>Known failures, measured on the emulated 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall
-     * can be lost (no force at all) in slow presses, with a loose hold, after the wall is stiffened under the handle,
-     * and for contacts softer than this stiffness; a fast tap can step the force by about 1 N. For a wall that must
-     * never be lost, use the grip coupling ({@link VirtualCoupling#forContacts}) with the passivity controller.
+     * <p>It also switches the {@linkplain #setContactPlay contact play} on. Known failures, measured on the emulated
+     * 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall can be lost (no force at all) in slow presses,
+     * with a loose hold, on a device without friction, and for contacts softer than this stiffness; a fast tap can
+     * step the force by about 0.6 N. For a wall that must never be lost, use the grip coupling
+     * ({@link VirtualCoupling#forContacts}) with the passivity controller.
      *
      * @param stiffness the largest stiffness felt, N/m at the handle (finite, &gt; 0)
      * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
@@ -803,7 +806,28 @@ public final class HapticLoop implements AutoCloseable {
         port.setCoupling(null);
         port.setEnergyBoundSeed(STIFF_CONTACT_SEED);
         port.setForceRiseLimit(STIFF_CONTACT_RISE);
+        contactPlay = true;
         port.setEnergyBound(stiffness);
+    }
+
+    /** The play {@link #setContactPlay} sets, in sensor counts at the handle. */
+    public static final double CONTACT_PLAY_COUNTS = 1.1;
+
+    /**
+     * Sets whether the avatar follows the handle through a play of {@value #CONTACT_PLAY_COUNTS} sensor counts (the
+     * device's {@link HapticDevice#positionQuantum} at the current pose) while the {@linkplain #setEnergyBound energy
+     * bound} is on and no coupling is set, at any time; {@link #useStiffContacts} switches it on. A reading that
+     * flickers by one count then leaves the model's force as it is: without the play, each flicker steps the force by
+     * the contact's stiffness times a count, and the energy bound charges each such step, so that a wall held still
+     * drains its budget and is lost. On a device whose quantum is 0 (the Inverse3) it changes nothing.
+     */
+    public void setContactPlay(boolean on) {
+        contactPlay = on;
+    }
+
+    /** Whether the contact play is on ({@link #setContactPlay}). */
+    public boolean isContactPlay() {
+        return contactPlay;
     }
 
     /**
@@ -1032,6 +1056,13 @@ public final class HapticLoop implements AutoCloseable {
         long steps;
         try {
             if (poseOk) {
+                if (contactPlay) {
+                    spatial.positionQuantum(quantum);
+                    port.setContactPlay(CONTACT_PLAY_COUNTS * quantum[0], CONTACT_PLAY_COUNTS * quantum[1],
+                            CONTACT_PLAY_COUNTS * quantum[2]);
+                } else {
+                    port.setContactPlay(0, 0, 0);
+                }
                 port.sense(devX, devY, devZ, fresh, portTarget);
                 m.toModel(portTarget, model3);
                 active.setTarget(model3[0], model3[1], model3[2]);

@@ -63,8 +63,8 @@ public final class PassivityVariants {
 
     /**
      * The recommended configuration for stiff walls ("stiff contacts"): the energy bound at
-     * {@code HapticLoop.TWO_DIY_STIFF_CONTACT}, its seed and its rise limit, as {@code HapticLoop.useStiffContacts}
-     * sets them, with the plant's exchange delay.
+     * {@code HapticLoop.TWO_DIY_STIFF_CONTACT}, its seed, its rise limit and the contact play, as
+     * {@code HapticLoop.useStiffContacts} sets them, with the plant's exchange delay.
      */
     static WallRig.Variant stiffContacts(int delayTicks) {
         return new WallRig.Variant() {
@@ -75,11 +75,26 @@ public final class PassivityVariants {
 
             @Override
             public AvatarLink wrap(AvatarLink model, double period) {
+                double[] q = twoDiyQuantum();
+                double w = tactus.haptics.HapticLoop.CONTACT_PLAY_COUNTS;
                 return new PortLink(model, period, 1, 1, false).delay(delayTicks)
                         .energyBound(tactus.haptics.HapticLoop.TWO_DIY_STIFF_CONTACT).energyBoundSeed(1e-5)
-                        .forceRiseLimit(0.5);
+                        .forceRiseLimit(0.5).contactPlay(w * q[0], w * q[1], 0);
             }
         };
+    }
+
+    /** The 2DIY's position quantum (m, x and y) at the sweep's pose, as {@code PantographDevice} computes it. */
+    static double[] twoDiyQuantum() {
+        tactus.haptics.HaplyPreset preset = tactus.haptics.HaplyPreset.TWO_DIY_V3;
+        tactus.haptics.pantograph.PantographKinematics k = preset.newKinematics();
+        double[] th = new double[2];
+        if (!k.inverse(preset.d() / 2, WallRig.START_Y, th) || !k.forward(th[0], th[1])) {
+            throw new IllegalStateException("PassivityVariants: the sweep's pose is out of the 2DIY's reach");
+        }
+        double[] q = new double[2];
+        k.quantum(2 * Math.PI / preset.encoderResolution(1), 2 * Math.PI / preset.encoderResolution(2), q);
+        return q;
     }
 
     /**

@@ -22,6 +22,7 @@ public final class PortLink extends ForwardingAvatarLink {
     private final double sx;
     private final double[] target = new double[3];
     private final double[] force = new double[3];
+    private final double[] play = new double[3];
     private boolean started;
     private final double period;
 
@@ -91,6 +92,14 @@ public final class PortLink extends ForwardingAvatarLink {
         return this;
     }
 
+    /** Sets the contact play (m per axis of the device; see {@code HapticLoop.setContactPlay}). */
+    public PortLink contactPlay(double wx, double wy, double wz) {
+        play[0] = wx;
+        play[1] = wy;
+        play[2] = wz;
+        return this;
+    }
+
     /** Sets the friction compensation. */
     public PortLink friction(FrictionCompensation f) {
         port.setFriction(f);
@@ -113,6 +122,7 @@ public final class PortLink extends ForwardingAvatarLink {
             port.start(period);
             started = true;
         }
+        port.setContactPlay(play[0], play[1], play[2]);
         port.sense(sx * x / alpha, y / alpha, z / alpha, target);
         inner.setTarget(sx * alpha * target[0], alpha * target[1], alpha * target[2]);
     }

@@ -9,7 +9,8 @@ import tactus.haptics.emulator.PlantParameters;
  * emulated 2DIY: per wall (args: multiples of K0 = 40.7 N/m), stability, the stiffness felt while holding, the energy
  * the plant gave the hand (at the end and the most at any instant) and the largest force step. System properties:
  * kb (the bound's stiffness, N/m; default the wall's), seed (J), rise (N), scale (encoder counts multiplied),
- * period (s), uncontrolled (true: no bound), hand (m,k,b of the grip), trace, ticks/from/to (print per tick). docs/haptics-stability.md, "Stiff contacts".
+ * period (s), uncontrolled (true: no bound), play (false: no contact play), hand (m,k,b of the grip), trace,
+ * ticks/from/to (print per tick). docs/haptics-stability.md, "Stiff contacts".
  */
 public final class StiffContactScan {
     private StiffContactScan() {
@@ -26,6 +27,12 @@ public final class StiffContactScan {
             public AvatarLink wrap(AvatarLink model, double period) {
                 PortLink p = new PortLink(model, period, 1, 1, false).delay(1).energyBound(kb).energyBoundSeed(seed)
                         .forceRiseLimit(rise);
+                if (!"false".equals(System.getProperty("play"))) {   // the contact play, as useStiffContacts sets it
+                    double[] q = PassivityVariants.twoDiyQuantum();   // finer encoders: a smaller count
+                    double w = tactus.haptics.HapticLoop.CONTACT_PLAY_COUNTS
+                            / Double.parseDouble(System.getProperty("scale", "1"));
+                    p.contactPlay(w * q[0], w * q[1], 0);
+                }
                 if (!Boolean.getBoolean("ticks")) {
                     return p;
                 }

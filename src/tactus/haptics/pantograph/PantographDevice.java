@@ -153,6 +153,29 @@ public final class PantographDevice implements HapticDevice {
         out[2] = 0;
     }
 
+    /**
+     * The position's quantum at the current pose: for each axis, the largest change that one count of each encoder
+     * makes there (the sum over the encoders of the Jacobian's entry times 2 pi over the encoder's counts per turn:
+     * both encoders may tick between two readings), in metres; z is 0, and so is every axis before the first
+     * reachable pose.
+     */
+    @Override
+    public void positionQuantum(double[] out) {
+        out[2] = 0;
+        if (Double.isNaN(x) || !kin.isValid()) {
+            out[0] = 0;
+            out[1] = 0;
+            return;
+        }
+        kin.quantum(countAngle(1), countAngle(2), out);
+    }
+
+    /** One count of this encoder, in radians (0 when it has no valid resolution). */
+    private double countAngle(int encoder) {
+        double r = device.resolution(encoder);
+        return r > 0 ? 2 * Math.PI / r : 0;
+    }
+
     @Override
     public void sendForce(double fx, double fy, double fz) {
         if (!canRender() || !Double.isFinite(fx) || !Double.isFinite(fy)) {

@@ -146,6 +146,15 @@ public final class PantographKinematics {
     }
 
     /**
+     * The largest change of x and y (m) at the pose of the last {@link #forward} call when joint 1 moves by at most
+     * step1 and joint 2 by at most step2 (radians, &gt;= 0), to first order: |J| times the steps, into out[0], out[1].
+     */
+    public void quantum(double step1, double step2, double[] out) {
+        out[0] = Math.abs(jxx) * step1 + Math.abs(jxy) * step2;
+        out[1] = Math.abs(jyx) * step1 + Math.abs(jyy) * step2;
+    }
+
+    /**
      * Joint torques tau = gain * J^T F for a task-space force (fx, fy) in newtons at the pose of the last
      * {@link #forward} call; writes tau1, tau2 (N m times gain) into out[0], out[1].
      */

@@ -40,6 +40,8 @@ public final class HapticPort {
     private final double[] proxy = new double[3];      // the coupling's proxy: position, m
     private final double[] proxyVelocity = new double[3];
     private final double[] filtered = new double[3];   // the velocity seen by the friction compensation, m/s
+    private final ContactPlay play = new ContactPlay();
+    private final double[] playWidths = new double[3]; // m per axis; all 0: no play
     private double frictionGain;                        // its filter's weight per tick
     private double frictionX;
     private double frictionY;
@@ -217,6 +219,7 @@ public final class HapticPort {
         lateSpan = 1;
         slot = 0;
         active = null;
+        play.reset();
         controller.reset();
         bound.reset();
         observer.reset();
@@ -278,7 +281,23 @@ public final class HapticPort {
                 filtered[i] += w * (velocity[i] - filtered[i]);
             }
         }
+        if (active == null && bound.stiffness() > 0
+                && (playWidths[0] > 0 || playWidths[1] > 0 || playWidths[2] > 0)) {
+            play.follow(position, playWidths, target);
+            return;
+        }
+        play.reset();
         System.arraycopy(active != null ? proxy : position, 0, target, 0, 3);
+    }
+
+    /**
+     * Sets the play ({@link ContactPlay}) between the handle and the avatar, m per axis (&gt;= 0; all 0: none), used
+     * while the energy bound is on and no coupling is set. From the loop's thread, before {@link #sense}.
+     */
+    public void setContactPlay(double wx, double wy, double wz) {
+        playWidths[0] = wx;
+        playWidths[1] = wy;
+        playWidths[2] = wz;
     }
 
     /**

@@ -100,7 +100,7 @@ public final class SerialTransport implements Transport {
     @Override
     public void write(byte[] data, int offset, int length) throws IOException {
         if (closed) {
-            throw new IOException(writeStalled ? stalledMessage() : "port " + name + " is closed");
+            throw new IOException(closedMessage());
         }
         int done = 0;
         writeStartedNanos = System.nanoTime();
@@ -123,6 +123,11 @@ public final class SerialTransport implements Transport {
         }
     }
 
+    /** Why the port is closed: the stalled write that closed it, if one did. */
+    private String closedMessage() {
+        return writeStalled ? stalledMessage() : "port " + name + " is closed";
+    }
+
     private String stalledMessage() {
         return "write to " + name + " did not complete within " + WRITE_TIMEOUT_MS
                 + " ms (the board stopped reading); the port was closed";
@@ -131,7 +136,7 @@ public final class SerialTransport implements Transport {
     @Override
     public int available() throws IOException {
         if (closed) {
-            throw new IOException("port " + name + " is closed");
+            throw new IOException(closedMessage());
         }
         int n = port.bytesAvailable();
         if (n < 0) {
@@ -157,7 +162,7 @@ public final class SerialTransport implements Transport {
     @Override
     public int readWaiting(byte[] buffer, int offset, int length) throws IOException {
         if (closed) {
-            throw new IOException("port " + name + " is closed");
+            throw new IOException(closedMessage());
         }
         return readPort(buffer, offset, length);
     }

@@ -219,4 +219,71 @@ class PantographDeviceTest {
             }
         }
     }
+
+    @Test
+    void thePositionQuantumBoundsTheStepOneCountOfEachEncoderMakesAtThePose() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.TWO_DIY_V3, BoardModel.M3);
+        long t0 = System.nanoTime();
+        emulator.setHand(Hand.scripted((t, out) -> {   // 10 mm/s along y, then along x, by the wall clock
+            double s = (System.nanoTime() - t0) * 1e-9;
+            out[0] = s < 0.3 ? 0 : 0.01 * (s - 0.3);
+            out[1] = 0.08 + 0.01 * Math.min(s, 0.3);
+        }));
+        try (Board board = new Board(emulator.connect(), BoardModel.M3)) {
+            Device device = new Device((byte) 5, board);
+            HaplyPreset.TWO_DIY_V3.configure(device);
+            device.device_set_parameters();
+            PantographDevice pd = new PantographDevice(device, HaplyPreset.TWO_DIY_V3.newKinematics());
+            double[] q = new double[3];
+            pd.positionQuantum(q);
+            assertEquals(0, q[0] + q[1] + q[2], 0, "no quantum before the first pose");
+            double[] p = new double[3];
+            double[] last = null;
+            double lastTh1 = Double.NaN;
+            double lastTh2 = Double.NaN;
+            double c1 = 360.0 / device.resolution(1);   // one count, degrees
+            double c2 = 360.0 / device.resolution(2);
+            double[] largest = new double[2];
+            double[] ratio = new double[2];   // the largest one-count step over the quantum at its pose
+            int oneCount = 0;
+            while (System.nanoTime() - t0 < 600_000_000L) {
+                pd.begin();
+                pd.sendForce(0, 0, 0);
+                if (!pd.update()) {
+                    continue;
+                }
+                pd.position(p);
+                pd.positionQuantum(q);
+                assertEquals(0, q[2], 0, "a planar device has no z quantum");
+                double th1 = device.angle(1);
+                double th2 = device.angle(2);
+                if (last != null) {
+                    long n1 = Math.round(Math.abs(th1 - lastTh1) / c1);
+                    long n2 = Math.round(Math.abs(th2 - lastTh2) / c2);
+                    if (n1 <= 1 && n2 <= 1 && n1 + n2 >= 1) {   // at most one count of each encoder between these
+                        oneCount++;
+                        for (int i = 0; i < 2; i++) {
+                            double step = Math.abs(p[i] - last[i]);
+                            assertTrue(q[i] > 0, "axis " + i + ": a quantum at a reachable pose");
+                            assertTrue(step <= 1.02 * q[i], "axis " + i + ": one count moved " + step * 1e6
+                                    + " um, above the quantum " + q[i] * 1e6 + " um");
+                            largest[i] = Math.max(largest[i], step);
+                            ratio[i] = Math.max(ratio[i], step / q[i]);
+                        }
+                    }
+                }
+                last = p.clone();
+                lastTh1 = th1;
+                lastTh2 = th2;
+            }
+            assertTrue(oneCount >= 5, "readings one count apart: " + oneCount);
+            for (int i = 0; i < 2; i++) {
+                // at the poses crossed, one count of one encoder moves each axis by about half the quantum
+                assertTrue(ratio[i] >= 0.4, "axis " + i + ": the largest one-count step, " + largest[i] * 1e6
+                        + " um, is " + ratio[i] + " quanta: the quantum overstates the step");
+            }
+            assertTrue(largest[1] > 60e-6 && largest[1] < 200e-6, "a 2DIY count moves the handle 70-170 um: "
+                    + largest[1] * 1e6 + " um");
+        }
+    }
 }
