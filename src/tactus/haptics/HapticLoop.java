@@ -775,12 +775,12 @@ public final class HapticLoop implements AutoCloseable {
     public static final double TWO_DIY_STIFF_CONTACT = 1600;
     /** The energy bound's seed {@link #useStiffContacts} sets, J. */
     private static final double STIFF_CONTACT_SEED = 1e-5;
-    /** The largest rise of the force per tick {@link #useStiffContacts} sets, N. */
+    /** The largest change of the force per tick {@link #useStiffContacts} sets, N. */
     private static final double STIFF_CONTACT_RISE = 0.5;
 
     /**
      * Sets the energy-bound configuration for stiff walls and contacts, at any time (also while the loop runs): the
-     * energy bound at this stiffness (N/m at the handle), the force allowed to rise by at most 0.5 N per tick, the
+     * energy bound at this stiffness (N/m at the handle), the force allowed to change by at most 0.5 N per tick, the
      * passivity controller off and no virtual coupling. The hand then feels every contact as at most this stiff (a
      * stiffer wall of the model is felt as this stiffness), never gets back more energy than it put in, and a wall that
      * appears or moves around the handle does not push it out. Give it the stiffest contact your device renders
@@ -790,8 +790,8 @@ public final class HapticLoop implements AutoCloseable {
      *
      * <p>It also switches the {@linkplain #setContactPlay contact play} on. Known failures, measured on the emulated
      * 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall can be lost (no force at all) in slow presses,
-     * with a loose hold, on a device without friction, and for contacts softer than this stiffness; a fast tap can
-     * step the force by about 0.6 N. For a wall that must never be lost, use the grip coupling
+     * with a loose hold, on a device without friction, and for contacts softer than this stiffness. For a wall that
+     * must never be lost, use the grip coupling
      * ({@link VirtualCoupling#forContacts}) with the passivity controller.
      *
      * @param stiffness the largest stiffness felt, N/m at the handle (finite, &gt; 0)
@@ -834,7 +834,7 @@ public final class HapticLoop implements AutoCloseable {
      * Bounds the force sent by the energy the hand put in through the port, as a spring of this stiffness (N/m at the
      * handle; finite, &gt;= 0; 0, the default, switches it off), at any time: the force never holds more energy than
      * {@code F^2 / (2 K)} allows, so no contact gives the hand back more than it took (up to a seed of 10 µJ), a
-     * contact stiffer than K is felt as K, and the force rises by at most {@link #setForceRiseLimit} per tick.
+     * contact stiffer than K is felt as K, and the force changes by at most {@link #setForceRiseLimit} per tick.
      * {@link #useStiffContacts} sets it with the rest of the recommended configuration.
      *
      * @throws IllegalArgumentException naming the value when it is negative, infinite or NaN; nothing changes then
@@ -853,8 +853,9 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * Sets the largest rise (N at the handle; finite, &gt; 0; default 0.5) of the force's magnitude from one tick to the
-     * next while the {@linkplain #setEnergyBound energy bound} is on, at any time.
+     * Sets the largest change (N at the handle; finite, &gt; 0; default 0.5) of the force from one tick to the next, as a
+     * vector (rises, falls and turns), while the {@linkplain #setEnergyBound energy bound} is on, at any time. The name
+     * is older than the limit on falls.
      *
      * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
      */
@@ -866,7 +867,7 @@ public final class HapticLoop implements AutoCloseable {
         port.setForceRiseLimit(newtons);
     }
 
-    /** The largest rise (N) of the force per tick while the energy bound is on. */
+    /** The largest change (N) of the force per tick while the energy bound is on. */
     public double forceRiseLimit() {
         return port.forceRiseLimit();
     }

@@ -39,7 +39,7 @@ class AdversarialHandsTest {
 
     @Test
     @Timeout(value = 90, unit = TimeUnit.SECONDS)   // 24 runs of about 1 s of simulated time each
-    @Disabled("useStiffContacts(TWO_DIY_STIFF_CONTACT) still fails 7 of 24 cases (docs/haptics-stability.md, "
+    @Disabled("useStiffContacts(TWO_DIY_STIFF_CONTACT) still fails 6 of 24 cases (docs/haptics-stability.md, "
             + "\"The adversarial suite\"): enable when it passes")
     void theRecommendedConfigurationPassesEveryCase() {
         List<AdversarialCase> cases = AdversarialSuite.cases();

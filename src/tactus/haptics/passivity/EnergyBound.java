@@ -13,8 +13,9 @@ package tactus.haptics.passivity;
  * starts with the seed only; a contact down to K / {@value #TRIM} still gets back, on release, what it stored. While
  * the cap binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the
  * energy the hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact
- * stiffer than K is felt as K. A rise of |F| is limited to a given step per tick (it only removes energy); falls are
- * not limited.
+ * stiffer than K is felt as K. Then the force may change by at most a given step per tick, as a vector: rises, falls
+ * and turns alike, so that neither a contact's onset nor a fast release (a 200 mm/s tap lets the force fall by 1 N in
+ * one tick) is a buzz; a limited fall pushes on for a few ticks beyond the cap, which the ledger counts.
  *
  * <p>A deficit (E below zero: the port gave back more than the budget, over a release the cap reacted to one exchange
  * late, or over an encoder count that the ledger charges in full) is forgiven only down to the port's net energy since
@@ -28,7 +29,7 @@ package tactus.haptics.passivity;
 final class EnergyBound {
     /** The default seed, J. */
     static final double DEFAULT_SEED = 1e-5;
-    /** The default largest rise of the force per tick, N. */
+    /** The default largest change of the force per tick, N. */
     static final double DEFAULT_RISE = 0.5;
     /** How much softer than K a contact may be and still get back, on release, the energy it stored. */
     static final double TRIM = 8;
@@ -39,7 +40,7 @@ final class EnergyBound {
     private boolean on;                               // what the loop's thread last saw
     private double budget;                            // J
     private double net;                               // J: the port's net energy in since the bound was switched on
-    private double lastMagnitude;                     // |F| sent at the last tick, N
+    private final double[] last = new double[3];      // the force sent at the last tick, N
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
     void setStiffness(double nPerM) {
@@ -59,7 +60,7 @@ final class EnergyBound {
         return seed;
     }
 
-    /** Sets the largest rise of |F| per tick (N, > 0), from any thread. */
+    /** Sets the largest change of the force per tick (N, > 0, as a vector), from any thread. */
     void setRise(double newtons) {
         rise = newtons;
     }
@@ -77,7 +78,9 @@ final class EnergyBound {
         on = false;
         budget = 0;
         net = 0;
-        lastMagnitude = 0;
+        last[0] = 0;
+        last[1] = 0;
+        last[2] = 0;
     }
 
     /** Adds the energy (J) that entered the model through the port during the last tick. */
@@ -86,14 +89,19 @@ final class EnergyBound {
         net += intoModel;
     }
 
-    /** Caps the force f (N, in place) sent at this tick; returns the factor f was scaled by (1 when untouched). */
-    double apply(double[] f) {
+    /**
+     * Bounds the force f (N, in place) sent at this tick: scaled down to the energy cap, then moved towards it from the
+     * last force sent by at most the step limit.
+     */
+    void apply(double[] f) {
         double k = stiffness;
         double magnitude = Math.sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         if (!(k > 0)) {
             on = false;
-            lastMagnitude = magnitude;
-            return 1;
+            last[0] = f[0];
+            last[1] = f[1];
+            last[2] = f[2];
+            return;
         }
         if (!on) {
             on = true;
@@ -105,17 +113,30 @@ final class EnergyBound {
             budget = floor;
         }
         double available = budget + seed;
-        double cap = Math.min(available > 0 ? Math.sqrt(2 * k * available) : 0, lastMagnitude + rise);
-        double scale = 1;
+        double cap = available > 0 ? Math.sqrt(2 * k * available) : 0;
         if (magnitude > cap) {
-            scale = cap / magnitude;
+            double scale = cap / magnitude;
             f[0] *= scale;
             f[1] *= scale;
             f[2] *= scale;
             magnitude = cap;
         }
+        // the step from the last force sent, as a vector, is at most the rise limit (rises, falls and turns)
+        double dx = f[0] - last[0];
+        double dy = f[1] - last[1];
+        double dz = f[2] - last[2];
+        double step = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double r = rise;
+        if (step > r) {
+            double g = r / step;
+            f[0] = last[0] + g * dx;
+            f[1] = last[1] + g * dy;
+            f[2] = last[2] + g * dz;
+            magnitude = Math.sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        }
+        last[0] = f[0];
+        last[1] = f[1];
+        last[2] = f[2];
         budget = Math.min(budget, TRIM * magnitude * magnitude / (2 * k));
-        lastMagnitude = magnitude;
-        return scale;
     }
 }

@@ -169,7 +169,7 @@ public final class HapticPort {
         return bound.seed();
     }
 
-    /** Sets the largest rise (N, > 0) of the force's magnitude from one tick to the next while the bound is on. */
+    /** Sets the largest change (N, > 0) of the force, as a vector, from one tick to the next while the bound is on. */
     public void setForceRiseLimit(double newtons) {
         bound.setRise(newtons);
     }

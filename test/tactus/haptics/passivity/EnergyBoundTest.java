@@ -161,4 +161,38 @@ class EnergyBoundTest {
             assertEquals(0, loop.energyBound(), 0);
         }
     }
+
+    @Test
+    void theForceChangesByAtMostTheStepLimitPerTickWhetherItRisesFallsOrTurns() {
+        EnergyBound b = new EnergyBound();
+        b.setStiffness(1600);
+        b.setRise(0.5);
+        double[] f = {0, 0, 0};
+        b.apply(f);       // switched on, with the seed only
+        // then, each tick, a budget far above what these forces hold: only the step limit acts
+        double[] last = {0, 0, 0};
+        double[][] asked = {{3, 0, 0}, {3, 0, 0}, {3, 0, 0}, {3, 0, 0}, {3, 0, 0}, {3, 0, 0}, {3, 0, 0},
+            {0, 0, 0}, {0, 0, 0}, {-3, 0, 0}, {0, 3, 0}, {0.2, 0.1, 0}};
+        double[][] expected = {{0.5, 0, 0}, {1, 0, 0}, {1.5, 0, 0}, {2, 0, 0}, {2.5, 0, 0}, {3, 0, 0}, {3, 0, 0},
+            {2.5, 0, 0}, {2, 0, 0}, {1.5, 0, 0}, null, null};
+        for (int t = 0; t < asked.length; t++) {
+            System.arraycopy(asked[t], 0, f, 0, 3);
+            b.observe(1.0);
+            b.apply(f);
+            double step = Math.sqrt((f[0] - last[0]) * (f[0] - last[0]) + (f[1] - last[1]) * (f[1] - last[1])
+                    + (f[2] - last[2]) * (f[2] - last[2]));
+            assertTrue(step <= 0.5 + 1e-12, "tick " + t + ": step " + step + " N");
+            if (expected[t] != null) {
+                for (int i = 0; i < 3; i++) {
+                    assertEquals(expected[t][i], f[i], 1e-12, "tick " + t + ", axis " + i);
+                }
+            }
+            System.arraycopy(f, 0, last, 0, 3);
+        }
+        b.setStiffness(0);   // off: the force goes out as asked, whatever the last one was
+        f[0] = -4;
+        f[1] = 0;
+        b.apply(f);
+        assertEquals(-4, f[0], 0);
+    }
 }
