@@ -96,6 +96,21 @@ public class PhyUGen extends UGen {
     /** The thread that computed the last sample: a new one is told to {@link AudioScheduling} (once per switch). */
     private Thread computingThread;
 
+    /** The default block length, in samples: 1, the per-sample path (see {@link #setBlockSize(int)}). */
+    public static final int DEFAULT_BLOCK_SIZE = 1;
+    /** The longest block, in samples. */
+    public static final int MAX_BLOCK_SIZE = 4096;
+    private volatile int blockSize = DEFAULT_BLOCK_SIZE;
+    // the block the audio thread hands out: samples [blockPos, blockLength) are still to go
+    private final float[] blockLeft = new float[MAX_BLOCK_SIZE];
+    private final float[] blockRight = new float[MAX_BLOCK_SIZE];
+    private int blockPos;
+    private int blockLength;
+    private boolean blockStereo;
+    private int blockChannels = -1;
+    private float sampleLeft;
+    private float sampleRight;
+
     /** An avatar attached with {@link #attachAvatar(String, AvatarExchange)}: its name, handle and exchange. */
     private static final class AvatarBinding {
         final String name;
@@ -330,6 +345,34 @@ public class PhyUGen extends UGen {
         return o == null ? 1 : o.factor;
     }
 
+    /**
+     * Sets how many samples this PhyUGen computes in one pass through the model (1 to {@value #MAX_BLOCK_SIZE}; default
+     * {@value #DEFAULT_BLOCK_SIZE}, the per-sample path), from any thread; it takes effect at the next block. With n
+     * above 1, when Minim asks for the first sample of a block, the model enters once and steps the whole block; the
+     * other samples come from a buffer; the output is bit for bit the per-sample path's as long as nothing changes.
+     * Changes to the model queued from other threads (parameters, topology), and those the ticking thread makes
+     * between two samples, land at the next block boundary: at most one block (1.45 ms at 64 samples and 44.1 kHz)
+     * later than with 1. No sample comes out later than with 1: Minim computes its whole output buffer in one burst
+     * anyway, so the block adds no latency as long as it is not longer than Minim's buffer. The avatar exchange still
+     * runs every model step inside the block, with the haptic position it finds at each step; a fault silences the
+     * rest of its block. 1 is the per-sample path: each sample enters the model on its own, and a change made between
+     * two samples lands at the next one.
+     *
+     * @throws IllegalArgumentException naming the value when it is out of range; nothing changes then
+     */
+    public void setBlockSize(int samples) {
+        if (samples < 1 || samples > MAX_BLOCK_SIZE) {
+            throw new IllegalArgumentException("PhyUGen.setBlockSize: give 1 to " + MAX_BLOCK_SIZE + " samples (1: "
+                    + "one sample per pass through the model), got " + samples);
+        }
+        blockSize = samples;
+    }
+
+    /** {@return the number of samples computed in one pass through the model (see {@link #setBlockSize(int)})} */
+    public int blockSize() {
+        return blockSize;
+    }
+
     /** {@return the group delay of the decimation filter, in audio samples (0 without oversampling)} */
     public double decimationDelaySamples() {
         Oversampler o = oversampler;
@@ -414,10 +457,48 @@ public class PhyUGen extends UGen {
     protected void uGenerate(float[] channels) {
         try {
             noteComputingThread();
-            generate(channels);
+            if (blockPos >= blockLength || channels.length != blockChannels) {
+                int n = blockSize;
+                if (n == 1) {
+                    blockLength = 0;
+                    blockChannels = -1;
+                    generate(channels);
+                    return;
+                }
+                fillBlock(n, channels.length);
+            }
+            write(channels, blockLeft[blockPos], blockRight[blockPos], blockStereo);
+            blockPos++;
         } catch (Throwable t) { // nothing may reach Minim's output loop
             faults.unexpected(t);
+            blockLength = 0;
             silence(channels);
+        }
+    }
+
+    /** Computes n samples (stereo or mono as for this many channels) in one pass through the model. */
+    private void fillBlock(int n, int channelCount) {
+        blockPos = 0;
+        blockLength = 0;
+        blockChannels = channelCount;
+        blockStereo = channelCount >= 2 && !forceMono;
+        SteppedModel m = steppedModel();
+        m.beginSample();
+        try {
+            for (int i = 0; i < n; i++) {
+                countTowardsRecheck(m);
+                if (computeSample(m, blockStereo)) {
+                    blockLeft[i] = sampleLeft;
+                    blockRight[i] = sampleRight;
+                } else {
+                    blockLeft[i] = 0f;
+                    blockRight[i] = 0f;
+                    silenceFilters();
+                }
+                blockLength = i + 1;
+            }
+        } finally {
+            m.endSample();
         }
     }
 
@@ -433,35 +514,47 @@ public class PhyUGen extends UGen {
     private void generate(float[] channels) {
         SteppedModel m = steppedModel();
         countTowardsRecheck(m);
-        Oversampler o = oversampler;
         boolean stereo = channels.length >= 2 && !forceMono;
-        double left;
-        double right;
+        boolean sounded;
         m.beginSample();
         try {
-            if (o == null) {
-                if (!stepGuarded(m)) {
-                    silence(channels);
-                    return;
-                }
-                mixPoints(m);
-                left = stereo ? mixLeft : mixMono;
-                right = mixRight;
-            } else {
-                for (int i = 0; i < o.factor; i++) {
-                    if (!stepGuarded(m)) {
-                        silence(channels);
-                        return;
-                    }
-                    mixPoints(m);
-                    o.left.push(stereo ? mixLeft : mixMono);
-                    o.right.push(mixRight);
-                }
-                left = o.left.output();
-                right = stereo ? o.right.output() : 0;
-            }
+            sounded = computeSample(m, stereo);
         } finally {
             m.endSample();
+        }
+        if (!sounded) {
+            silence(channels);
+            return;
+        }
+        write(channels, sampleLeft, sampleRight, stereo);
+    }
+
+    /**
+     * Steps the model for one sample (k steps with oversampling), mixes and DC-blocks it into sampleLeft and
+     * sampleRight; false when the model did not step and the sample must be silent. Called inside a sample or block.
+     */
+    private boolean computeSample(SteppedModel m, boolean stereo) {
+        Oversampler o = oversampler;
+        double left;
+        double right;
+        if (o == null) {
+            if (!stepGuarded(m)) {
+                return false;
+            }
+            mixPoints(m);
+            left = stereo ? mixLeft : mixMono;
+            right = mixRight;
+        } else {
+            for (int i = 0; i < o.factor; i++) {
+                if (!stepGuarded(m)) {
+                    return false;
+                }
+                mixPoints(m);
+                o.left.push(stereo ? mixLeft : mixMono);
+                o.right.push(mixRight);
+            }
+            left = o.left.output();
+            right = stereo ? o.right.output() : 0;
         }
         outputSilent = false;
         if (dcEnabled) {
@@ -473,10 +566,16 @@ public class PhyUGen extends UGen {
                 right = dcRight.process(right);
             }
         }
-        float l = finite(left);
+        sampleLeft = finite(left);
+        sampleRight = stereo ? finite(right) : 0f;
+        return true;
+    }
+
+    /** Writes one sample: left and right in stereo (left again in channels past 1), left everywhere in mono. */
+    private static void write(float[] channels, float l, float r, boolean stereo) {
         if (stereo) {
             channels[0] = l;
-            channels[1] = finite(right);
+            channels[1] = r;
             for (int c = 2; c < channels.length; c++) {
                 channels[c] = l;
             }
@@ -497,6 +596,11 @@ public class PhyUGen extends UGen {
         for (int c = 0; c < channels.length; c++) {
             channels[c] = 0f;
         }
+        silenceFilters();
+    }
+
+    /** On the first silent sample, empties the filters so that nothing old rings on. */
+    private void silenceFilters() {
         if (!outputSilent) {
             outputSilent = true;
             dcLeft.reset(0);

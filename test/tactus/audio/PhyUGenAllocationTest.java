@@ -39,6 +39,14 @@ class PhyUGenAllocationTest {
         assertEquals(0, measure(u, oversampling));
     }
 
+    @ParameterizedTest
+    @ValueSource(ints = {7, 64})
+    void tickInBlocksAllocatesNothing(int block) {
+        PhyUGen u = new PhyUGen(stringWithAvatar());
+        u.setBlockSize(block);
+        assertEquals(0, measure(u, 2));
+    }
+
     /** @return the bytes allocated by 10^5 samples (the last of up to six measurements: JIT
      * recompilations settle in the first ones; a real per-sample allocation shows in every one). */
     private static long measure(PhyUGen u, int oversampling) {
