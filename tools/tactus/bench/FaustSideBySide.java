@@ -57,6 +57,9 @@ public final class FaustSideBySide {
     }
 
     /** Options of a run. */
+    /** The system property that sets the PhyUGens' block size in the Tactus process ({@code --block=N}). */
+    static final String BLOCK_PROPERTY = "tactus.bench.block";
+
     static final class Options {
         boolean quick;
         List<String> models = new ArrayList<>(Arrays.asList(MODELS));
@@ -71,8 +74,8 @@ public final class FaustSideBySide {
     }
 
     /**
-     * {@code java tactus.bench.FaustSideBySide [--quick] [--models=a,b] [--largest=5000,10000] [--compile-only]
-     * [report.md]}, or {@code --child} (the Tactus process).
+     * {@code java tactus.bench.FaustSideBySide [--quick] [--models=a,b] [--largest=5000,10000] [--block=N]
+     * [--compile-only] [report.md]}, or {@code --child} (the Tactus process).
      */
     public static void main(String[] args) throws Exception {
         if (args.length > 0 && args[0].equals("--child")) {
@@ -90,6 +93,8 @@ public final class FaustSideBySide {
                 o.largest = a.length() == 10 ? new int[0]
                         : Arrays.stream(a.substring(10).split(",")).mapToInt(Integer::parseInt).toArray();
                 o.largest3d = new int[0];
+            } else if (a.startsWith("--block=")) {
+                System.setProperty(BLOCK_PROPERTY, a.substring(8));   // the PhyUGens' block size (default 1)
             } else if (a.equals("--compile-only")) {
                 o.compileOnly = true;
             } else {
@@ -166,6 +171,7 @@ public final class FaustSideBySide {
                 models[i] = model(id);
                 reads[i] = models[i].getMass(listened(id));
                 PhyUGen u = new PhyUGen(model(id));
+                u.setBlockSize(Integer.getInteger(BLOCK_PROPERTY, 1));
                 u.listenToMass(listened(id), SteppedModel.Z, 1, 0);
                 u.patch(root);
                 u.setSampleRate(RATE);
@@ -247,7 +253,8 @@ public final class FaustSideBySide {
 
         TactusProcess() throws IOException {
             String java = System.getProperty("java.home") + File.separator + "bin" + File.separator + "java";
-            ProcessBuilder pb = new ProcessBuilder(java, "-Xms1g", "-Xmx1g", "-XX:+UseParallelGC", "-cp",
+            ProcessBuilder pb = new ProcessBuilder(java, "-Xms1g", "-Xmx1g", "-XX:+UseParallelGC",
+                    "-D" + BLOCK_PROPERTY + "=" + Integer.getInteger(BLOCK_PROPERTY, 1), "-cp",
                     System.getProperty("java.class.path"), FaustSideBySide.class.getName(), "--child");
             pb.redirectError(ProcessBuilder.Redirect.INHERIT);
             p = pb.start();
