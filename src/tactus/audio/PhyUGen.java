@@ -101,9 +101,11 @@ public class PhyUGen extends UGen {
     /** The longest block, in samples. */
     public static final int MAX_BLOCK_SIZE = 4096;
     private volatile int blockSize = DEFAULT_BLOCK_SIZE;
-    // the block the audio thread hands out: samples [blockPos, blockLength) are still to go
-    private final float[] blockLeft = new float[MAX_BLOCK_SIZE];
-    private final float[] blockRight = new float[MAX_BLOCK_SIZE];
+    /** Left and right buffers of at least blockSize samples, replaced whole by {@link #setBlockSize(int)}. */
+    private volatile float[][] blockBuffers = new float[2][0];
+    // the block the audio thread hands out: samples [blockPos, blockLength) of these are still to go
+    private float[] blockLeft;
+    private float[] blockRight;
     private int blockPos;
     private int blockLength;
     private boolean blockStereo;
@@ -360,10 +362,13 @@ public class PhyUGen extends UGen {
      *
      * @throws IllegalArgumentException naming the value when it is out of range; nothing changes then
      */
-    public void setBlockSize(int samples) {
+    public synchronized void setBlockSize(int samples) {
         if (samples < 1 || samples > MAX_BLOCK_SIZE) {
             throw new IllegalArgumentException("PhyUGen.setBlockSize: give 1 to " + MAX_BLOCK_SIZE + " samples (1: "
                     + "one sample per pass through the model), got " + samples);
+        }
+        if (blockBuffers[0].length < samples) {
+            blockBuffers = new float[][] {new float[samples], new float[samples]};   // before the size that needs them
         }
         blockSize = samples;
     }
@@ -480,6 +485,10 @@ public class PhyUGen extends UGen {
     private void fillBlock(int n, int channelCount) {
         blockPos = 0;
         blockLength = 0;
+        float[][] buffers = blockBuffers;
+        blockLeft = buffers[0];
+        blockRight = buffers[1];
+        n = Math.min(n, blockLeft.length);
         blockChannels = channelCount;
         blockStereo = channelCount >= 2 && !forceMono;
         SteppedModel m = steppedModel();
