@@ -47,8 +47,8 @@ public interface HapticDevice extends AutoCloseable {
 
     /**
      * The position's quantum at the current pose: the largest change of the position along each axis when each of
-     * the device's sensors moves by at most one count, in metres, written into out[0..2]. The default writes 0 (a resolution too
-     * fine to matter, or unknown).
+     * the device's sensors moves by at most one count, in metres, written into out[0..2]. The default writes 0 (a
+     * resolution too fine to matter, or unknown).
      */
     default void positionQuantum(double[] out) {
         out[0] = 0;

@@ -789,9 +789,9 @@ public final class HapticLoop implements AutoCloseable {
      * force that acted over it.
      *
      * <p>It also switches the {@linkplain #setContactPlay contact play} on. Known failures, measured on the emulated
-     * 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall can be lost (no force at all) in slow presses,
-     * with a loose hold, on a device without friction, and for contacts softer than this stiffness. For a wall that
-     * must never be lost, use the grip coupling
+     * 2DIY (docs/haptics-stability.md, "The adversarial suite"): the wall can be lost (no force at all) in slow
+     * presses, with a loose hold, on a device without friction, and for contacts softer than this stiffness. For a
+     * wall that must never be lost, use the grip coupling
      * ({@link VirtualCoupling#forContacts}) with the passivity controller.
      *
      * @param stiffness the largest stiffness felt, N/m at the handle (finite, &gt; 0)
@@ -853,9 +853,9 @@ public final class HapticLoop implements AutoCloseable {
     }
 
     /**
-     * Sets the largest change (N at the handle; finite, &gt; 0; default 0.5) of the force from one tick to the next, as a
-     * vector (rises, falls and turns), while the {@linkplain #setEnergyBound energy bound} is on, at any time. The name
-     * is older than the limit on falls.
+     * Sets the largest change (N at the handle; finite, &gt; 0; default 0.5) of the force from one tick to the next,
+     * as a vector (rises, falls and turns), while the {@linkplain #setEnergyBound energy bound} is on, at any time.
+     * The name is older than the limit on falls.
      *
      * @throws IllegalArgumentException naming the value when it is not a finite number &gt; 0; nothing changes then
      */

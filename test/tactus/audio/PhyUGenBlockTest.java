@@ -85,9 +85,10 @@ class PhyUGenBlockTest {
                     double[] got = run(block, channels, oversampling, -1, samples);
                     for (int i = 0; i < want.length; i++) {
                         int s = i;
+                        String where = s < 2 * samples ? "sample " + s / 2
+                                : "the avatar's force, axis " + (s - 2 * samples);
                         assertEquals(Double.doubleToLongBits(want[i]), Double.doubleToLongBits(got[i]), () -> "block "
-                                + block + ", " + channels + " channels, oversampling " + oversampling + ", "
-                                + (s < 2 * samples ? "sample " + s / 2 : "the avatar's force, axis " + (s - 2 * samples))
+                                + block + ", " + channels + " channels, oversampling " + oversampling + ", " + where
                                 + ": " + want[s] + " vs " + got[s]);
                     }
                 }

@@ -185,10 +185,10 @@ class FrozenBoardTest {
                         // completes, and a zero behind it rightly goes out
                         boolean cameUnstuck = inWriteSince[0] != since;
                         if ((timeoutMayHaveEnded || cameUnstuck) && attempt < 3) {
+                            String why = cameUnstuck ? "the write completed during the call"
+                                    : "its own " + SerialTransport.WRITE_TIMEOUT_MS + " ms timeout may have ended it";
                             System.out.printf("FrozenBoardTest: attempt %d inconclusive: the write was stuck for %d ms "
-                                    + "and %s took %.1f ms, so %s; trying again%n", attempt, stuckMs, what, ms,
-                                    cameUnstuck ? "the write completed during the call"
-                                            : "its own " + SerialTransport.WRITE_TIMEOUT_MS + " ms timeout may have ended it");
+                                    + "and %s took %.1f ms, so %s; trying again%n", attempt, stuckMs, what, ms, why);
                             continue;
                         }
                         assertTrue(!zeroSent, "no zero can go out behind a stuck write (stuck " + stuckMs

@@ -32,8 +32,8 @@ import tactus.haptics.HaplyLinkException;
  * sketch ramps its force back in when it runs again;</li>
  * <li>when its standard input ends or the sketch's process is gone without {@code clean}: zero force, resent every
  * {@value #RETRY_PAUSE_MS} ms for up to {@value #RETRY_MS} ms until the service reports it taken (the dead sketch's
- * session may own the device until the service sees its connection end), then it closes its session and exits. Every wait is bounded: it halts at the latest {@value #ACT_LIMIT_MS} ms after
- * it starts acting.</li>
+ * session may own the device until the service sees its connection end), then it closes its session and exits.
+ * Every wait is bounded: it halts at the latest {@value #ACT_LIMIT_MS} ms after it starts acting.</li>
  * </ul>
  * After each zero it reads the force the service reports, and says so if the service did not take the zero
  * (another session owns the device: see the docs).
@@ -241,8 +241,9 @@ public final class InverseGuard {
             said = zero();
             attempts++;
         }
-        return attempts == 1 ? said : said + " (attempt " + attempts + ": the service "
-                + (taken() ? "took it once the sketch's session had ended)" : "never took it within " + RETRY_MS + " ms)");
+        String how = taken() ? "took it once the sketch's session had ended)"
+                : "never took it within " + RETRY_MS + " ms)";
+        return attempts == 1 ? said : said + " (attempt " + attempts + ": the service " + how;
     }
 
     /** Whether the service's last reported force is zero. */
