@@ -6,12 +6,19 @@ import java.util.function.LongSupplier;
  * Chooses, batch by batch, between stepping a plan on one thread and on the {@link ParallelStepper}, so that
  * parallel stepping is never kept where it is slower: a loaded or oversubscribed machine can make every barrier
  * wait for a descheduled thread. It times one step in each mode (a probe), runs the rest of the batch in the
- * faster one, and probes the other mode again every {@value #REPROBE_STEPS} steps, since the load changes.
+ * faster one (the parallel mode only if it was at least 10 % faster), and probes the other mode again every
+ * {@value #REPROBE_STEPS} steps, since the load changes.
  * Both modes give the same results bit for bit, so the choice changes only the time. Allocates nothing.
  */
 final class StepModeChooser {
     /** Steps run in the chosen mode between two probes of the other. */
     static final int REPROBE_STEPS = 4096;
+    /**
+     * Parallel stepping is chosen only where its probe took at most this share of one thread's: two nearly equal modes
+     * (a memory-bound plan on two cores) are told apart by one-step probes no better than their noise, and a wrong
+     * pick of the parallel mode costs more (a barrier per step) than a wrong pick of one thread.
+     */
+    static final double PARALLEL_MARGIN = 0.9;
 
     private final LongSupplier clock;
     private long serialNanos = -1;      // the last probe's time of one step on one thread (-1: not measured)
@@ -42,7 +49,7 @@ final class StepModeChooser {
         if (parallelNanos < 0) {
             return true;
         }
-        boolean faster = parallelNanos < serialNanos;
+        boolean faster = parallelNanos < PARALLEL_MARGIN * serialNanos;
         return sinceProbe >= REPROBE_STEPS ? !faster : faster;
     }
 

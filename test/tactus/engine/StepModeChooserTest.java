@@ -60,6 +60,32 @@ class StepModeChooserTest {
                 + (m.parallelSteps() - before));
     }
 
+    @Test
+    void nearlyEqualModesKeepOneThreadAndAClearGainPicksTheParallelMode() {
+        for (long parallelCost : new long[] {950, 1000, 1050, 850, 500}) {
+            ScriptedClock c = new ScriptedClock();
+            StepModeChooser m = new StepModeChooser(c);
+            long serialCost = 1_000;
+            long parallelChunks = 0;
+            long chunks = 0;
+            for (int i = 0; i < 40; i++) {
+                boolean par = m.parallelNext();
+                boolean probe = m.probing();
+                int chunk = probe ? 1 : 100;
+                long t0 = m.now();
+                c.now += chunk * (par ? parallelCost : serialCost);
+                m.record(par, chunk, m.now() - t0);
+                if (!probe) {
+                    chunks++;
+                    parallelChunks += par ? 1 : 0;
+                }
+            }
+            boolean pays = parallelCost <= 0.9 * serialCost;
+            assertEquals(pays ? chunks : 0, parallelChunks, "parallel at " + parallelCost + " ns per step against "
+                    + serialCost + " on one thread");
+        }
+    }
+
     private static Engine chain(int n, int threads) {
         Engine e = new Engine();
         int prev = -1;
