@@ -102,7 +102,7 @@ public class PhyUGen extends UGen {
     public static final int MAX_BLOCK_SIZE = 4096;
     private volatile int blockSize = DEFAULT_BLOCK_SIZE;
     /** Left and right buffers of at least blockSize samples, replaced whole by {@link #setBlockSize(int)}. */
-    private volatile float[][] blockBuffers = new float[2][0];
+    private volatile float[][] blockBuffers = new float[2][1];
     // the block the audio thread hands out: samples [blockPos, blockLength) of these are still to go
     private float[] blockLeft;
     private float[] blockRight;
@@ -463,14 +463,7 @@ public class PhyUGen extends UGen {
         try {
             noteComputingThread();
             if (blockPos >= blockLength || channels.length != blockChannels) {
-                int n = blockSize;
-                if (n == 1) {
-                    blockLength = 0;
-                    blockChannels = -1;
-                    generate(channels);
-                    return;
-                }
-                fillBlock(n, channels.length);
+                fillBlock(blockSize, channels.length);
             }
             write(channels, blockLeft[blockPos], blockRight[blockPos], blockStereo);
             blockPos++;
@@ -481,7 +474,10 @@ public class PhyUGen extends UGen {
         }
     }
 
-    /** Computes n samples (stereo or mono as for this many channels) in one pass through the model. */
+    /**
+     * Computes n samples (stereo or mono as for this many channels) in one pass through the model: the model is
+     * entered once for them; n = 1 is the per-sample path.
+     */
     private void fillBlock(int n, int channelCount) {
         blockPos = 0;
         blockLength = 0;
@@ -520,27 +516,9 @@ public class PhyUGen extends UGen {
         }
     }
 
-    private void generate(float[] channels) {
-        SteppedModel m = steppedModel();
-        countTowardsRecheck(m);
-        boolean stereo = channels.length >= 2 && !forceMono;
-        boolean sounded;
-        m.beginSample();
-        try {
-            sounded = computeSample(m, stereo);
-        } finally {
-            m.endSample();
-        }
-        if (!sounded) {
-            silence(channels);
-            return;
-        }
-        write(channels, sampleLeft, sampleRight, stereo);
-    }
-
     /**
      * Steps the model for one sample (k steps with oversampling), mixes and DC-blocks it into sampleLeft and
-     * sampleRight; false when the model did not step and the sample must be silent. Called inside a sample or block.
+     * sampleRight; false when the model did not step and the sample must be silent. Called inside a block.
      */
     private boolean computeSample(SteppedModel m, boolean stereo) {
         Oversampler o = oversampler;
