@@ -50,6 +50,44 @@ class AdversarialHandsTest {
     }
 
     @Test
+    @Timeout(value = 90, unit = TimeUnit.SECONDS)   // 24 runs of about 1 s of simulated time each
+    void theCountReserveGivesTheHandNothingInAnyCaseAndLosesNoWallThatHasFriction() {
+        // every case: the energy to the hand and the force steps within the suite's limits; every press or stiffened
+        // wall on the plant with friction is felt (at least 150 N/m), where the bound alone loses the slow presses and
+        // the loose hold's (felt at about 0 N/m)
+        List<String> bad = new ArrayList<>();
+        int felt = 0;
+        for (AdversarialCase c : AdversarialSuite.cases()) {
+            AdversarialRig.Result r = AdversarialRig.run(c, AdversarialSuite.STIFF_CONTACTS_COUNT_RESERVE);
+            boolean ok = r.failure == null && r.faultTicks == 0
+                    && r.maxEnergyToHand <= AdversarialSuite.ENERGY_TOLERANCE
+                    && r.forceStep <= AdversarialSuite.FORCE_STEP_LIMIT;
+            if (c.friction && AdversarialSuite.feltFloor(c) > 0) {
+                ok &= r.stable && r.felt >= 150;
+                felt++;
+            }
+            if (!ok) {
+                bad.add(AdversarialSuite.row("count reserve", r) + (r.failure != null ? " " + r.failure : ""));
+            }
+        }
+        assertTrue(felt >= 9, felt + " cases with friction read a felt stiffness");
+        assertTrue(bad.isEmpty(), AdversarialSuite.HEADER + "\n" + String.join("\n", bad));
+    }
+
+    @Test
+    void theCountReserveKeepsTheSlowPressThatTheBoundAloneLoses() {
+        AdversarialCase slow = new AdversarialCase(AdversarialCase.Kind.PRESS, AdversarialCase.Grip.PEN,
+                200 * AdversarialCase.K0, 0.005, true, 0);
+        AdversarialRig.Result with = AdversarialRig.run(slow, AdversarialSuite.STIFF_CONTACTS_COUNT_RESERVE);
+        AdversarialRig.Result without = AdversarialRig.run(slow, StiffContactsUnderTest::configure);
+        String table = AdversarialSuite.HEADER + "\n" + AdversarialSuite.row("with the reserve", with) + "\n"
+                + AdversarialSuite.row("without", without);
+        assertTrue(without.felt < 50, "the bound alone loses the slow press's wall:\n" + table);
+        assertTrue(with.felt > 200 && with.stable && with.maxEnergyToHand <= AdversarialSuite.ENERGY_TOLERANCE,
+                table);
+    }
+
+    @Test
     void theContactPlayKeepsAWallStiffenedUnderTheHandThatTheBoundAloneLoses() {
         AdversarialCase stiffen = new AdversarialCase(AdversarialCase.Kind.STIFFEN, AdversarialCase.Grip.PEN,
                 200 * AdversarialCase.K0, 0.02, true, 0);

@@ -53,6 +53,15 @@ public final class AdversarialSuite {
         loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
     };
 
+    /**
+     * The recommended configuration with the energy bound's count reserve at
+     * {@link HapticLoop#ROBUST_COUNT_RESERVE}: no wall lost to encoder flicker, at the price of a softer onset.
+     */
+    public static final Consumer<HapticLoop> STIFF_CONTACTS_COUNT_RESERVE = loop -> {
+        STIFF_CONTACTS.accept(loop);
+        loop.setEnergyBoundCountReserve(HapticLoop.ROBUST_COUNT_RESERVE);
+    };
+
     /** The configurations of the table, by name. */
     public static Map<String, Consumer<HapticLoop>> configurations() {
         Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
@@ -60,6 +69,7 @@ public final class AdversarialSuite {
         m.put("passivity control", PASSIVITY_CONTROL);
         m.put("grip coupling + PC", GRIP_COUPLING_PC);
         m.put("stiff contacts", STIFF_CONTACTS);
+        m.put("stiff contacts + count reserve", STIFF_CONTACTS_COUNT_RESERVE);
         return m;
     }
 

@@ -41,6 +41,8 @@ final class EnergyBound {
     private double budget;                            // J
     private double net;                               // J: the port's net energy in since the bound was switched on
     private final double[] last = new double[3];      // the force sent at the last tick, N
+    private volatile double countReserve;             // c, counts; 0: off
+    private final double[] quantum = new double[3];   // the sensor's count along each axis at the handle, m
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
     void setStiffness(double nPerM) {
@@ -67,6 +69,22 @@ final class EnergyBound {
 
     double rise() {
         return rise;
+    }
+
+    /** Sets the count reserve c (counts, &gt;= 0; 0: off), from any thread. */
+    void setCountReserve(double counts) {
+        countReserve = counts;
+    }
+
+    double countReserve() {
+        return countReserve;
+    }
+
+    /** Sets the sensor's count along each axis at the handle (m, &gt;= 0), from the loop's thread before {@link #apply}. */
+    void setQuantum(double qx, double qy, double qz) {
+        quantum[0] = qx;
+        quantum[1] = qy;
+        quantum[2] = qz;
     }
 
     /** The budget E (J) as the loop's thread last left it. */
@@ -113,7 +131,19 @@ final class EnergyBound {
             budget = floor;
         }
         double available = budget + seed;
-        double cap = available > 0 ? Math.sqrt(2 * k * available) : 0;
+        double c = countReserve;
+        // the sensor's count along the force: a count on each axis, weighted by the force's share of that axis
+        double q = magnitude > 0 ? (Math.abs(f[0]) * quantum[0] + Math.abs(f[1]) * quantum[1]
+                + Math.abs(f[2]) * quantum[2]) / magnitude : 0;
+        double reserved = c * c * q * q * k;   // B*, J; 0 without a count reserve
+        double cap;
+        if (!(available > 0)) {
+            cap = 0;
+        } else if (available < reserved) {
+            cap = available / (c * q);
+        } else {
+            cap = Math.sqrt(2 * k * (available - reserved / 2));
+        }
         if (magnitude > cap) {
             double scale = cap / magnitude;
             f[0] *= scale;
@@ -137,6 +167,8 @@ final class EnergyBound {
         last[0] = f[0];
         last[1] = f[1];
         last[2] = f[2];
-        budget = Math.min(budget, TRIM * magnitude * magnitude / (2 * k));
+        // what the force sent needs, by the inverse of the cap, is the most the budget keeps
+        double need = magnitude < c * q * k ? c * q * magnitude : magnitude * magnitude / (2 * k) + reserved / 2;
+        budget = Math.min(budget, TRIM * need);
     }
 }

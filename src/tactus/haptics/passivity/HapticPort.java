@@ -169,6 +169,28 @@ public final class HapticPort {
         return bound.seed();
     }
 
+    /**
+     * Sets the energy bound's count reserve (sensor counts, &gt;= 0; 0: none), from any thread: the force is also
+     * capped so that the handle moving back by one count at that force takes at most this fraction's inverse of the
+     * budget; see {@link EnergyBound}.
+     */
+    public void setEnergyBoundCountReserve(double counts) {
+        bound.setCountReserve(counts);
+    }
+
+    /** The energy bound's count reserve, counts (0: none). */
+    public double energyBoundCountReserve() {
+        return bound.countReserve();
+    }
+
+    /**
+     * Tells the energy bound the sensor's count at the handle along each axis (m, &gt;= 0; 0: continuous), from the
+     * loop's thread before {@link #command}.
+     */
+    public void setPositionQuantum(double qx, double qy, double qz) {
+        bound.setQuantum(qx, qy, qz);
+    }
+
     /** Sets the largest change (N, > 0) of the force, as a vector, from one tick to the next while the bound is on. */
     public void setForceRiseLimit(double newtons) {
         bound.setRise(newtons);

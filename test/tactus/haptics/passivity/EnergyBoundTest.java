@@ -195,4 +195,89 @@ class EnergyBoundTest {
         b.apply(f);
         assertEquals(-4, f[0], 0);
     }
+
+    /** Sends the bound one tick: energy in (J), then the model's force along x (N); returns the force sent, N. */
+    private static double tick(EnergyBound b, double intoModel, double want) {
+        b.observe(intoModel);
+        double[] f = {want, 0, 0};
+        b.apply(f);
+        return f[0];
+    }
+
+    @Test
+    void theCountReserveCapsTheForceSoThatOneCountBackNeverTakesMoreThanItsShareOfTheBudget() {
+        double q = 1.48e-4;   // a 2DIY count at the handle, m
+        for (double c : new double[] {1.25, 1.75, 3}) {
+            for (double rise : new double[] {0.5, 100}) {
+                EnergyBound b = new EnergyBound();
+                b.setStiffness(BOUND);
+                b.setSeed(1e-5);
+                b.setRise(rise);
+                b.setQuantum(q, q, 0);
+                b.setCountReserve(c);
+                double sent = tick(b, 0, 20);
+                String at = "c = " + c + ", rise " + rise + ": ";
+                assertEquals(1e-5 / (c * q), sent, 1e-9, at + "the onset is the seed over c counts");
+                // press in count by count at the force sent, then flicker back one count: the budget the cap then
+                // allows never falls below (1 - 1/c) of what it was, and never to zero
+                double before = b.budget() + b.seed();
+                for (int n = 0; n < 40; n++) {
+                    double available = b.budget() + b.seed();
+                    double back = tick(b, -sent * q, 20);
+                    double left = b.budget() + b.seed();
+                    assertTrue(left >= (1 - 1 / c) * available - 1e-12, at + "count " + n + ": " + left + " J of "
+                            + available);
+                    assertTrue(back > 0, at + "count " + n + ": the wall is lost");
+                    sent = tick(b, back * q, 20);      // the count back in, credited at the force that acted
+                    sent = tick(b, sent * q, 20);      // and one count further in
+                }
+                // a count back and in again keeps (1 - 1/c^2) of the budget, the next count in adds 1/c: pressing in
+                // with a flicker at every count grows the budget when (1 - 1/c^2)(1 + 1/c) > 1 (c = 1.75: 1.057)
+                boolean grows = (1 - 1 / (c * c)) * (1 + 1 / c) > 1;
+                assertEquals(grows, b.budget() + b.seed() > before, at + "pressing in grows the budget: "
+                        + (b.budget() + b.seed()) + " J from " + before);
+                // above the reserve the cap is the spring's: F^2 / 2K + B* / 2 = B
+                double reserved = c * c * q * q * BOUND;
+                EnergyBound big = new EnergyBound();
+                big.setStiffness(BOUND);
+                big.setSeed(1e-3);
+                big.setRise(100);
+                big.setQuantum(q, q, 0);
+                big.setCountReserve(c);
+                double f = tick(big, 0, 50);
+                assertEquals(Math.sqrt(2 * BOUND * (1e-3 - reserved / 2)), f, 1e-9, at + "the spring's cap");
+            }
+        }
+    }
+
+    @Test
+    void withoutACountReserveOrWithoutAQuantumTheCapIsTheSpringsAsBefore() {
+        for (double[] qc : new double[][] {{1.48e-4, 0}, {0, 1.75}}) {
+            EnergyBound b = new EnergyBound();
+            b.setStiffness(BOUND);
+            b.setSeed(1e-5);
+            b.setRise(100);
+            b.setQuantum(qc[0], qc[0], qc[0]);
+            b.setCountReserve(qc[1]);
+            assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(b, 0, 20), 1e-12, "q " + qc[0] + ", c " + qc[1]);
+        }
+    }
+
+    @Test
+    void theLoopValidatesTheCountReserve() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        try (Board board = new Board(emulator.connect())) {
+            HapticLoop loop = new HapticLoop(new Device((byte) 3, board), HaplyPreset.HAPLY_2018.newKinematics(),
+                    new Wall(1));
+            for (double bad : new double[] {-1, Double.NaN, Double.POSITIVE_INFINITY}) {
+                IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                        () -> loop.setEnergyBoundCountReserve(bad));
+                assertTrue(e.getMessage().contains("setEnergyBoundCountReserve") && e.getMessage().contains(
+                        String.valueOf(bad)), e.getMessage());
+                assertEquals(0, loop.energyBoundCountReserve(), "unchanged after " + bad);
+            }
+            loop.setEnergyBoundCountReserve(HapticLoop.ROBUST_COUNT_RESERVE);
+            assertEquals(HapticLoop.ROBUST_COUNT_RESERVE, loop.energyBoundCountReserve());
+        }
+    }
 }
