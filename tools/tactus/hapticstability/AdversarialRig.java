@@ -2,6 +2,7 @@ package tactus.hapticstability;
 
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import java.util.function.DoubleSupplier;
 import tactus.PhysicalModel;
 import tactus.PlaneContact3D;
 import tactus.Vect3D;
@@ -72,23 +73,27 @@ public final class AdversarialRig {
         }
     }
 
-    /** The plant's record, one sample per substep. */
-    private static final class Record {
+    /** The plant's record, one sample per substep (z stays 0 on the planar device). */
+    static final class Record {
         int n;
         final double[] t;
         final double[] y;
         final double[] vx;
         final double[] vy;
+        final double[] vz;
         final double[] fx;
         final double[] fy;
+        final double[] fz;
 
         Record(int capacity) {
             t = new double[capacity];
             y = new double[capacity];
             vx = new double[capacity];
             vy = new double[capacity];
+            vz = new double[capacity];
             fx = new double[capacity];
             fy = new double[capacity];
+            fz = new double[capacity];
         }
     }
 
@@ -96,8 +101,8 @@ public final class AdversarialRig {
      * Watches every tick on the loop's thread: the force step and the observer's account; at the scene's event tick it
      * waits until the scene's thread has made the change.
      */
-    private static final class Watch extends ForwardingAvatarLink {
-        final BoardEmulator em;
+    static final class Watch extends ForwardingAvatarLink {
+        final DoubleSupplier clock;
         final double tStart;
         final double eventAt;
         final double endAt;
@@ -114,9 +119,9 @@ public final class AdversarialRig {
         boolean forceStepRises;
         long faultTicks = -1;
 
-        Watch(AvatarLink inner, BoardEmulator em, double tStart, double eventAt, double endAt, int capacity) {
+        Watch(AvatarLink inner, DoubleSupplier clock, double tStart, double eventAt, double endAt, int capacity) {
             super(inner);
-            this.em = em;
+            this.clock = clock;
             this.tStart = tStart;
             this.eventAt = eventAt;
             this.endAt = endAt;
@@ -127,7 +132,7 @@ public final class AdversarialRig {
         @Override
         public void step(int n) {
             HapticLoop l = loop;
-            double now = em.time() - tStart;
+            double now = clock.getAsDouble() - tStart;
             if (l != null && now > endAt && faultTicks < 0) {
                 faultTicks = l.telemetry().faultTicks;   // the run's ticks only: the loop runs on until stopped
             }
@@ -203,7 +208,7 @@ public final class AdversarialRig {
             PlaneContact3D wall = pm.addPlaneContact("wall", 0, c.initialStiffness(), 0, 1, -c.initialGap(), "avatar");
             pm.init();
             double eventAt = c.eventTime();
-            watch = new Watch(new PhysicalModelAvatar(pm, "avatar"), em, tStart,
+            watch = new Watch(new PhysicalModelAvatar(pm, "avatar"), em::time, tStart,
                     Double.isNaN(eventAt) ? Double.POSITIVE_INFINITY : eventAt, ticks * PERIOD, ticks + 20);
             HapticLoop loop = new HapticLoop(dev, preset.newKinematics(), watch);
             loop.useRealUnits();
@@ -233,7 +238,8 @@ public final class AdversarialRig {
             em.setProbe(null);
         }
         rec.n = Math.min(rec.n, ticks * perTick);
-        measure(c, rec, watch, r);
+        double mass = new EffectiveAxis(HaplyPreset.TWO_DIY_V3, plant, START_Y).mass + c.grip.mass;
+        measure(c, rec, watch, r, mass);
         return r;
     }
 
@@ -255,7 +261,11 @@ public final class AdversarialRig {
         }
     }
 
-    private static void measure(AdversarialCase c, Record rec, Watch watch, Result r) {
+    /**
+     * Measures a run from the plant's record and the watch: energy to the hand (less the kinetic energy of this mass,
+     * kg, at the reference time), the observer's figure, the force step, the residual and the felt stiffness.
+     */
+    static void measure(AdversarialCase c, Record rec, Watch watch, Result r, double mass) {
         int n = rec.n;
         double wallY = -c.gap();
         double dt = rec.t[1] - rec.t[0];
@@ -273,8 +283,6 @@ public final class AdversarialRig {
             ref = firstIn < 0 ? Double.POSITIVE_INFINITY : rec.t[firstIn] - 0.05;
         }
         // the device and the hand's mass may give back the kinetic energy they had at the reference time
-        double mass = new EffectiveAxis(HaplyPreset.TWO_DIY_V3, c.friction ? PlantParameters.twoDiy()
-                : PlantParameters.twoDiy().withoutFriction(), START_Y).mass + c.grip.mass;
         double e = 0;
         double eMax = 0;
         boolean counting = false;
@@ -282,10 +290,11 @@ public final class AdversarialRig {
             if (rec.t[i] > ref) {
                 if (!counting) {
                     counting = true;
-                    r.storedAtReference = 0.5 * mass * (rec.vx[i - 1] * rec.vx[i - 1] + rec.vy[i - 1] * rec.vy[i - 1]);
+                    r.storedAtReference = 0.5 * mass * (rec.vx[i - 1] * rec.vx[i - 1] + rec.vy[i - 1] * rec.vy[i - 1]
+                            + rec.vz[i - 1] * rec.vz[i - 1]);
                     e = -r.storedAtReference;
                 }
-                e += -(rec.fx[i] * rec.vx[i] + rec.fy[i] * rec.vy[i]) * (rec.t[i] - rec.t[i - 1]);
+                e += -(rec.fx[i] * rec.vx[i] + rec.fy[i] * rec.vy[i] + rec.fz[i] * rec.vz[i]) * (rec.t[i] - rec.t[i - 1]);
                 eMax = Math.max(eMax, e);
             }
         }

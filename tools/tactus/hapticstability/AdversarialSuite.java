@@ -62,6 +62,23 @@ public final class AdversarialSuite {
         loop.setEnergyBoundCountReserve(HapticLoop.ROBUST_COUNT_RESERVE);
     };
 
+    /**
+     * The energy bound on the emulated 3-DoF device in lockstep ({@link AdversarialRig3D}: no tick of delay, positions
+     * not quantised), at the 2DIY's stiff contact, 1600 N/m.
+     */
+    public static final Consumer<HapticLoop> STIFF_CONTACTS_3DOF = loop -> {
+        loop.setExchangeDelay(0);
+        loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+    };
+
+    /** The configurations of the 3-DoF table ({@code --3dof}), by name. */
+    public static Map<String, Consumer<HapticLoop>> configurations3D() {
+        Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
+        m.put("uncontrolled", UNCONTROLLED);
+        m.put("stiff contacts 3-DoF", STIFF_CONTACTS_3DOF);
+        return m;
+    }
+
     /** The configurations of the table, by name. */
     public static Map<String, Consumer<HapticLoop>> configurations() {
         Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
@@ -157,18 +174,24 @@ public final class AdversarialSuite {
             + "| observer's max (mJ) | largest force step (N) | refused ticks | felt (N/m) | verdict |\n"
             + "|---|---|---|---|---|---|---|---|---|---|";
 
-    /** Prints the table for every configuration (or those whose names are given) over every case. */
+    /**
+     * Prints the table for every configuration (or those whose names are given) over every case; with {@code --3dof}
+     * first, on the emulated 3-DoF device ({@link AdversarialRig3D}) and its configurations.
+     */
     public static void main(String[] args) {
         Locale.setDefault(Locale.ROOT);
+        boolean threeDof = args.length > 0 && args[0].equals("--3dof");
+        List<String> names = List.of(args).subList(threeDof ? 1 : 0, args.length);
         System.out.println(HEADER);
-        for (Map.Entry<String, Consumer<HapticLoop>> e : configurations().entrySet()) {
-            if (args.length > 0 && !List.of(args).contains(e.getKey())) {
+        for (Map.Entry<String, Consumer<HapticLoop>> e : (threeDof ? configurations3D() : configurations()).entrySet()) {
+            if (!names.isEmpty() && !names.contains(e.getKey())) {
                 continue;
             }
             int failed = 0;
             List<AdversarialCase> cs = cases();
             for (AdversarialCase c : cs) {
-                AdversarialRig.Result r = AdversarialRig.run(c, e.getValue());
+                AdversarialRig.Result r = threeDof ? AdversarialRig3D.run(c, e.getValue())
+                        : AdversarialRig.run(c, e.getValue());
                 failed += passes(r) ? 0 : 1;
                 System.out.println(row(e.getKey(), r));
             }

@@ -61,6 +61,23 @@ public final class SimulatedInverse3 {
         v[2] = 0;
     }
 
+    /** What a probe is told at every integration step of a plant ({@link #setPlant}) pushed by a hand. */
+    public interface Probe {
+        /**
+         * One integration step: its end time (s), the handle's position (m) and velocity (m/s) at its end, and the
+         * force the hand put on the handle over it (N). Called on the thread that advances the device; must not
+         * allocate or block.
+         */
+        void sample(double t, double[] position, double[] velocity, double[] handForce);
+    }
+
+    private volatile Probe probe;
+
+    /** Sets a probe called at every integration step of the plant (null for none). */
+    public void setProbe(Probe p) {
+        probe = p;
+    }
+
     /** Sets the hand (never null: {@link Hand3D#none()} for none). */
     public void setHand(Hand3D h) {
         if (h == null) {
@@ -185,6 +202,10 @@ public final class SimulatedInverse3 {
         started = true;
         if (clamp()) {
             plant.setState(p, v);
+        }
+        Probe pr = probe;
+        if (pr != null) {
+            pr.sample(time, p, v, handPush);
         }
     }
 

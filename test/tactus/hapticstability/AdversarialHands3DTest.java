@@ -1,0 +1,54 @@
+package tactus.hapticstability;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The adversarial suite on the emulated 3-DoF device ({@link AdversarialRig3D}: the Inverse3's Cartesian plant in
+ * lockstep, no tick of delay, positions not quantised; docs/haptics-stability.md, "On the 3-DoF plant"): the energy
+ * bound at 1600 N/m gives the hand at most the suite's tolerance and steps the force by at most 0.5 N in every case,
+ * and holds the presses with friction that the pen grip and the stiff pinch make; the self-check shows the rig can
+ * fail (the uncontrolled wall stiffened under the hand bounces it and gives it energy).
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class AdversarialHands3DTest {
+    @Test
+    @Timeout(value = 90, unit = TimeUnit.SECONDS)   // 24 runs of about 1 s of simulated time each
+    void theEnergyBoundGivesTheHandNothingAndHoldsThePressesOnThe3DofPlant() {
+        List<String> bad = new ArrayList<>();
+        int held = 0;
+        for (AdversarialCase c : AdversarialSuite.cases()) {
+            AdversarialRig.Result r = AdversarialRig3D.run(c, AdversarialSuite.STIFF_CONTACTS_3DOF);
+            boolean ok = r.failure == null && r.faultTicks == 0
+                    && r.maxEnergyToHand <= AdversarialSuite.ENERGY_TOLERANCE
+                    && r.forceStep <= AdversarialSuite.FORCE_STEP_LIMIT;
+            if (c.kind == AdversarialCase.Kind.PRESS && c.friction && c.grip != AdversarialCase.Grip.LOOSE_HOLD) {
+                ok &= r.stable && r.felt >= 600;
+                held++;
+            }
+            if (!ok) {
+                bad.add(AdversarialSuite.row("3-DoF", r) + (r.failure != null ? " " + r.failure : ""));
+            }
+        }
+        assertTrue(held >= 6, held + " presses checked");
+        assertTrue(bad.isEmpty(), AdversarialSuite.HEADER + "\n" + String.join("\n", bad));
+    }
+
+    @Test
+    void theRigFlagsTheUncontrolledWallStiffenedUnderTheHand() {
+        AdversarialCase stiffen = new AdversarialCase(AdversarialCase.Kind.STIFFEN, AdversarialCase.Grip.PEN,
+                200 * AdversarialCase.K0, 0.02, true, 0);
+        AdversarialRig.Result r = AdversarialRig3D.run(stiffen, AdversarialSuite.UNCONTROLLED);
+        assertNull(r.failure, "the loop failed");
+        assertFalse(r.stable, "residual " + r.residual + " m");
+        assertTrue(r.maxEnergyToHand > 1e-3, "energy to the hand " + r.maxEnergyToHand + " J");
+        assertFalse(AdversarialSuite.passes(r));
+    }
+}
