@@ -878,6 +878,42 @@ public final class HapticLoop implements AutoCloseable {
         return port.energyBoundCountReserve();
     }
 
+    /**
+     * Declares what the device itself dissipates at the handle, at any time: lower bounds of its viscous damping (N s/m;
+     * finite, &gt;= 0) and of its Coulomb friction (N; finite, &gt;= 0); 0 and 0, the default, declare nothing. The
+     * {@linkplain #setEnergyBound energy bound} then credits its budget with the least energy these took from the hand
+     * over each measured displacement (less one sensor count per axis), as Kim and Ryu's energy bounding does. A
+     * contact that has given the hand back its seed (a handle that bounced off a wall) then gets a budget again once
+     * the hand moves the handle, instead of pushing with zero force until the bound is switched off. The credit is
+     * safe only if the values are at most what the device really dissipates: measure the force that moves the handle
+     * at a steady speed with the motors off, and declare less.
+     *
+     * <p>Measured on the emulated Inverse3's plant (0.5 N s/m per axis) with the bound at 3300 N/m: with 0.25 N s/m
+     * declared, a pen grip's press that bounced off a stiff wall is felt at about 1000 N/m where it is otherwise lost,
+     * and no case of the adversarial suite gives the hand more than 6 µJ (docs/haptics-stability.md, "On the 3-DoF
+     * plant").
+     *
+     * @throws IllegalArgumentException naming the value when either is negative, infinite or NaN; nothing changes then
+     */
+    public void setDeviceDissipation(double damping, double friction) {
+        if (!(damping >= 0) || !Double.isFinite(damping) || !(friction >= 0) || !Double.isFinite(friction)) {
+            throw new IllegalArgumentException("HapticLoop.setDeviceDissipation: damping (N s/m) and friction (N) must be"
+                    + " finite numbers >= 0, lower bounds of what the device itself dissipates (0, 0: none), got "
+                    + damping + ", " + friction);
+        }
+        port.setDeviceDissipation(damping, friction);
+    }
+
+    /** The device's declared viscous damping at the handle (N s/m; {@link #setDeviceDissipation}). */
+    public double deviceDamping() {
+        return port.deviceDamping();
+    }
+
+    /** The device's declared Coulomb friction at the handle (N; {@link #setDeviceDissipation}). */
+    public double deviceFriction() {
+        return port.deviceFriction();
+    }
+
     /** The count reserve (sensor counts) measured to keep every wall of the adversarial suite with friction. */
     public static final double ROBUST_COUNT_RESERVE = 1.75;
 

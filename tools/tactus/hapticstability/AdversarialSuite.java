@@ -62,19 +62,33 @@ public final class AdversarialSuite {
         loop.setEnergyBoundCountReserve(HapticLoop.ROBUST_COUNT_RESERVE);
     };
 
+    /** The stiffness of the energy bound on the emulated 3-DoF device (N/m): the 3.3 kN/m goal. */
+    public static final double STIFF_CONTACT_3DOF = 3300;
+    /** The damping (N s/m) declared for the 3-DoF plant: half its 0.5 N s/m per axis. */
+    public static final double DECLARED_DAMPING_3DOF = 0.25;
+
     /**
      * The energy bound on the emulated 3-DoF device in lockstep ({@link AdversarialRig3D}: no tick of delay, positions
-     * not quantised), at the 2DIY's stiff contact, 1600 N/m.
+     * not quantised) at {@link #STIFF_CONTACT_3DOF}, with half the plant's damping declared
+     * ({@link HapticLoop#setDeviceDissipation}).
      */
     public static final Consumer<HapticLoop> STIFF_CONTACTS_3DOF = loop -> {
         loop.setExchangeDelay(0);
-        loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+        loop.useStiffContacts(STIFF_CONTACT_3DOF);
+        loop.setDeviceDissipation(DECLARED_DAMPING_3DOF, 0);
+    };
+
+    /** As {@link #STIFF_CONTACTS_3DOF} with no dissipation declared. */
+    public static final Consumer<HapticLoop> STIFF_CONTACTS_3DOF_UNDECLARED = loop -> {
+        loop.setExchangeDelay(0);
+        loop.useStiffContacts(STIFF_CONTACT_3DOF);
     };
 
     /** The configurations of the 3-DoF table ({@code --3dof}), by name. */
     public static Map<String, Consumer<HapticLoop>> configurations3D() {
         Map<String, Consumer<HapticLoop>> m = new LinkedHashMap<>();
         m.put("uncontrolled", UNCONTROLLED);
+        m.put("stiff contacts 3-DoF, no dissipation declared", STIFF_CONTACTS_3DOF_UNDECLARED);
         m.put("stiff contacts 3-DoF", STIFF_CONTACTS_3DOF);
         return m;
     }

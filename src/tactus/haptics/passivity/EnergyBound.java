@@ -101,6 +101,15 @@ final class EnergyBound {
         last[2] = 0;
     }
 
+    /**
+     * Adds to the budget only (J, &gt;= 0) energy the hand certainly lost in the device itself during the last tick
+     * (its declared damping and friction): it pays for force as the hand's input does, but it is not the port's, so
+     * it does not move the floor a deficit is forgiven down to, and the trim still drops what no force holds.
+     */
+    void credit(double joules) {
+        budget += joules;
+    }
+
     /** Adds the energy (J) that entered the model through the port during the last tick. */
     void observe(double intoModel) {
         budget += intoModel;

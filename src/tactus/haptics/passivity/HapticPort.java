@@ -41,6 +41,9 @@ public final class HapticPort {
     private final double[] proxyVelocity = new double[3];
     private final double[] filtered = new double[3];   // the velocity seen by the friction compensation, m/s
     private final ContactPlay play = new ContactPlay();
+    private final double[] quantum = new double[3];     // the sensor's count along each axis, m
+    private volatile double deviceDamping;              // N s/m: a lower bound of the device's own viscous damping
+    private volatile double deviceFriction;             // N: a lower bound of its own Coulomb friction
     private final double[] playWidths = new double[3]; // m per axis; all 0: no play
     private double frictionGain;                        // its filter's weight per tick
     private double frictionX;
@@ -188,6 +191,9 @@ public final class HapticPort {
      * loop's thread before {@link #command}.
      */
     public void setPositionQuantum(double qx, double qy, double qz) {
+        quantum[0] = qx;
+        quantum[1] = qy;
+        quantum[2] = qz;
         bound.setQuantum(qx, qy, qz);
     }
 
@@ -204,6 +210,46 @@ public final class HapticPort {
     /** The energy bound's budget (J) after the last tick: what the force sent may still hold. */
     public double energyBudget() {
         return bound.budget();
+    }
+
+    /**
+     * Declares lower bounds of the device's own dissipation at the handle, from any thread: viscous damping (N s/m,
+     * &gt;= 0) and Coulomb friction (N, &gt;= 0). The energy bound's budget is credited with the least energy they
+     * took from the hand over each measured displacement ({@link #dissipatedAtLeast}).
+     */
+    public void setDeviceDissipation(double nsPerM, double newtons) {
+        deviceDamping = nsPerM;
+        deviceFriction = newtons;
+    }
+
+    /** The device's declared viscous damping at the handle, N s/m. */
+    public double deviceDamping() {
+        return deviceDamping;
+    }
+
+    /** The device's declared Coulomb friction at the handle, N. */
+    public double deviceFriction() {
+        return deviceFriction;
+    }
+
+    /**
+     * The least energy (J) the device's declared damping b and friction f took from the hand while the handle moved
+     * from {@code from} to {@code to} in {@code seconds}: with d the displacement less one sensor count per axis (the
+     * least the handle can have moved), {@code b |d|^2 / seconds + f |d|} (a motion over a time t dissipates at least
+     * {@code b |d|^2 / t} in a damper, by Cauchy-Schwarz, and {@code f |d|} in friction).
+     */
+    private double dissipatedAtLeast(double[] to, double[] from, double seconds) {
+        double b = deviceDamping;
+        double f = deviceFriction;
+        if (!(b > 0) && !(f > 0)) {
+            return 0;
+        }
+        double d2 = 0;
+        for (int i = 0; i < 3; i++) {
+            double d = Math.max(0, Math.abs(to[i] - from[i]) - quantum[i]);
+            d2 += d * d;
+        }
+        return b * d2 / seconds + f * Math.sqrt(d2);
     }
 
     /** Sets the friction compensation (null: none), from any thread. */
@@ -282,6 +328,7 @@ public final class HapticPort {
             boolean on = controlOn;
             controller.observe(into, on);
             bound.observe(into);
+            bound.credit(dissipatedAtLeast(position, previous, period));
             observer.record(into, damped);
         }
         if (late == 0) {
@@ -366,6 +413,7 @@ public final class HapticPort {
         velocity[2] = dz / span;
         controller.observe(into, controlOn);
         bound.observe(into);
+        bound.credit(dissipatedAtLeast(position, previous, span));
         observer.record(into, damped);
         System.arraycopy(position, 0, previous, 0, 3);
         lastFresh = n;

@@ -280,4 +280,52 @@ class EnergyBoundTest {
             assertEquals(HapticLoop.ROBUST_COUNT_RESERVE, loop.energyBoundCountReserve());
         }
     }
+
+    @Test
+    void aCreditPaysForForceAfterTheSeedIsGivenBackButNotWhileNoForceIsWanted() {
+        EnergyBound b = new EnergyBound();
+        b.setStiffness(BOUND);
+        b.setSeed(1e-5);
+        b.setRise(100);
+        assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(b, 0, 20), 1e-12, "the seed's force");
+        // the contact gives the hand back more than the seed: the budget sits at the port's net, -12 uJ
+        assertEquals(0, tick(b, -1.2e-5, 20), 0, "no force once the seed is given back");
+        assertEquals(-1.2e-5, b.budget(), 1e-15);
+        assertEquals(0, tick(b, 0, 20), 0, "and none later: nothing came in");
+        // energy the device's own damping took from the hand pays for force again
+        b.credit(4e-5);
+        double f = tick(b, 0, 20);
+        assertEquals(Math.sqrt(2 * BOUND * (4e-5 - 1.2e-5 + 1e-5)), f, 1e-12, "the credit pays for force");
+        // a credit earned while no force is wanted is trimmed away: no reserve for a later contact
+        EnergyBound idle = new EnergyBound();
+        idle.setStiffness(BOUND);
+        idle.setSeed(1e-5);
+        idle.setRise(100);
+        tick(idle, 0, 0);
+        idle.credit(1e-3);
+        tick(idle, 0, 0);
+        assertEquals(0, idle.budget(), 0, "trimmed with no force");
+        assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(idle, 0, 20), 1e-12, "the next contact starts with the seed");
+    }
+
+    @Test
+    void theLoopValidatesTheDeviceDissipation() {
+        BoardEmulator emulator = new BoardEmulator(HaplyPreset.HAPLY_2018);
+        try (Board board = new Board(emulator.connect())) {
+            HapticLoop loop = new HapticLoop(new Device((byte) 3, board), HaplyPreset.HAPLY_2018.newKinematics(),
+                    new Wall(1));
+            double[][] bad = {{-1, 0}, {0, -0.1}, {Double.NaN, 0}, {0, Double.POSITIVE_INFINITY}};
+            for (double[] v : bad) {
+                IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                        () -> loop.setDeviceDissipation(v[0], v[1]));
+                assertTrue(e.getMessage().contains("setDeviceDissipation") && e.getMessage().contains(
+                        String.valueOf(v[0])) && e.getMessage().contains(String.valueOf(v[1])), e.getMessage());
+                assertEquals(0, loop.deviceDamping(), 0, "unchanged");
+                assertEquals(0, loop.deviceFriction(), 0, "unchanged");
+            }
+            loop.setDeviceDissipation(0.25, 0.02);
+            assertEquals(0.25, loop.deviceDamping(), 0);
+            assertEquals(0.02, loop.deviceFriction(), 0);
+        }
+    }
 }
