@@ -19,10 +19,12 @@
  * put in, so the wall never gives back more than it took and does not buzz, felt as at most
  * 1600 N/m. It is not the default yet: it can lose the wall (no force at all) in slow presses, with
  * a loose hold and on a device without friction (docs/haptics-stability.md,
- * "Stiff contacts" and "The adversarial suite"). P (the passivity controller) is on at start.
+ * "Stiff contacts" and "The adversarial suite"). R adds the count reserve to it
+ * (loop.setEnergyBoundCountReserve): a wall with friction is then never lost to the encoders'
+ * one-count flicker, but it is felt about half as stiff. P (the passivity controller) is on at start.
  *
- * Controls: S stiff-contact setting on/off, P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
- * T print the loop's telemetry.
+ * Controls: S stiff-contact setting on/off, R count reserve on/off, P passivity controller on/off, V virtual coupling
+ * on/off, 1-4 wall stiffness, T print the loop's telemetry.
  * Units: ALGO_UNITS, 1 model unit = 1 pixel; the wall's stiffness is given in N/m at the handle.
  */
 
@@ -39,6 +41,7 @@ float[] wallNm = {300, 1000, 3000, 10000};   // wall stiffness at the handle, N/
 int wallChoice = 2;
 float wallX;                          // the wall's face, pixels: the wall fills x < wallX
 boolean stiff = false;                // the energy bound for stiff walls (S), not yet the default
+boolean reserve = false;              // its count reserve (R): never lost to flicker, felt softer
 boolean controller = true;
 boolean coupling = false;
 double deviceDamping = 0.5;           // N s/m: the emulator's handle; measure your device's
@@ -89,6 +92,7 @@ void startLoop() {
     // felt as at most 1600 N/m, passive, no buzz, also when the wall changes under the handle
     loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
   }
+  loop.setEnergyBoundCountReserve(reserve ? HapticLoop.ROBUST_COUNT_RESERVE : 0);
   loop.start();
   lastOut = 0;
   lastDissipated = 0;
@@ -155,7 +159,8 @@ void draw() {
 
   fill(30);
   textSize(14);
-  text("Push into the wall.   P: controller " + (controller ? "ON" : "off") + "   V: coupling " + (coupling ? "ON" : "off")
+  text("Push into the wall.   S: energy bound " + (stiff ? "ON" : "off") + "   R: count reserve " + (reserve ? "ON" : "off")
+    + "   P: controller " + (controller ? "ON" : "off") + "   V: coupling " + (coupling ? "ON" : "off")
     + "   1-4: wall " + (int) wallNm[wallChoice] + " N/m   T: telemetry", 12, 22);
   text(String.format("energy in %.2f mJ, back to the hand %.2f mJ, net %.2f mJ, dissipated by the controller %.2f mJ, active %.1f %% of ticks",
     1000 * energy.energyIn(), 1000 * out, 1000 * energy.netEnergy(), 1000 * diss, 100 * energy.activeShare()), 12, 42);
@@ -196,6 +201,9 @@ void keyPressed() {
       controller = true;                       // back to the start's setting
       loop.setPassivityControl(true);
     }
+  } else if (key == 'r' || key == 'R') {
+    reserve = !reserve;
+    loop.setEnergyBoundCountReserve(reserve ? HapticLoop.ROBUST_COUNT_RESERVE : 0);   // at once, while the loop runs
   } else if (key == 'p' || key == 'P') {
     controller = !controller;
     loop.setPassivityControl(controller);   // switches at once, while the loop runs
