@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -23,23 +22,19 @@ class AdversarialHands3DTest {
     @Test
     @Timeout(value = 90, unit = TimeUnit.SECONDS)   // 24 runs of about 1 s of simulated time each
     void theEnergyBoundGivesTheHandNothingAndHoldsThePressesOnThe3DofPlant() {
-        List<String> bad = new ArrayList<>();
-        int held = 0;
-        for (AdversarialCase c : AdversarialSuite.cases()) {
-            AdversarialRig.Result r = AdversarialRig3D.run(c, AdversarialSuite.STIFF_CONTACTS_3DOF);
-            boolean ok = r.failure == null && r.faultTicks == 0
-                    && r.maxEnergyToHand <= AdversarialSuite.ENERGY_TOLERANCE
-                    && r.forceStep <= AdversarialSuite.FORCE_STEP_LIMIT;
-            if (c.kind == AdversarialCase.Kind.PRESS && c.friction && c.grip != AdversarialCase.Grip.LOOSE_HOLD) {
-                ok &= r.stable && r.felt >= (c.grip == AdversarialCase.Grip.STIFF_PINCH ? 3000 : 600);
-                held++;
-            }
-            if (!ok) {
-                bad.add(AdversarialSuite.row("3-DoF", r) + (r.failure != null ? " " + r.failure : ""));
-            }
-        }
+        List<AdversarialCase> cases = AdversarialSuite.cases();
+        long held = cases.stream().filter(AdversarialHands3DTest::heldPress).count();
         assertTrue(held >= 6, held + " presses checked");
+        List<String> bad = AdversarialChecks.rejected(cases,
+                c -> AdversarialRig3D.run(c, AdversarialSuite.STIFF_CONTACTS_3DOF),
+                (c, r) -> AdversarialChecks.passiveWithoutBuzz(r) && (!heldPress(c) || r.stable
+                        && r.felt >= (c.grip == AdversarialCase.Grip.STIFF_PINCH ? 3000 : 600)), "3-DoF");
         assertTrue(bad.isEmpty(), AdversarialSuite.HEADER + "\n" + String.join("\n", bad));
+    }
+
+    /** A press with friction by the pen grip or the stiff pinch: the wall must hold it. */
+    private static boolean heldPress(AdversarialCase c) {
+        return c.kind == AdversarialCase.Kind.PRESS && c.friction && c.grip != AdversarialCase.Grip.LOOSE_HOLD;
     }
 
     @Test

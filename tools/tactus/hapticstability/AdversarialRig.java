@@ -213,28 +213,8 @@ public final class AdversarialRig {
             HapticLoop loop = new HapticLoop(dev, preset.newKinematics(), watch);
             loop.useRealUnits();
             loop.setOrigin(-x0, -y0, 0);
-            loop.setRate(rate);
-            loop.setWatchdogMillis(60_000);
-            loop.setLinkTimeoutMillis(60_000);
-            configuration.accept(loop);
-            if (Math.abs(loop.rate() - rate) > 1e-9) {
-                throw new IllegalArgumentException("AdversarialRig: the configuration set the loop's rate to "
-                        + loop.rate() + " Hz; the lockstep plant runs at " + rate + " Hz");
-            }
-            watch.loop = loop;
-            loop.start();
-            long deadline = System.nanoTime() + 120_000_000_000L;
-            double end = tStart + (ticks + 2) * PERIOD;
-            while (loop.isRunning() && em.time() < end && System.nanoTime() < deadline) {
-                if (watch.atEvent && !watch.eventDone) {
-                    change(c, pm, wall, em);   // on this thread, as a sketch's key handler would
-                    watch.eventDone = true;
-                }
-                LockSupport.parkNanos(200_000);
-            }
-            loop.stop();
-            r.faultTicks = watch.faultTicks >= 0 ? watch.faultTicks : loop.telemetry().faultTicks;
-            r.failure = loop.failure();
+            drive(loop, rate, configuration, watch, em::time, tStart + (ticks + 2) * PERIOD,
+                    () -> change(c, pm, wall, -c.gap(), () -> em.setHand(Hand.none())), r, "AdversarialRig");
             em.setProbe(null);
         }
         rec.n = Math.min(rec.n, ticks * perTick);
@@ -243,18 +223,52 @@ public final class AdversarialRig {
         return r;
     }
 
-    /** The scene's change, through the model's public API (or the emulator's hand). */
-    private static void change(AdversarialCase c, PhysicalModel pm, PlaneContact3D wall, BoardEmulator em) {
+    /**
+     * Runs a configured scene: sets the loop's rate and generous timeouts, lets the configuration under test set the
+     * rest (it may not change the rate), starts the loop, makes the scene's change on this thread (as a sketch's key
+     * handler would) when the watch reaches the event's tick, stops the loop once the clock (s) reaches {@code end}
+     * (or after 120 s of wall clock), and records the loop's refused ticks and failure in r.
+     */
+    static void drive(HapticLoop loop, int rate, Consumer<HapticLoop> configuration, Watch watch, DoubleSupplier clock,
+                      double end, Runnable change, Result r, String rig) {
+        loop.setRate(rate);
+        loop.setWatchdogMillis(60_000);
+        loop.setLinkTimeoutMillis(60_000);
+        configuration.accept(loop);
+        if (Math.abs(loop.rate() - rate) > 1e-9) {
+            throw new IllegalArgumentException(rig + ": the configuration set the loop's rate to " + loop.rate()
+                    + " Hz; the lockstep plant runs at " + rate + " Hz");
+        }
+        watch.loop = loop;
+        loop.start();
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        while (loop.isRunning() && clock.getAsDouble() < end && System.nanoTime() < deadline) {
+            if (watch.atEvent && !watch.eventDone) {
+                change.run();
+                watch.eventDone = true;
+            }
+            LockSupport.parkNanos(200_000);
+        }
+        loop.stop();
+        r.faultTicks = watch.faultTicks >= 0 ? watch.faultTicks : loop.telemetry().faultTicks;
+        r.failure = loop.failure();
+    }
+
+    /**
+     * The scene's change, through the model's public API: the wall's stiffness, or its surface moved to
+     * {@code surface} (model metres along y); or the hand let go by {@code letGo}.
+     */
+    static void change(AdversarialCase c, PhysicalModel pm, PlaneContact3D wall, double surface, Runnable letGo) {
         switch (c.kind) {
             case SWITCH_ON:
             case STIFFEN:
                 pm.setLinkStiffness("wall", c.stiffness);
                 break;
             case MOVE_IN:
-                wall.setPlanePosition(-c.gap());
+                wall.setPlanePosition(surface);
                 break;
             case RELEASE:
-                em.setHand(Hand.none());
+                letGo.run();
                 break;
             default:
                 break;

@@ -1,6 +1,5 @@
 package tactus.hapticstability;
 
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import tactus.PhysicalModel;
 import tactus.PlaneContact3D;
@@ -79,29 +78,10 @@ public final class AdversarialRig3D {
         HapticLoop loop = new HapticLoop(device, watch);
         loop.setWorkspaceMapping(WorkspaceMapping.identity());   // the model's metres are the device's
         loop.setForceGain(1);
-        loop.setRate(rate);
-        loop.setWatchdogMillis(60_000);
-        loop.setLinkTimeoutMillis(60_000);
         loop.setHeapWarmup(false);
-        configuration.accept(loop);
-        if (Math.abs(loop.rate() - rate) > 1e-9) {
-            throw new IllegalArgumentException("AdversarialRig3D: the configuration set the loop's rate to "
-                    + loop.rate() + " Hz; the lockstep plant runs at " + rate + " Hz");
-        }
-        watch.loop = loop;
-        loop.start();
-        long deadline = System.nanoTime() + 120_000_000_000L;
-        double end = tStart + (ticks + 2) * PERIOD;
-        while (loop.isRunning() && sim.time() < end && System.nanoTime() < deadline) {
-            if (watch.atEvent && !watch.eventDone) {
-                change(c, pm, wall, sim, home[1]);   // on this thread, as a sketch's key handler would
-                watch.eventDone = true;
-            }
-            LockSupport.parkNanos(200_000);
-        }
-        loop.stop();
-        r.faultTicks = watch.faultTicks >= 0 ? watch.faultTicks : loop.telemetry().faultTicks;
-        r.failure = loop.failure();
+        AdversarialRig.drive(loop, rate, configuration, watch, sim::time, tStart + (ticks + 2) * PERIOD,
+                () -> AdversarialRig.change(c, pm, wall, home[1] - c.gap(), () -> sim.setHand(Hand3D.none())), r,
+                "AdversarialRig3D");
         sim.setProbe(null);
         loop.close();
         rec.n = Math.min(rec.n, ticks * perTick);
@@ -119,24 +99,5 @@ public final class AdversarialRig3D {
             out[1] = xy[1];
             out[2] = home[2];
         };
-    }
-
-    /** The scene's change, through the model's public API (or the device's hand). */
-    private static void change(AdversarialCase c, PhysicalModel pm, PlaneContact3D wall, SimulatedInverse3 sim,
-                               double homeY) {
-        switch (c.kind) {
-            case SWITCH_ON:
-            case STIFFEN:
-                pm.setLinkStiffness("wall", c.stiffness);
-                break;
-            case MOVE_IN:
-                wall.setPlanePosition(homeY - c.gap());
-                break;
-            case RELEASE:
-                sim.setHand(Hand3D.none());
-                break;
-            default:
-                break;
-        }
     }
 }
