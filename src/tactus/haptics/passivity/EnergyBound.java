@@ -43,6 +43,8 @@ final class EnergyBound {
     private final double[] last = new double[3];      // the force sent at the last tick, N
     private volatile double countReserve;             // c, counts; 0: off
     private final double[] quantum = new double[3];   // the sensor's count along each axis at the handle, m
+    private volatile double damping;                  // N s/m: a lower bound of the device's own viscous damping
+    private volatile double friction;                 // N: a lower bound of its own Coulomb friction
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
     void setStiffness(double nPerM) {
@@ -101,13 +103,40 @@ final class EnergyBound {
         last[2] = 0;
     }
 
+    /** Declares lower bounds of the device's own damping (N s/m, &gt;= 0) and friction (N, &gt;= 0), from any thread. */
+    void setDissipation(double nsPerM, double newtons) {
+        damping = nsPerM;
+        friction = newtons;
+    }
+
+    double damping() {
+        return damping;
+    }
+
+    double friction() {
+        return friction;
+    }
+
     /**
-     * Adds to the budget only (J, &gt;= 0) energy the hand certainly lost in the device itself during the last tick
-     * (its declared damping and friction): it pays for force as the hand's input does, but it is not the port's, so
-     * it does not move the floor a deficit is forgiven down to, and the trim still drops what no force holds.
+     * Adds to the budget only the least energy the device's declared damping b and friction f took from the hand while
+     * the handle moved from {@code from} to {@code to} (m) in {@code seconds}: with d the displacement less one sensor
+     * count per axis (the least the handle can have moved), {@code b |d|^2 / seconds + f |d|} (a motion over a time
+     * t dissipates at least {@code b |d|^2 / t} in a damper, by Cauchy-Schwarz, and {@code f |d|} in friction). It
+     * pays for force as the hand's input does, but it is not the port's, so it does not move the floor a deficit is
+     * forgiven down to, and the trim still drops what no force holds.
      */
-    void credit(double joules) {
-        budget += joules;
+    void credit(double[] to, double[] from, double seconds) {
+        double b = damping;
+        double f = friction;
+        if (!(b > 0) && !(f > 0)) {
+            return;
+        }
+        double d2 = 0;
+        for (int i = 0; i < 3; i++) {
+            double d = Math.max(0, Math.abs(to[i] - from[i]) - quantum[i]);
+            d2 += d * d;
+        }
+        budget += b * d2 / seconds + f * Math.sqrt(d2);
     }
 
     /** Adds the energy (J) that entered the model through the port during the last tick. */

@@ -41,9 +41,6 @@ public final class HapticPort {
     private final double[] proxyVelocity = new double[3];
     private final double[] filtered = new double[3];   // the velocity seen by the friction compensation, m/s
     private final ContactPlay play = new ContactPlay();
-    private final double[] quantum = new double[3];     // the sensor's count along each axis, m
-    private volatile double deviceDamping;              // N s/m: a lower bound of the device's own viscous damping
-    private volatile double deviceFriction;             // N: a lower bound of its own Coulomb friction
     private final double[] playWidths = new double[3]; // m per axis; all 0: no play
     private double frictionGain;                        // its filter's weight per tick
     private double frictionX;
@@ -173,9 +170,9 @@ public final class HapticPort {
     }
 
     /**
-     * Sets the energy bound's count reserve (sensor counts, &gt;= 0; 0: none), from any thread: the force is also
-     * capped so that the handle moving back by one count at that force takes at most this fraction's inverse of the
-     * budget; see {@link EnergyBound}.
+     * Sets the energy bound's count reserve c (sensor counts, &gt;= 0; 0: none), from any thread: the force is also
+     * capped so that the handle moving back by one count at that force takes at most 1 / c of the budget; see
+     * {@link EnergyBound}.
      */
     public void setEnergyBoundCountReserve(double counts) {
         bound.setCountReserve(counts);
@@ -191,9 +188,6 @@ public final class HapticPort {
      * loop's thread before {@link #command}.
      */
     public void setPositionQuantum(double qx, double qy, double qz) {
-        quantum[0] = qx;
-        quantum[1] = qy;
-        quantum[2] = qz;
         bound.setQuantum(qx, qy, qz);
     }
 
@@ -215,41 +209,20 @@ public final class HapticPort {
     /**
      * Declares lower bounds of the device's own dissipation at the handle, from any thread: viscous damping (N s/m,
      * &gt;= 0) and Coulomb friction (N, &gt;= 0). The energy bound's budget is credited with the least energy they
-     * took from the hand over each measured displacement ({@link #dissipatedAtLeast}).
+     * took from the hand over each measured displacement; see {@link EnergyBound}.
      */
     public void setDeviceDissipation(double nsPerM, double newtons) {
-        deviceDamping = nsPerM;
-        deviceFriction = newtons;
+        bound.setDissipation(nsPerM, newtons);
     }
 
     /** The device's declared viscous damping at the handle, N s/m. */
     public double deviceDamping() {
-        return deviceDamping;
+        return bound.damping();
     }
 
     /** The device's declared Coulomb friction at the handle, N. */
     public double deviceFriction() {
-        return deviceFriction;
-    }
-
-    /**
-     * The least energy (J) the device's declared damping b and friction f took from the hand while the handle moved
-     * from {@code from} to {@code to} in {@code seconds}: with d the displacement less one sensor count per axis (the
-     * least the handle can have moved), {@code b |d|^2 / seconds + f |d|} (a motion over a time t dissipates at least
-     * {@code b |d|^2 / t} in a damper, by Cauchy-Schwarz, and {@code f |d|} in friction).
-     */
-    private double dissipatedAtLeast(double[] to, double[] from, double seconds) {
-        double b = deviceDamping;
-        double f = deviceFriction;
-        if (!(b > 0) && !(f > 0)) {
-            return 0;
-        }
-        double d2 = 0;
-        for (int i = 0; i < 3; i++) {
-            double d = Math.max(0, Math.abs(to[i] - from[i]) - quantum[i]);
-            d2 += d * d;
-        }
-        return b * d2 / seconds + f * Math.sqrt(d2);
+        return bound.friction();
     }
 
     /** Sets the friction compensation (null: none), from any thread. */
@@ -328,7 +301,7 @@ public final class HapticPort {
             boolean on = controlOn;
             controller.observe(into, on);
             bound.observe(into);
-            bound.credit(dissipatedAtLeast(position, previous, period));
+            bound.credit(position, previous, period);
             observer.record(into, damped);
         }
         if (late == 0) {
@@ -413,7 +386,7 @@ public final class HapticPort {
         velocity[2] = dz / span;
         controller.observe(into, controlOn);
         bound.observe(into);
-        bound.credit(dissipatedAtLeast(position, previous, span));
+        bound.credit(position, previous, span);
         observer.record(into, damped);
         System.arraycopy(position, 0, previous, 0, 3);
         lastFresh = n;

@@ -292,17 +292,24 @@ class EnergyBoundTest {
         assertEquals(0, tick(b, -1.2e-5, 20), 0, "no force once the seed is given back");
         assertEquals(-1.2e-5, b.budget(), 1e-15);
         assertEquals(0, tick(b, 0, 20), 0, "and none later: nothing came in");
-        // energy the device's own damping took from the hand pays for force again
-        b.credit(4e-5);
+        // energy the device's own damping took from the hand pays for force again: 0.5 N s/m over 10 mm in 50 ms
+        // dissipates at least 0.5 * 0.01^2 / 0.05 = 1 mJ; friction of 0.01 N over it, 0.1 mJ more; a count of
+        // 0.1 mm on each axis is taken off what the handle certainly moved
+        b.setDissipation(0.5, 0.01);
+        b.setQuantum(1e-4, 1e-4, 1e-4);
+        b.credit(new double[] {0, 0.0101, 0}, new double[] {0, 0, 0}, 0.05);
         double f = tick(b, 0, 20);
-        assertEquals(Math.sqrt(2 * BOUND * (4e-5 - 1.2e-5 + 1e-5)), f, 1e-12, "the credit pays for force");
+        assertEquals(Math.sqrt(2 * BOUND * (1e-3 + 1e-4 - 1.2e-5 + 1e-5)), f, 1e-9, "the credit pays for force");
+        b.credit(new double[] {1e-4, 0, 0}, new double[] {0, 0, 0}, 0.001);
+        assertEquals(f, tick(b, 0, 20), 1e-12, "one count of motion is credited nothing");
         // a credit earned while no force is wanted is trimmed away: no reserve for a later contact
         EnergyBound idle = new EnergyBound();
         idle.setStiffness(BOUND);
         idle.setSeed(1e-5);
         idle.setRise(100);
         tick(idle, 0, 0);
-        idle.credit(1e-3);
+        idle.setDissipation(0.5, 0);
+        idle.credit(new double[] {0, 0.01, 0}, new double[] {0, 0, 0}, 0.05);
         tick(idle, 0, 0);
         assertEquals(0, idle.budget(), 0, "trimmed with no force");
         assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(idle, 0, 20), 1e-12, "the next contact starts with the seed");
