@@ -860,7 +860,8 @@ public final class HapticLoop implements AutoCloseable {
      *
      * <p>Measured on the emulated 2DIY at 1600 N/m with {@link #useStiffContacts} (docs/haptics-stability.md, "The
      * count reserve"): at {@value #ROBUST_COUNT_RESERVE} counts no case of the adversarial suite gives the hand more
-     * than 2.3 µJ and no wall with friction is lost, but the pen grip feels about 560 N/m instead of about 1400.
+     * than 2.3 µJ and no wall with friction is lost, but the pen grip's 20 mm/s presses are felt at about 560 N/m
+     * instead of 785-1220.
      *
      * @throws IllegalArgumentException naming the value when it is negative, infinite or NaN; nothing changes then
      */
