@@ -738,12 +738,29 @@ public class Board implements AutoCloseable {
 
     /** Sends len bytes of data in one write. */
     void send(byte[] data, int len) {
+        send(data, len, null);
+    }
+
+    /**
+     * Sends len bytes of data in one write; or, if the motor guard zeroed the motors since the torques in data were
+     * scaled ({@link #torqueRamp} took in its writes then: this JVM was paused in between), the message ifZeroed
+     * instead (when not null), so that torques computed before the pause never reach the board after it. Returns true
+     * if it sent ifZeroed.
+     */
+    private boolean send(byte[] data, int len, byte[] ifZeroed) {
+        boolean replaced = false;
         lock.lock();
         try {
             requireOpen();
             try {
                 boardStillReads();
+                long zeroings = guardZeroings;
                 syncGuardWrites();
+                if (ifZeroed != null && guardZeroings != zeroings) {
+                    data = ifZeroed;   // the next write's ramp starts from zero, as after any guard zeroing
+                    len = ifZeroed.length;
+                    replaced = true;
+                }
                 writeStartedNanos = System.nanoTime() | 1L;
                 try {
                     transport.write(data, 0, len);
@@ -762,16 +779,20 @@ public class Board implements AutoCloseable {
         } finally {
             lock.unlock();
         }
+        return replaced;
     }
 
     /**
      * Sends a device's torque write and feeds the torque watchdog: nonZero tells whether any torque in it is
-     * not zero (only then does the watchdog watch).
+     * not zero (only then does the watchdog watch); zeros (or null) is the device's write with zero torques, sent
+     * instead when the motor guard zeroed the motors after the torques were scaled (see {@link #torqueRamp}).
      */
-    void sendTorques(byte[] data, int len, boolean nonZero) {
+    void sendTorques(byte[] data, int len, boolean nonZero, byte[] zeros) {
         lock.lock();
         try {
-            send(data, len);
+            if (send(data, len, zeros)) {
+                nonZero = false;
+            }
             long now = System.nanoTime();
             lastTorqueWriteNanos = now;   // under the lock: the watchdog never sees a write half done
             torqueArmed = nonZero;

@@ -429,7 +429,7 @@ public class Device {
     void writeZeros() {
         byte[] zeros = zeroMessage();
         if (zeros != null) {
-            board.sendTorques(zeros, zeros.length, false);
+            board.sendTorques(zeros, zeros.length, false, null);
         }
     }
 
@@ -502,7 +502,7 @@ public class Device {
         for (int i = 0; i < nMotors; i++) {
             nonZero |= torquesByPort[i] != 0f;
         }
-        board.sendTorques(writeBuffer, writeBuffer.length, nonZero);
+        board.sendTorques(writeBuffer, writeBuffer.length, nonZero, zeroMessage);
     }
 
     private Pwm pwmAt(String op, int pin) {

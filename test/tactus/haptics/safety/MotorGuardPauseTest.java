@@ -20,6 +20,7 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import tactus.haptics.Device;
 import tactus.haptics.transport.SerialTransport;
 
 /**
@@ -142,6 +143,42 @@ class MotorGuardPauseTest {
                 long resumed = System.nanoTime();
                 ramp.record(resumed);
                 assertRampedBackIn(run, "a breakpoint inside a serial write", ramp);
+            } finally {
+                vm.dispose();
+            }
+        }
+    }
+
+    /**
+     * A pause that catches the haptic thread after it scaled its torques for the ramp and before it wrote them: the
+     * guard zeroes the motors during the pause, and the torques computed before it must not reach the board after
+     * it. (Before the board checked the guard's writes again at the write, the first write after the resume went out
+     * at full duty, and the ramp began one write later; seen once in a CI run of the SIGSTOP test.)
+     */
+    @Test
+    void aPauseBetweenScalingAndWritingTheTorquesStillRampsTheForceBackIn() throws Exception {
+        try (SketchEndingRun run = SketchEndingRun.start(List.of(), JDWP, CHILD)) {
+            VirtualMachine vm = run.attach();
+            try {
+                Sampler ramp = new Sampler(run);
+                List<ReferenceType> types = vm.classesByName(Device.class.getName());
+                assertEquals(1, types.size(), "Device is loaded");
+                int line = lineOf("src/tactus/haptics/Device.java", "if (ramp < 1f) {");
+                List<Location> at = types.get(0).locationsOfLine(line);
+                assertTrue(!at.isEmpty(), "a location at Device.java:" + line);
+                BreakpointRequest bp = vm.eventRequestManager().createBreakpointRequest(at.get(0));
+                bp.setSuspendPolicy(EventRequest.SUSPEND_ALL);
+                bp.enable();
+                long hit = awaitBreakpoint(vm, 5_000);
+                double ms = run.millisToZero(hit, ZERO_LIMIT_MS + 1_000);
+                assertZeroedInTime(run, "a breakpoint between scaling and writing the torques", ms);
+                assertStaysZero(run, "a breakpoint between scaling and writing the torques");
+                bp.disable();
+                vm.eventRequestManager().deleteEventRequest(bp);
+                vm.resume();
+                long resumed = System.nanoTime();
+                ramp.record(resumed);
+                assertRampedBackIn(run, "a breakpoint between scaling and writing the torques", ramp);
             } finally {
                 vm.dispose();
             }
