@@ -117,6 +117,7 @@ public class Board implements AutoCloseable {
     private long seenGuardWrites;
     private long rampFromNanos;      // 0: no ramp
     private float lastRamp = 1f;
+    private long zeroingsAtRamp;     // guardZeroings when torqueRamp() last scaled the torques
     private volatile long guardZeroings;
 
     /**
@@ -754,9 +755,8 @@ public class Board implements AutoCloseable {
             requireOpen();
             try {
                 boardStillReads();
-                long zeroings = guardZeroings;
-                syncGuardWrites();
-                if (ifZeroed != null && guardZeroings != zeroings) {
+                syncGuardWrites();   // any thread may have taken the guard's writes in since torqueRamp()
+                if (ifZeroed != null && guardZeroings != zeroingsAtRamp) {
                     data = ifZeroed;   // the next write's ramp starts from zero, as after any guard zeroing
                     len = ifZeroed.length;
                     replaced = true;
@@ -819,6 +819,7 @@ public class Board implements AutoCloseable {
                 return 1f;
             }
             syncGuardWrites();
+            zeroingsAtRamp = guardZeroings;
             if (rampFromNanos == 0) {
                 return 1f;
             }

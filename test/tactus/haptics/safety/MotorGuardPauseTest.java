@@ -121,32 +121,8 @@ class MotorGuardPauseTest {
      */
     @Test
     void aPauseInsideASerialWriteDoesNotCloseThePort() throws Exception {
-        try (SketchEndingRun run = SketchEndingRun.start(List.of(), JDWP, CHILD)) {
-            VirtualMachine vm = run.attach();
-            try {
-                Sampler ramp = new Sampler(run);
-                List<ReferenceType> types = vm.classesByName(SerialTransport.class.getName());
-                assertEquals(1, types.size(), "SerialTransport is loaded");
-                int line = lineOf("src/tactus/haptics/transport/SerialTransport.java", "done += Math.max(0, n);");
-                List<Location> at = types.get(0).locationsOfLine(line);
-                assertTrue(!at.isEmpty(), "a location at SerialTransport.java:" + line);
-                BreakpointRequest bp = vm.eventRequestManager().createBreakpointRequest(at.get(0));
-                bp.setSuspendPolicy(EventRequest.SUSPEND_ALL);
-                bp.enable();
-                long hit = awaitBreakpoint(vm, 5_000);
-                double ms = run.millisToZero(hit, ZERO_LIMIT_MS + 1_000);
-                assertZeroedInTime(run, "a breakpoint inside a serial write", ms);
-                assertStaysZero(run, "a breakpoint inside a serial write");
-                bp.disable();
-                vm.eventRequestManager().deleteEventRequest(bp);
-                vm.resume();
-                long resumed = System.nanoTime();
-                ramp.record(resumed);
-                assertRampedBackIn(run, "a breakpoint inside a serial write", ramp);
-            } finally {
-                vm.dispose();
-            }
-        }
+        pauseAtLineAndResume(SerialTransport.class, "src/tactus/haptics/transport/SerialTransport.java",
+                "done += Math.max(0, n);", "a breakpoint inside a serial write");
     }
 
     /**
@@ -157,28 +133,38 @@ class MotorGuardPauseTest {
      */
     @Test
     void aPauseBetweenScalingAndWritingTheTorquesStillRampsTheForceBackIn() throws Exception {
+        pauseAtLineAndResume(Device.class, "src/tactus/haptics/Device.java", "if (ramp < 1f) {",
+                "a breakpoint between scaling and writing the torques");
+    }
+
+    /**
+     * Stops every thread of the sketch's JVM at the first line of a class's source that contains text (a JDI
+     * breakpoint, as the editor's), checks that the guard zeroes the motors in time and keeps them at zero, resumes,
+     * and checks that the force ramps back in and the board stays open.
+     */
+    private static void pauseAtLineAndResume(Class<?> type, String file, String text, String how) throws Exception {
         try (SketchEndingRun run = SketchEndingRun.start(List.of(), JDWP, CHILD)) {
             VirtualMachine vm = run.attach();
             try {
                 Sampler ramp = new Sampler(run);
-                List<ReferenceType> types = vm.classesByName(Device.class.getName());
-                assertEquals(1, types.size(), "Device is loaded");
-                int line = lineOf("src/tactus/haptics/Device.java", "if (ramp < 1f) {");
+                List<ReferenceType> types = vm.classesByName(type.getName());
+                assertEquals(1, types.size(), type.getSimpleName() + " is loaded");
+                int line = lineOf(file, text);
                 List<Location> at = types.get(0).locationsOfLine(line);
-                assertTrue(!at.isEmpty(), "a location at Device.java:" + line);
+                assertTrue(!at.isEmpty(), "a location at " + file + ":" + line);
                 BreakpointRequest bp = vm.eventRequestManager().createBreakpointRequest(at.get(0));
                 bp.setSuspendPolicy(EventRequest.SUSPEND_ALL);
                 bp.enable();
                 long hit = awaitBreakpoint(vm, 5_000);
                 double ms = run.millisToZero(hit, ZERO_LIMIT_MS + 1_000);
-                assertZeroedInTime(run, "a breakpoint between scaling and writing the torques", ms);
-                assertStaysZero(run, "a breakpoint between scaling and writing the torques");
+                assertZeroedInTime(run, how, ms);
+                assertStaysZero(run, how);
                 bp.disable();
                 vm.eventRequestManager().deleteEventRequest(bp);
                 vm.resume();
                 long resumed = System.nanoTime();
                 ramp.record(resumed);
-                assertRampedBackIn(run, "a breakpoint between scaling and writing the torques", ramp);
+                assertRampedBackIn(run, how, ramp);
             } finally {
                 vm.dispose();
             }
