@@ -196,6 +196,15 @@ class EnergyBoundTest {
         assertEquals(-4, f[0], 0);
     }
 
+    /** A bound at {@link #BOUND} with this seed (J) and step limit (N per tick). */
+    private static EnergyBound bound(double seed, double rise) {
+        EnergyBound b = new EnergyBound();
+        b.setStiffness(BOUND);
+        b.setSeed(seed);
+        b.setRise(rise);
+        return b;
+    }
+
     /** Sends the bound one tick: energy in (J), then the model's force along x (N); returns the force sent, N. */
     private static double tick(EnergyBound b, double intoModel, double want) {
         b.observe(intoModel);
@@ -209,10 +218,7 @@ class EnergyBoundTest {
         double q = 1.48e-4;   // a 2DIY count at the handle, m
         for (double c : new double[] {1.25, 1.75, 3}) {
             for (double rise : new double[] {0.5, 100}) {
-                EnergyBound b = new EnergyBound();
-                b.setStiffness(BOUND);
-                b.setSeed(1e-5);
-                b.setRise(rise);
+                EnergyBound b = bound(1e-5, rise);
                 b.setQuantum(q, q, 0);
                 b.setCountReserve(c);
                 double sent = tick(b, 0, 20);
@@ -238,10 +244,7 @@ class EnergyBoundTest {
                         + (b.budget() + b.seed()) + " J from " + before);
                 // above the reserve the cap is the spring's: F^2 / 2K + B* / 2 = B
                 double reserved = c * c * q * q * BOUND;
-                EnergyBound big = new EnergyBound();
-                big.setStiffness(BOUND);
-                big.setSeed(1e-3);
-                big.setRise(100);
+                EnergyBound big = bound(1e-3, 100);
                 big.setQuantum(q, q, 0);
                 big.setCountReserve(c);
                 double f = tick(big, 0, 50);
@@ -253,10 +256,7 @@ class EnergyBoundTest {
     @Test
     void withoutACountReserveOrWithoutAQuantumTheCapIsTheSpringsAsBefore() {
         for (double[] qc : new double[][] {{1.48e-4, 0}, {0, 1.75}}) {
-            EnergyBound b = new EnergyBound();
-            b.setStiffness(BOUND);
-            b.setSeed(1e-5);
-            b.setRise(100);
+            EnergyBound b = bound(1e-5, 100);
             b.setQuantum(qc[0], qc[0], qc[0]);
             b.setCountReserve(qc[1]);
             assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(b, 0, 20), 1e-12, "q " + qc[0] + ", c " + qc[1]);
@@ -283,10 +283,7 @@ class EnergyBoundTest {
 
     @Test
     void aCreditPaysForForceAfterTheSeedIsGivenBackButNotWhileNoForceIsWanted() {
-        EnergyBound b = new EnergyBound();
-        b.setStiffness(BOUND);
-        b.setSeed(1e-5);
-        b.setRise(100);
+        EnergyBound b = bound(1e-5, 100);
         assertEquals(Math.sqrt(2 * BOUND * 1e-5), tick(b, 0, 20), 1e-12, "the seed's force");
         // the contact gives the hand back more than the seed: the budget sits at the port's net, -12 uJ
         assertEquals(0, tick(b, -1.2e-5, 20), 0, "no force once the seed is given back");
@@ -303,10 +300,7 @@ class EnergyBoundTest {
         b.credit(new double[] {1e-4, 0, 0}, new double[] {0, 0, 0}, 0.001);
         assertEquals(f, tick(b, 0, 20), 1e-12, "one count of motion is credited nothing");
         // a credit earned while no force is wanted is trimmed away: no reserve for a later contact
-        EnergyBound idle = new EnergyBound();
-        idle.setStiffness(BOUND);
-        idle.setSeed(1e-5);
-        idle.setRise(100);
+        EnergyBound idle = bound(1e-5, 100);
         tick(idle, 0, 0);
         idle.setDissipation(0.5, 0);
         idle.credit(new double[] {0, 0.01, 0}, new double[] {0, 0, 0}, 0.05);
