@@ -90,7 +90,7 @@ void startLoop() {
   loop.setPassivityControl(controller);
   if (stiff) {
     // felt as at most 1600 N/m, passive, no buzz, also when the wall changes under the handle
-    loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+    loop.useStiffContacts();
   }
   loop.setEnergyBoundCountReserve(reserve ? HapticLoop.ROBUST_COUNT_RESERVE : 0);
   loop.start();
@@ -193,7 +193,7 @@ void keyPressed() {
   if (key == 's' || key == 'S') {
     stiff = !stiff;
     if (stiff) {
-      loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);   // at once, while the loop runs
+      loop.useStiffContacts();   // at once, while the loop runs
       controller = false;
       coupling = false;
     } else {

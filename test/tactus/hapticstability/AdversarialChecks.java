@@ -13,7 +13,7 @@ final class AdversarialChecks {
     /** True if the run gave the hand at most the suite's tolerance, stepped the force within its limit and refused no tick. */
     static boolean passiveWithoutBuzz(AdversarialRig.Result r) {
         return r.failure == null && r.faultTicks == 0 && r.maxEnergyToHand <= AdversarialSuite.ENERGY_TOLERANCE
-                && r.forceStep <= AdversarialSuite.FORCE_STEP_LIMIT;
+                && AdversarialSuite.withinStepLimit(r.forceStep);
     }
 
     /** The rows (labelled) of the cases whose run fails {@code ok}; each case is run once by {@code run}. */

@@ -59,8 +59,16 @@ public final class AdversarialRig {
         public double forceStep;
         /** True if that largest change made the force larger (a rise), false if smaller (a fall, as at a release). */
         public boolean forceStepRises;
-        /** The stiffness the hand felt (N/m): see {@link AdversarialRig}'s docs page; NaN if not read. */
+        /**
+         * The stiffness the hand felt, N/m: the mean push over the mean penetration while the hand holds (the settled
+         * window); NaN for taps and releases, which have no hold.
+         */
         public double felt;
+        /**
+         * For a press, the least-squares slope of the hand's push against the penetration while it presses in, N/m
+         * (the slope the sweep reads); NaN otherwise.
+         */
+        public double feltSlope;
         /** The loop's failure message, or null. */
         public String failure;
         /** Ticks at which the loop sent zero force for a fault (a force above its limit, 20 N by default). */
@@ -282,7 +290,6 @@ public final class AdversarialRig {
     static void measure(AdversarialCase c, Record rec, Watch watch, Result r, double mass) {
         int n = rec.n;
         double wallY = -c.gap();
-        double dt = rec.t[1] - rec.t[0];
         int firstIn = -1;
         for (int i = 0; i < n; i++) {
             if (rec.y[i] < wallY) {
@@ -327,7 +334,20 @@ public final class AdversarialRig {
         r.observerMaxEnergyToHand = oMax;
         r.forceStep = watch.forceStep;
         r.forceStepRises = watch.forceStepRises;
-        // residual: RMS of y about its 20 ms moving average in the settled window
+        r.residual = residual(c, rec, wallY);
+        r.stable = r.failure == null && r.residual < Touch.RESIDUAL_LIMIT;
+        r.felt = felt(c, rec, wallY, firstIn);
+        r.feltSlope = c.kind == AdversarialCase.Kind.PRESS && firstIn >= 0
+                ? Touch.pressSlope(rec.t, rec.y, rec.fy, rec.n, firstIn, wallY, c.inEnd()) : Double.NaN;
+    }
+
+    /**
+     * The RMS of the handle's y about its 20 ms moving average in the case's settled window, m; after a tap or a release
+     * only where the handle is still in the wall (a hand that has left is not counted).
+     */
+    static double residual(AdversarialCase c, Record rec, double wallY) {
+        int n = rec.n;
+        double dt = rec.t[1] - rec.t[0];
         int w = Math.max(1, (int) Math.round(0.02 / dt));
         double[] pre = new double[n + 1];
         for (int i = 0; i < n; i++) {
@@ -346,22 +366,16 @@ public final class AdversarialRig {
                 ns++;
             }
         }
-        r.residual = ns > 0 ? Math.sqrt(s / ns) : 0;   // a hand that has left: only the handle in contact counts
-        r.stable = r.failure == null && r.residual < Touch.RESIDUAL_LIMIT;
-        r.felt = felt(c, rec, wallY, firstIn);
+        return ns > 0 ? Math.sqrt(s / ns) : 0;
     }
 
     /**
-     * The felt stiffness, N/m: for a press, the least-squares slope of the hand's push against the penetration while
-     * it presses in (a constant friction and the hand's damping at a steady speed drop out); for a wall that appears,
-     * moves or stiffens, the mean push over the mean penetration in the settled window; NaN for taps and releases.
+     * The felt stiffness, N/m: the mean push over the mean penetration in the settled window (the hold); NaN for taps
+     * and releases.
      */
     private static double felt(AdversarialCase c, Record rec, double wallY, int firstIn) {
         if (c.kind == AdversarialCase.Kind.TAP || c.kind == AdversarialCase.Kind.RELEASE || firstIn < 0) {
             return Double.NaN;
-        }
-        if (c.kind == AdversarialCase.Kind.PRESS) {
-            return Touch.pressSlope(rec.t, rec.y, rec.fy, rec.n, firstIn, wallY, c.inEnd());
         }
         double[] win = c.settledWindow();
         double sf = 0;

@@ -32,15 +32,18 @@ public final class AdversarialRig3D {
     private AdversarialRig3D() {
     }
 
-    /** The plant of the case: the 3-DoF plant with or without its Coulomb friction. */
-    static PlantParameters plant(AdversarialCase c) {
-        PlantParameters p = PlantParameters.cartesian3Dof();
-        return c.friction ? p : p.withoutFriction();
-    }
-
     /** Runs the case with the loop configured by the configuration under test (called before the loop starts). */
     public static AdversarialRig.Result run(AdversarialCase c, Consumer<HapticLoop> configuration) {
-        PlantParameters plant = plant(c);
+        return run(c, configuration, PlantParameters.cartesian3Dof());
+    }
+
+    /**
+     * Runs the case on another Cartesian plant (its mass, damping and friction per axis; the friction is dropped for a
+     * case without friction), with the loop configured by the configuration under test.
+     */
+    public static AdversarialRig.Result run(AdversarialCase c, Consumer<HapticLoop> configuration,
+                                            PlantParameters withFriction) {
+        PlantParameters plant = c.friction ? withFriction : withFriction.withoutFriction();
         int rate = (int) Math.round(1 / PERIOD);
         int perTick = (int) Math.round(PERIOD / plant.substep());
         int ticks = (int) Math.ceil(c.duration() / PERIOD);

@@ -3,19 +3,28 @@ package tactus.haptics.passivity;
 /**
  * Energy bounding of the port's force (after Kim &amp; Ryu): the force sent may never hold more energy, as a spring of
  * stiffness K, than the budget the hand has put in through the port plus a small seed,
- * {@code |F|^2 / (2 K) <= E + E0}. No damper and no velocity multiplies the force, so the encoders' steps do not
- * make it buzz.
+ * {@code |F|^2 / (2 K) <= E + E0}. No damper multiplies the force, and the velocity enters it only through the hold
+ * compensation below, where the sensor is fine, so the encoders' steps do not make it buzz.
  *
  * <p>The budget E is the port's ledger (the work of the held forces over the measured displacements, with the exchange
  * delay, as the {@link PassivityObserver} counts it), trimmed each tick to what the force sent would hold in a spring
- * {@value #TRIM} times softer than K, {@code E <= TRIM |F|^2 / (2 K)}: energy the hand spent on the model's dampers,
- * or in free space, is no reserve for a later contact, so a contact that appears, moves or stiffens around the handle
- * starts with the seed only; a contact down to K / {@value #TRIM} still gets back, on release, what it stored. While
+ * r times softer than K (the trim ratio, {@value #DEFAULT_TRIM} by default), {@code E <= r |F|^2 / (2 K)}: energy
+ * the hand spent on the model's dampers, or in free space, is no reserve for a later contact, so a contact that
+ * appears, moves or stiffens around the handle starts with the seed only; a contact down to K / r still gets back, on release, what it stored (softer ones get back
+ * less), and a wall stiffened under a held handle may push with at most sqrt(r) times the force it held. While
  * the cap binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the
  * energy the hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact
  * stiffer than K is felt as K. Then the force may change by at most a given step per tick, as a vector: rises, falls
  * and turns alike, so that neither a contact's onset nor a fast release (a 200 mm/s tap lets the force fall by 1 N in
  * one tick) is a buzz; a limited fall pushes on for a few ticks beyond the cap, which the ledger counts.
+ *
+ * <p><b>The hold compensation</b> ({@link #setHoldCompensation}). A spring sampled every T and held for a delay tau (half a tick of
+ * zero-order hold plus d ticks of exchange delay: tau = T (d + 1/2)) acts as the spring with a negative damping of
+ * K tau: on a device whose own damping is smaller, a handle on the cap rings for long after a contact. The cap is then
+ * moved along the measured velocity, {@code cap - K tau v}, with v the handle's velocity along the force (positive
+ * outwards): a damping of K tau that cancels the hold's to first order. The ledger still charges every force sent. It
+ * is used only where the sensor is fine enough: where one count per tick of velocity would move the cap by more than
+ * {@value #LEAD_NOISE} N (the 2DIY's encoders), it is off.
  *
  * <p>A deficit (E below zero: the port gave back more than the budget, over a release the cap reacted to one exchange
  * late, or over an encoder count that the ledger charges in full) is forgiven only down to the port's net energy since
@@ -31,8 +40,10 @@ final class EnergyBound {
     static final double DEFAULT_SEED = 1e-5;
     /** The default largest change of the force per tick, N. */
     static final double DEFAULT_RISE = 0.5;
-    /** How much softer than K a contact may be and still get back, on release, the energy it stored. */
-    static final double TRIM = 8;
+    /** The default trim ratio: how much softer than K a contact may be and still get back, on release, what it stored. */
+    static final double DEFAULT_TRIM = 8;
+    /** The largest cap change, N, that one sensor count per tick of velocity may make through the lead; above, no lead. */
+    static final double LEAD_NOISE = 0.01;
 
     private volatile double stiffness;                // N/m; 0: off
     private volatile double seed = DEFAULT_SEED;      // J
@@ -45,6 +56,9 @@ final class EnergyBound {
     private final double[] quantum = new double[3];   // the sensor's count along each axis at the handle, m
     private volatile double damping;                  // N s/m: a lower bound of the device's own viscous damping
     private volatile double friction;                 // N: a lower bound of its own Coulomb friction
+    private volatile double trim = DEFAULT_TRIM;      // r, >= 1
+    private volatile boolean holdCompensation;        // true: the cap is moved by K tau v (see the class)
+    private static final double[] AT_REST = new double[3];
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
     void setStiffness(double nPerM) {
@@ -87,6 +101,24 @@ final class EnergyBound {
         quantum[0] = qx;
         quantum[1] = qy;
         quantum[2] = qz;
+    }
+
+    /** Sets the trim ratio r (&gt;= 1), from any thread: the budget never exceeds r times what the force sent needs. */
+    void setTrim(double ratio) {
+        trim = ratio;
+    }
+
+    double trim() {
+        return trim;
+    }
+
+    /** Switches the hold compensation on or off, from any thread; see the class. */
+    void setHoldCompensation(boolean on) {
+        holdCompensation = on;
+    }
+
+    boolean holdCompensation() {
+        return holdCompensation;
     }
 
     /** The budget E (J) as the loop's thread last left it. */
@@ -145,11 +177,17 @@ final class EnergyBound {
         net += intoModel;
     }
 
-    /**
-     * Bounds the force f (N, in place) sent at this tick: scaled down to the energy cap, then moved towards it from the
-     * last force sent by at most the step limit.
-     */
+    /** As {@link #apply(double[], double[], double, double)} for a handle at rest. */
     void apply(double[] f) {
+        apply(f, AT_REST, 1e-3, 0);
+    }
+
+    /**
+     * Bounds the force f (N, in place) sent at this tick: scaled down to the energy cap (with the hold compensation on,
+     * moved along the handle's velocity v, m/s, for a tick of {@code tickSeconds} and a hold of {@code holdSeconds}),
+     * then moved towards it from the last force sent by at most the step limit.
+     */
+    void apply(double[] f, double[] v, double tickSeconds, double holdSeconds) {
         double k = stiffness;
         double magnitude = Math.sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         if (!(k > 0)) {
@@ -182,6 +220,11 @@ final class EnergyBound {
         } else {
             cap = Math.sqrt(2 * k * (available - reserved / 2));
         }
+        double b = holdCompensation ? k * holdSeconds : 0;   // N s/m: the damping the hold takes away
+        if (b > 0 && cap > 0 && magnitude > 0 && b * q / tickSeconds <= LEAD_NOISE) {
+            double outwards = (v[0] * f[0] + v[1] * f[1] + v[2] * f[2]) / magnitude;
+            cap = Math.max(0, cap - b * outwards);
+        }
         if (magnitude > cap) {
             double scale = cap / magnitude;
             f[0] *= scale;
@@ -207,6 +250,6 @@ final class EnergyBound {
         last[2] = f[2];
         // what the force sent needs, by the inverse of the cap, is the most the budget keeps
         double need = magnitude < c * q * k ? c * q * magnitude : magnitude * magnitude / (2 * k) + reserved / 2;
-        budget = Math.min(budget, TRIM * need);
+        budget = Math.min(budget, trim * need);
     }
 }

@@ -196,6 +196,33 @@ public final class HapticPort {
         bound.setRise(newtons);
     }
 
+    /**
+     * Sets the energy bound's trim ratio r (&gt;= 1; 8 by default), from any thread: the budget never exceeds r times the
+     * energy the force sent holds in a spring of the bound's stiffness; see {@link EnergyBound}.
+     */
+    public void setEnergyBoundTrim(double ratio) {
+        bound.setTrim(ratio);
+    }
+
+    /** The energy bound's trim ratio. */
+    public double energyBoundTrim() {
+        return bound.trim();
+    }
+
+    /**
+     * Switches the energy bound's hold compensation on or off, from any thread: the cap is moved along the measured
+     * velocity by K T (d + 1/2), the damping that the tick's hold and the exchange delay take away, where the sensor is
+     * fine enough; see {@link EnergyBound}.
+     */
+    public void setHoldCompensation(boolean on) {
+        bound.setHoldCompensation(on);
+    }
+
+    /** Whether the energy bound's hold compensation is on. */
+    public boolean isHoldCompensation() {
+        return bound.holdCompensation();
+    }
+
     /** The largest rise of the force per tick while the bound is on, N. */
     public double forceRiseLimit() {
         return bound.rise();
@@ -428,7 +455,7 @@ public final class HapticPort {
                 f[i] = -onProxy;
             }
         }
-        bound.apply(f);
+        bound.apply(f, velocity, period, period * (delay + 0.5));
         double alpha = 0;
         if (controlOn) {
             System.arraycopy(f, 0, damper, 0, 3);

@@ -141,11 +141,19 @@ class EnergyBoundTest {
             assertEquals(0, loop.energyBound(), 0, "off by default");
             loop.setPassivityControl(true);
             loop.setVirtualCoupling(new VirtualCoupling(300, 0.1, 0.01));
-            loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+            assertEquals(HapticLoop.TWO_DIY_STIFF_CONTACT, loop.recommendedStiffContact(), 0, "a planar device");
+            loop.useStiffContacts();
             assertEquals(HapticLoop.TWO_DIY_STIFF_CONTACT, loop.energyBound(), 0);
             assertEquals(0.5, loop.forceRiseLimit(), 0);
+            assertEquals(2, loop.energyBoundTrim(), 0);
+            assertTrue(loop.isHoldCompensation());
             assertFalse(loop.isPassivityControl());
             assertNull(loop.virtualCoupling());
+            for (double bad : new double[] {0.5, 0, -1, Double.NaN, Double.POSITIVE_INFINITY}) {
+                String m = assertThrows(IllegalArgumentException.class, () -> loop.setEnergyBoundTrim(bad)).getMessage();
+                assertTrue(m.contains("setEnergyBoundTrim") && m.contains(String.valueOf(bad)), m);
+                assertEquals(2, loop.energyBoundTrim(), 0, "unchanged after " + bad);
+            }
             for (double bad : new double[] {0, -3, Double.NaN, Double.POSITIVE_INFINITY}) {
                 String m = assertThrows(IllegalArgumentException.class, () -> loop.useStiffContacts(bad)).getMessage();
                 assertTrue(m.contains("useStiffContacts") && m.contains(String.valueOf(bad)), m);
@@ -211,6 +219,62 @@ class EnergyBoundTest {
         double[] f = {want, 0, 0};
         b.apply(f);
         return f[0];
+    }
+
+    /**
+     * The force sent, N, by a bound at 3300 N/m (step limit out of the way) that has taken 1 mJ in and is asked for 20 N
+     * along +x (so the cap binds), with the handle moving at v (m/s along x), a tick of 1 ms held for {@code hold} s and
+     * the sensor's count q (m) on every axis.
+     */
+    private static double capped(boolean compensation, double v, double hold, double q) {
+        EnergyBound b = new EnergyBound();
+        b.setStiffness(3300);
+        b.setRise(100);
+        b.setQuantum(q, q, q);
+        b.setHoldCompensation(compensation);
+        double[] f = {20, 0, 0};
+        b.apply(f, new double[] {0, 0, 0}, T, hold);   // switched on
+        b.observe(1e-3);
+        f[0] = 20;
+        b.apply(f, new double[] {v, 0, 0}, T, hold);
+        return f[0];
+    }
+
+    @Test
+    void theHoldCompensationMovesTheCapByTheDampingTheHoldTakesWhereTheSensorIsFine() {
+        double still = capped(false, 0, 0.5 * T, 0);
+        assertEquals(Math.sqrt(2 * 3300 * (1e-3 + b0())), still, 1e-9, "the spring's cap");
+        for (double hold : new double[] {0.5 * T, 1.5 * T}) {
+            for (double v : new double[] {-0.02, -0.001, 0.001, 0.02}) {
+                String at = "hold " + hold + " s, v " + v + " m/s: ";
+                // outwards (v > 0, along the force) the cap falls, inwards it rises, by K hold v
+                assertEquals(still - 3300 * hold * v, capped(true, v, hold, 0), 1e-9, at + "compensated");
+                assertEquals(still, capped(false, v, hold, 0), 1e-12, at + "off");
+                // a 2DIY count (148 um): one count per tick would move the cap by 0.24 N or more, so no compensation
+                assertEquals(still, capped(true, v, hold, 1.48e-4), 1e-12, at + "coarse sensor");
+                // a 1 um count moves it by at most 1.65 mN at half a tick: compensated
+                assertEquals(still - 3300 * hold * v, capped(true, v, hold, 1e-6), 1e-9, at + "fine sensor");
+            }
+        }
+        assertEquals(0, capped(true, 1000, 0.5 * T, 0), 0, "the cap never pulls");
+    }
+
+    private static double b0() {
+        return EnergyBound.DEFAULT_SEED;
+    }
+
+    @Test
+    void theTrimKeepsTheBudgetWithinItsRatioOfWhatTheForceSentHolds() {
+        for (double r : new double[] {1, 2, 8}) {
+            EnergyBound b = bound(1e-5, 100);
+            b.setTrim(r);
+            tick(b, 0, 0);
+            for (double force : new double[] {0.3, 1.0, 0.1}) {
+                double sent = tick(b, 1e-2, force);   // far more energy in than the force holds
+                assertEquals(force, sent, 1e-12, "r " + r + ": the cap does not bind");
+                assertEquals(r * force * force / (2 * BOUND), b.budget(), 1e-15, "r " + r + ", " + force + " N");
+            }
+        }
     }
 
     @Test
