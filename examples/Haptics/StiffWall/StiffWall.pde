@@ -15,13 +15,13 @@
  * The red dot is the avatar, the ring the handle, the blue line the handle's recent path. The 2DIY's motors give at most about 1.5 N,
  * so a deep push only feels the torque limit: the buzz is at the face of the wall.
  *
- * S tries the energy bound (loop.useStiffContacts): the force is bounded by the energy your hand
- * put in, so the wall never gives back more than it took and does not buzz, felt as at most
- * 1600 N/m. It is not the default yet: it can lose the wall (no force at all) in slow presses, with
- * a loose hold and on a device without friction (docs/haptics-stability.md,
- * "Stiff contacts" and "The adversarial suite"). R adds the count reserve to it
- * (loop.setEnergyBoundCountReserve): a wall with friction is then never lost to the encoders'
- * one-count flicker, but it is felt about half as stiff. P (the passivity controller) is on at start.
+ * S switches to the recommended stiff-wall setting (loop.useStiffContacts()): the force is bounded
+ * by the energy your hand put in, so the wall never gives back more than it took and does not buzz.
+ * On the 2DIY it comes with the count reserve (R switches it): a wall with friction is then never
+ * lost to the encoders' one-count flicker, felt at about 500 N/m. Without the reserve the wall is
+ * felt stiffer (about 1000 N/m, at most 1600 N/m) but can be lost (no force at all) in slow
+ * presses, with a loose hold and on a device without friction (docs/haptics-stability.md,
+ * "Stiff contacts" and "The adversarial suite"). P (the passivity controller) is on at start.
  *
  * Controls: S stiff-contact setting on/off, R count reserve on/off, P passivity controller on/off, V virtual coupling
  * on/off, 1-4 wall stiffness, T print the loop's telemetry.
@@ -41,7 +41,7 @@ float[] wallNm = {300, 1000, 3000, 10000};   // wall stiffness at the handle, N/
 int wallChoice = 2;
 float wallX;                          // the wall's face, pixels: the wall fills x < wallX
 boolean stiff = false;                // the energy bound for stiff walls (S), not yet the default
-boolean reserve = false;              // its count reserve (R): never lost to flicker, felt softer
+boolean reserve = true;               // its count reserve (R; on with S's setting): never lost to flicker, felt softer
 boolean controller = true;
 boolean coupling = false;
 double deviceDamping = 0.5;           // N s/m: the emulator's handle; measure your device's
@@ -89,7 +89,7 @@ void startLoop() {
   }
   loop.setPassivityControl(controller);
   if (stiff) {
-    // felt as at most 1600 N/m, passive, no buzz, also when the wall changes under the handle
+    // passive, no buzz, also when the wall changes under the handle; with the count reserve unless R took it off
     loop.useStiffContacts();
   }
   loop.setEnergyBoundCountReserve(reserve ? HapticLoop.ROBUST_COUNT_RESERVE : 0);
@@ -194,6 +194,7 @@ void keyPressed() {
     stiff = !stiff;
     if (stiff) {
       loop.useStiffContacts();   // at once, while the loop runs
+      loop.setEnergyBoundCountReserve(reserve ? HapticLoop.ROBUST_COUNT_RESERVE : 0);   // R's choice
       controller = false;
       coupling = false;
     } else {

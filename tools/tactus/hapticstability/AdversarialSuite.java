@@ -55,19 +55,20 @@ public final class AdversarialSuite {
         loop.setPassivityControl(true);
     };
 
-    /** The recommended configuration for stiff walls on the 2DIY: the energy bound at the 2DIY's stiff contact. */
+    /** The energy bound at the 2DIY's stiff contact without its count reserve: {@code useStiffContacts(1600)}. */
     public static final Consumer<HapticLoop> STIFF_CONTACTS = loop -> {
         loop.setExchangeDelay(1);
         loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
     };
 
     /**
-     * The recommended configuration with the energy bound's count reserve at
-     * {@link HapticLoop#ROBUST_COUNT_RESERVE}: no wall lost to encoder flicker, at the price of a softer onset.
+     * The recommended call on the 2DIY, {@code useStiffContacts()} with one tick of exchange delay: the bound at
+     * {@link HapticLoop#TWO_DIY_STIFF_CONTACT} with its count reserve at {@link HapticLoop#ROBUST_COUNT_RESERVE} (no wall
+     * lost to encoder flicker, at the price of a softer onset).
      */
     public static final Consumer<HapticLoop> STIFF_CONTACTS_COUNT_RESERVE = loop -> {
-        STIFF_CONTACTS.accept(loop);
-        loop.setEnergyBoundCountReserve(HapticLoop.ROBUST_COUNT_RESERVE);
+        loop.setExchangeDelay(1);
+        loop.useStiffContacts();
     };
 
     /**

@@ -144,6 +144,10 @@ class EnergyBoundTest {
             assertEquals(HapticLoop.TWO_DIY_STIFF_CONTACT, loop.recommendedStiffContact(), 0, "a planar device");
             loop.useStiffContacts();
             assertEquals(HapticLoop.TWO_DIY_STIFF_CONTACT, loop.energyBound(), 0);
+            assertEquals(HapticLoop.ROBUST_COUNT_RESERVE, loop.energyBoundCountReserve(), 0);
+            loop.setEnergyBoundCountReserve(0);
+            loop.useStiffContacts(HapticLoop.TWO_DIY_STIFF_CONTACT);
+            assertEquals(0, loop.energyBoundCountReserve(), 0, "the explicit call leaves the reserve as it is");
             assertEquals(0.5, loop.forceRiseLimit(), 0);
             assertEquals(2, loop.energyBoundTrim(), 0);
             assertTrue(loop.isHoldCompensation());
