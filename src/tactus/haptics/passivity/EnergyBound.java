@@ -10,16 +10,17 @@ package tactus.haptics.passivity;
  * delay, as the {@link PassivityObserver} counts it), trimmed each tick to what the force sent would hold in a spring
  * r times softer than K (the trim ratio, {@value #DEFAULT_TRIM} by default), {@code E <= r |F|^2 / (2 K)}: energy
  * the hand spent on the model's dampers, or in free space, is no reserve for a later contact, so a contact that
- * appears, moves or stiffens around the handle starts with the seed only; a contact down to K / r still gets back, on release, what it stored (softer ones get back
- * less), and a wall stiffened under a held handle may push with at most sqrt(r) times the force it held. While
+ * appears, moves or stiffens around the handle starts with the seed only; a contact down to K / r still gets back, on
+ * release, what it stored (softer ones get back less), and a wall stiffened under a held handle may push with at most
+ * sqrt(r) times the force it held. While
  * the cap binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the
  * energy the hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact
  * stiffer than K is felt as K. Then the force may change by at most a given step per tick, as a vector: rises, falls
  * and turns alike, so that neither a contact's onset nor a fast release (a 200 mm/s tap lets the force fall by 1 N in
  * one tick) is a buzz; a limited fall pushes on for a few ticks beyond the cap, which the ledger counts.
  *
- * <p><b>The hold compensation</b> ({@link #setHoldCompensation}). A spring sampled every T and held for a delay tau (half a tick of
- * zero-order hold plus d ticks of exchange delay: tau = T (d + 1/2)) acts as the spring with a negative damping of
+ * <p><b>The hold compensation</b> ({@link #setHoldCompensation}). A spring sampled every T and held for a delay tau
+ * (half a tick of zero-order hold plus d ticks of exchange delay: tau = T (d + 1/2)) acts as the spring with a negative damping of
  * K tau: on a device whose own damping is smaller, a handle on the cap rings for long after a contact. The cap is then
  * moved along the measured velocity, {@code cap - K tau v}, with v the handle's velocity along the force (positive
  * outwards): a damping of K tau that cancels the hold's to first order. The ledger still charges every force sent. It
@@ -42,7 +43,7 @@ final class EnergyBound {
     static final double DEFAULT_RISE = 0.5;
     /** The default trim ratio: how much softer than K a contact may be and still get back, on release, what it stored. */
     static final double DEFAULT_TRIM = 8;
-    /** The largest cap change, N, that one sensor count per tick of velocity may make through the lead; above, no lead. */
+    /** The most (N) one sensor count per tick of velocity may move the cap by the hold compensation; above, it is off. */
     static final double LEAD_NOISE = 0.01;
 
     private volatile double stiffness;                // N/m; 0: off
