@@ -62,6 +62,7 @@ public final class InverseServiceClient implements AutoCloseable {
     private volatile boolean closed;
     private volatile boolean closedAfterZero;
     private volatile boolean peerClosed;   // the service closed its side (or the connection failed)
+    private volatile boolean peerClosedBeforeAbort;   // close() saw the service's own close before it aborted
     private volatile long sentNanos;
     private volatile long sent;
     private volatile long busy;
@@ -299,6 +300,16 @@ public final class InverseServiceClient implements AutoCloseable {
         return closedAfterZero;
     }
 
+    /**
+     * True if {@link #close()} saw the service close its side before it aborted the socket: the service then read
+     * every message up to the zero force. False if it aborted first (the service still busy with earlier messages
+     * after 250 ms): the reset may discard the messages it had not read, the zero force among them, and the service's
+     * own zero on disconnect is what stops the force. For tests.
+     */
+    boolean peerClosedBeforeAbort() {
+        return peerClosedBeforeAbort;
+    }
+
     /** True once {@link #close()} ran. */
     public boolean isClosed() {
         return closed;
@@ -491,6 +502,7 @@ public final class InverseServiceClient implements AutoCloseable {
                 while (!peerClosed && System.nanoTime() - until < 0) {
                     Thread.sleep(1);
                 }
+                peerClosedBeforeAbort = peerClosed;
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             } catch (Exception e) {
