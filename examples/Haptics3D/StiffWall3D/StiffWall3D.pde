@@ -22,8 +22,8 @@
  * S switches to the recommended stiff-wall setting (loop.useStiffContacts()): the force is bounded
  * by the energy your hand put in, so the wall never gives back more than it took and does not buzz.
  * On an Inverse3 it is felt as up to 3300 N/m and passes every case of the adversarial suite on the
- * emulated 3-DoF plant (docs/haptics-stability.md, "On the 3-DoF plant"); on a 2DIY, up to 1600 N/m,
- * and it can lose the wall in slow presses, with a loose hold and without friction ("The adversarial
+ * emulated 3-DoF plant (docs/haptics-stability.md, "On the 3-DoF plant"); on a 2DIY it comes with
+ * the count reserve, never gives the hand energy either and is felt at about 500 N/m ("The adversarial
  * suite"). P (the passivity controller) is on at start.
  *
  * Controls: S stiff-contact setting on/off, P passivity controller on/off, V virtual coupling on/off, 1-4 wall stiffness,
@@ -43,7 +43,7 @@ HapticLoop loop;
 float forceGain = 1;                          // newtons per model force unit
 float[] wallNm = {300, 1000, 3000, 10000};    // wall stiffness at the handle, N/m
 int wallChoice = 2;
-boolean stiff = false;                // the energy bound for stiff walls (S), not yet the default
+boolean stiff = false;                // the recommended stiff-wall setting (S): loop.useStiffContacts()
 boolean controller = true;
 boolean coupling = false;
 double[] lo = new double[3];                  // the comfortable workspace, pixels
@@ -162,7 +162,8 @@ void draw() {
   drawPlot(20, height - 140, width - 40, 110);
   fill(30);
   textSize(14);
-  text("Push into the corner.   P: controller " + (controller ? "ON" : "off") + "   V: coupling " + (coupling ? "ON" : "off") + "   1-4: walls "
+  text("Push into the corner.   S: stiff contacts " + (stiff ? "ON" : "off") + "   P: controller " + (controller ? "ON" : "off")
+    + "   V: coupling " + (coupling ? "ON" : "off") + "   1-4: walls "
     + (int) wallNm[wallChoice] + " N/m   T: telemetry", 12, 22);
   text(String.format("energy in %.2f mJ, back to the hand %.2f mJ, net %.2f mJ", 1000 * energy.energyIn(),
     1000 * out, 1000 * energy.netEnergy()), 12, 42);
