@@ -80,9 +80,7 @@ class AdversarialHands3DTest {
                         double still = c.kind == AdversarialCase.Kind.PRESS && !c.friction
                                 ? Math.max(Touch.RESIDUAL_LIMIT, 1.5 * IdealWall3D.residual(c, plant, k))
                                 : Touch.RESIDUAL_LIMIT;
-                        boolean ok = AdversarialChecks.passiveWithoutBuzz(r) && r.residual < still
-                                && (AdversarialSuite.feltFloor(c) == 0 || r.felt >= AdversarialSuite.feltFloor(c));
-                        return ok ? null : AdversarialSuite.row((String) v[0], r)
+                        return AdversarialSuite.passes(r, still) ? null : AdversarialSuite.row((String) v[0], r)
                                 + String.format(" (stillness limit %.1f um)", still * 1e6);
                     }));
                 }

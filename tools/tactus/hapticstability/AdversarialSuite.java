@@ -177,9 +177,17 @@ public final class AdversarialSuite {
      * felt at least {@link #feltFloor}.
      */
     public static boolean passes(AdversarialRig.Result r) {
+        return passes(r, Touch.RESIDUAL_LIMIT);
+    }
+
+    /**
+     * As {@link #passes(AdversarialRig.Result)} with another stillness limit (m): the loop did not fail and the
+     * residual is below {@code stillness} instead of {@link Touch#RESIDUAL_LIMIT}.
+     */
+    public static boolean passes(AdversarialRig.Result r, double stillness) {
         double floor = feltFloor(r.c);
-        return r.stable && r.maxEnergyToHand <= ENERGY_TOLERANCE && withinStepLimit(r.forceStep) && r.faultTicks == 0
-                && (floor == 0 || r.felt >= floor);
+        return r.failure == null && r.residual < stillness && r.maxEnergyToHand <= ENERGY_TOLERANCE
+                && withinStepLimit(r.forceStep) && r.faultTicks == 0 && (floor == 0 || r.felt >= floor);
     }
 
     /** One Markdown row of the table. */

@@ -12,20 +12,20 @@ package tactus.haptics.passivity;
  * the hand spent on the model's dampers, or in free space, is no reserve for a later contact, so a contact that
  * appears, moves or stiffens around the handle starts with the seed only; a contact down to K / r still gets back, on
  * release, what it stored (softer ones get back less), and a wall stiffened under a held handle may push with at most
- * sqrt(r) times the force it held. While
- * the cap binds, the force is a spring of slope K whose surface shifts inwards just enough to keep the budget: the
- * energy the hold and the delay create becomes a slow drift of the surface instead of an oscillation, and a contact
- * stiffer than K is felt as K. Then the force may change by at most a given step per tick, as a vector: rises, falls
- * and turns alike, so that neither a contact's onset nor a fast release (a 200 mm/s tap lets the force fall by 1 N in
- * one tick) is a buzz; a limited fall pushes on for a few ticks beyond the cap, which the ledger counts.
+ * sqrt(r) times the force it held. While the cap binds, the force is a spring of slope K whose surface shifts inwards
+ * just enough to keep the budget: the energy the hold and the delay create becomes a slow drift of the surface instead
+ * of an oscillation, and a contact stiffer than K is felt as K. Then the force may change by at most a given step per
+ * tick, as a vector: rises, falls and turns alike, so that neither a contact's onset nor a fast release (a 200 mm/s
+ * tap lets the force fall by 1 N in one tick) is a buzz; a limited fall pushes on for a few ticks beyond the cap,
+ * which the ledger counts.
  *
  * <p><b>The hold compensation</b> ({@link #setHoldCompensation}). A spring sampled every T and held for a delay tau
- * (half a tick of zero-order hold plus d ticks of exchange delay: tau = T (d + 1/2)) acts as the spring with a negative damping of
- * K tau: on a device whose own damping is smaller, a handle on the cap rings for long after a contact. The cap is then
- * moved along the measured velocity, {@code cap - K tau v}, with v the handle's velocity along the force (positive
- * outwards): a damping of K tau that cancels the hold's to first order. The ledger still charges every force sent. It
- * is used only where the sensor is fine enough: where one count per tick of velocity would move the cap by more than
- * {@value #LEAD_NOISE} N (the 2DIY's encoders), it is off.
+ * (half a tick of zero-order hold plus d ticks of exchange delay: tau = T (d + 1/2)) acts as the spring with a
+ * negative damping of K tau: on a device whose own damping is smaller, a handle on the cap rings for long after a
+ * contact. The cap is then moved along the measured velocity, {@code cap - K tau v}, with v the handle's velocity
+ * along the force (positive outwards): a damping of K tau that cancels the hold's to first order. The ledger still
+ * charges every force sent. It is used only where the sensor is fine enough: where one count per tick of velocity
+ * would move the cap by more than {@value #LEAD_NOISE} N (the 2DIY's encoders), it is off.
  *
  * <p>A deficit (E below zero: the port gave back more than the budget, over a release the cap reacted to one exchange
  * late, or over an encoder count that the ledger charges in full) is forgiven only down to the port's net energy since

@@ -247,7 +247,7 @@ class EnergyBoundTest {
     @Test
     void theHoldCompensationMovesTheCapByTheDampingTheHoldTakesWhereTheSensorIsFine() {
         double still = capped(false, 0, 0.5 * T, 0);
-        assertEquals(Math.sqrt(2 * 3300 * (1e-3 + b0())), still, 1e-9, "the spring's cap");
+        assertEquals(Math.sqrt(2 * 3300 * (1e-3 + EnergyBound.DEFAULT_SEED)), still, 1e-9, "the spring's cap");
         for (double hold : new double[] {0.5 * T, 1.5 * T}) {
             for (double v : new double[] {-0.02, -0.001, 0.001, 0.02}) {
                 String at = "hold " + hold + " s, v " + v + " m/s: ";
@@ -261,10 +261,6 @@ class EnergyBoundTest {
             }
         }
         assertEquals(0, capped(true, 1000, 0.5 * T, 0), 0, "the cap never pulls");
-    }
-
-    private static double b0() {
-        return EnergyBound.DEFAULT_SEED;
     }
 
     @Test
