@@ -322,6 +322,66 @@ public class PhysicalModel {
     }
 
     /**
+     * Runs up to {@code n} simulation steps as one stepping call and records, after each step, one position
+     * coordinate of each given mass: {@code out[s * masses.length + i]} is coordinate {@code axes[i]} (0 x, 1 y, 2 z;
+     * model units) of {@code masses[i]} after step s, the first step being s = 0. This is how a block of audio is
+     * computed in one pass ({@link tactus.audio.PhyUGen} uses it): the model is entered once for the whole block, and
+     * changes that other threads queued are applied once, before the first step. The steps are the same as
+     * {@link #computeNSteps(int)}'s. Allocates nothing once the calling thread has recorded this many masses before.
+     *
+     * @param n the number of steps, &ge; 0
+     * @param masses the masses to read, each a handle of this model
+     * @param axes one axis per mass: 0 (x), 1 (y) or 2 (z)
+     * @param out at least {@code n * masses.length} values
+     * @return the number of steps run: fewer than n when the model diverged, 0 when another thread steps this
+     *     realtime-stepped model (see {@link #beginRealtimeStepping()})
+     * @throws IllegalArgumentException naming the argument when one is missing, of the wrong length, or names a
+     *     mass of another model; IllegalStateException when a mass has left the model; nothing is stepped then
+     */
+    public int computeNStepsRecording(int n, Mass[] masses, int[] axes, double[] out) {
+        String call = "computeNStepsRecording";
+        if (n < 0) {
+            throw new IllegalArgumentException(call + ": the step count must be >= 0, got " + n);
+        }
+        if (masses == null || axes == null || out == null) {
+            throw new IllegalArgumentException(call + ": give the masses, their axes and the output array (got "
+                    + (masses == null ? "no masses" : axes == null ? "no axes" : "no output array") + ")");
+        }
+        int count = masses.length;
+        if (axes.length != count) {
+            throw new IllegalArgumentException(call + ": give one axis per mass (" + count + " masses, "
+                    + axes.length + " axes)");
+        }
+        if ((long) n * count > out.length) {
+            throw new IllegalArgumentException(call + ": the output array holds " + out.length + " values; " + n
+                    + " steps of " + count + " masses need " + (long) n * count);
+        }
+        int[][] scratch = recordScratch.get();
+        if (scratch[0].length < count) {
+            scratch = new int[][] {new int[count], new int[count]};
+            recordScratch.set(scratch);
+        }
+        for (int i = 0; i < count; i++) {
+            Mass m = masses[i];
+            if (m == null || m.handles != handles) {
+                throw new IllegalArgumentException(call + ": masses[" + i + "] is " + (m == null ? "null"
+                        : "a mass of another model") + "; give handles of this model (getMass(name))");
+            }
+            if (axes[i] < 0 || axes[i] > 2) {
+                throw new IllegalArgumentException(call + ": axes[" + i + "] must be 0 (x), 1 (y) or 2 (z), got "
+                        + axes[i]);
+            }
+            scratch[0][i] = m.id;
+            scratch[1][i] = m.stamp;
+        }
+        initNotice.check(core.initialized, call + "()");
+        return stepping.stepsRecording(n, scratch[0], scratch[1], axes, count, out);
+    }
+
+    /** Mass ids and stamps of {@link #computeNStepsRecording}, per calling thread. */
+    private final ThreadLocal<int[][]> recordScratch = ThreadLocal.withInitial(() -> new int[][] {new int[4], new int[4]});
+
+    /**
      * Lets large models step on several threads (1, the default, keeps everything on the calling thread). Only
      * models of at least 20,000 elements (masses plus interactions) stepped several steps at a time
      * ({@link #computeNSteps(int)}, {@link #draw_physics()}) use them; results are bit-identical to one thread.

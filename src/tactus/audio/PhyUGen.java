@@ -112,6 +112,8 @@ public class PhyUGen extends UGen {
     private int blockChannels = -1;
     private float sampleLeft;
     private float sampleRight;
+    /** The listening points read a block at a time; rebuilt on the audio thread when they or the model change. */
+    private BlockRecorder recorder;
 
     /** An avatar attached with {@link #attachAvatar(String, AvatarExchange)}: its name, handle and exchange. */
     private static final class AvatarBinding {
@@ -488,6 +490,9 @@ public class PhyUGen extends UGen {
         blockChannels = channelCount;
         blockStereo = channelCount >= 2 && !forceMono;
         SteppedModel m = steppedModel();
+        if (n > 1 && fillRecordedBlock(m, n)) {
+            return;
+        }
         m.beginSample();
         try {
             for (int i = 0; i < n; i++) {
@@ -505,6 +510,83 @@ public class PhyUGen extends UGen {
         } finally {
             m.endSample();
         }
+    }
+
+    /**
+     * The block in one call to the model ({@link SteppedModel#stepRecording}) when nothing asks for a sample at a
+     * time: no avatar (its exchange runs per step), no oversampling, and listening points that all read mass
+     * displacements and can all be read. The samples are the per-sample path's, bit for bit.
+     *
+     * @return false when the block must take the per-sample path (nothing was stepped then)
+     */
+    private boolean fillRecordedBlock(SteppedModel m, int n) {
+        if (oversampler != null || avatarBinding != null || modelSilent) {
+            return false;
+        }
+        ListeningPoint[] pts = points;
+        BlockRecorder r = recorder;
+        if (r == null || !r.serves(pts, m, n)) {
+            r = BlockRecorder.of(pts, m, blockBuffers[0].length);   // only when the points or the model change
+            recorder = r;
+            if (r == null) {
+                return false;
+            }
+        }
+        if (!r.allAudible()) {
+            return false;
+        }
+        sinceRecheck += n - 1;
+        countTowardsRecheck(m);
+        r.beginBlock();
+        int ran;
+        try {
+            ran = m.stepRecording(n, r.handles, r.axes, r.count, r.values);
+        } catch (Throwable t) {
+            boolean diverged;
+            try {
+                diverged = m.isHalted();
+            } catch (Throwable ignored) {
+                diverged = false;
+            }
+            if (!diverged) {
+                return false;   // a point's mass left before the first step: the per-sample path finds which
+            }
+            silenceModel(true, t);
+            ran = 0;
+        }
+        boolean stereo = blockStereo;
+        boolean dc = dcEnabled;
+        double coefficient = dcCoefficient;
+        dcLeft.setCoefficient(coefficient);
+        dcRight.setCoefficient(coefficient);
+        for (int i = 0; i < ran; i++) {
+            r.mix(i);
+            double left = stereo ? r.mixLeft : r.mixMono;
+            double right = r.mixRight;
+            if (dc) {
+                left = dcLeft.process(left);
+                if (stereo) {
+                    right = dcRight.process(right);
+                }
+            }
+            blockLeft[i] = finite(left);
+            blockRight[i] = stereo ? finite(right) : 0f;
+        }
+        if (ran > 0) {
+            outputSilent = false;
+        }
+        if (ran < n) {
+            if (!modelSilent && m.isHalted()) {
+                silenceModel(true, null);   // diverged, and a DivergenceListener was told
+            }
+            for (int i = ran; i < n; i++) {
+                blockLeft[i] = 0f;
+                blockRight[i] = 0f;
+            }
+            silenceFilters();
+        }
+        blockLength = n;
+        return true;
     }
 
     /** Tells {@link AudioScheduling} of a new computing thread: a field read per sample otherwise. */

@@ -43,6 +43,8 @@ public final class PhysicalModelStepper implements SteppedModel {
     private String[] avatars = new String[2];
     private int avatarCount;
     private volatile int rate;
+    /** The handles {@link #stepRecording} passes to the model; the audio thread's own. */
+    private Mass[] recordMasses = new Mass[0];
     /** True while the audio thread's sample holds the model ({@link #beginSample()}); the audio thread's own. */
     private boolean inSample;
 
@@ -133,11 +135,34 @@ public final class PhysicalModelStepper implements SteppedModel {
      */
     @Override
     public void step() {
+        claimStepping();
+        model.computeStep();
+    }
+
+    /**
+     * The block's steps and reads in one call to the model ({@link PhysicalModel#computeNStepsRecording}): the model
+     * is entered once, and other threads' changes land before the block's first step.
+     */
+    @Override
+    public int stepRecording(int n, int[] handles, int[] axes, int count, double[] out) {
+        claimStepping();
+        Mass[] ms = recordMasses;
+        if (ms.length != count) {
+            ms = new Mass[count];   // only when the listening points change
+            recordMasses = ms;
+        }
+        for (int i = 0; i < count; i++) {
+            ms[i] = masses[handles[i]].mass;
+        }
+        return model.computeNStepsRecording(n, ms, axes, out);
+    }
+
+    /** Takes the stepping role, or asks the helper thread to begin realtime stepping again (see {@link #step()}). */
+    private void claimStepping() {
         if (!model.takeRealtimeStepping() && !resuming) {
             resuming = true;
             AudioHelper.post(this::resumeRealtime);
         }
-        model.computeStep();
     }
 
     /** On the helper thread: puts the model back in realtime stepping and holds its rate for the driver again. */

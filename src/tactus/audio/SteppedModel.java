@@ -60,6 +60,27 @@ public interface SteppedModel {
         sampleLock().unlock();
     }
 
+    /**
+     * Runs up to n steps and records after each step the position of mass handle {@code masses[i]} along axis
+     * {@code axes[i]} into {@code out[s * count + i]} (model units; s = 0 for the first step): one block of audio in
+     * one pass. The default steps and reads one at a time; a model that can do it in one call overrides it. Throws
+     * as {@link #step()} and {@link #massPosition(int, int)} do.
+     *
+     * @return the number of steps run: fewer than n when the model halted (see {@link #isHalted()})
+     */
+    default int stepRecording(int n, int[] masses, int[] axes, int count, double[] out) {
+        for (int s = 0; s < n; s++) {
+            if (isHalted()) {
+                return s;
+            }
+            step();
+            for (int i = 0; i < count; i++) {
+                out[s * count + i] = massPosition(masses[i], axes[i]);
+            }
+        }
+        return n;
+    }
+
     /** @return a handle for the mass with this name; throws IllegalArgumentException naming it if absent. */
     int resolveMass(String name);
 

@@ -54,6 +54,8 @@ public final class Engine implements AutoCloseable {
     private long divergedAt = -1;
     /** Scratch of {@link #makeFixed}, a structural change (made by the thread that applies changes). */
     private final double[] scratchA = new double[3];
+    /** The plan slots of the masses {@link #stepRecording} reads (grown only when more masses are read). */
+    private int[] recordSlots = new int[4];
 
     /** Creates an empty engine with no gravity and no friction. */
     public Engine() {
@@ -647,6 +649,72 @@ public final class Engine implements AutoCloseable {
             return stepChoosingMode(p, n);
         }
         return stepOnOneThread(p, n);
+    }
+
+    /**
+     * Runs {@code n} steps on one thread, as {@link #step(int)} does, and records after each step one coordinate of
+     * each of {@code count} masses: {@code out[offset + s * count + i]} is coordinate {@code axes[i]} (0 x, 1 y, 2 z)
+     * of mass {@code ids[i]} after step s (0 for the first). The steps are bit-identical to {@link #step(int)}'s.
+     * A block of audio is computed this way: the positions are read from the plan's arrays, with no call per read.
+     *
+     * @return the number of steps actually run (fewer than n when the divergence guard stopped them); the step
+     *     that diverged is recorded too
+     */
+    public int stepRecording(int n, int[] ids, int[] axes, int count, double[] out, int offset) {
+        if (n < 0) {
+            throw new IllegalArgumentException("step count must be >= 0, got " + n);
+        }
+        for (int i = 0; i < count; i++) {
+            checkMass(ids[i]);
+            if (axes[i] < 0 || axes[i] > 2) {
+                throw new IllegalArgumentException("axis must be 0, 1 or 2, got " + axes[i]);
+            }
+        }
+        if (divergedMass >= 0 || n == 0) {
+            return 0;
+        }
+        if (topologyDirty || effectsDirty) {
+            compile();
+        }
+        StepPlan p = plan;
+        if (recordSlots.length < count) {
+            recordSlots = new int[Math.max(count, 2 * recordSlots.length)];   // only when more points are listened to
+        }
+        int[] slots = recordSlots;
+        for (int i = 0; i < count; i++) {
+            slots[i] = masses.slot[ids[i]];
+        }
+        int ran = 0;
+        try {
+            if (count == 1) {
+                double[] coordinate = axes[0] == 0 ? p.x : axes[0] == 1 ? p.y : p.z;
+                int slot = slots[0];
+                while (ran < n) {
+                    p.step();
+                    out[offset + ran] = coordinate[slot];
+                    ran++;
+                    if (guardAfterStep(p, steps + ran)) {
+                        break;
+                    }
+                }
+            } else {
+                while (ran < n) {
+                    p.step();
+                    int q = offset + ran * count;
+                    for (int i = 0; i < count; i++) {
+                        int a = axes[i];
+                        out[q + i] = (a == 0 ? p.x : a == 1 ? p.y : p.z)[slots[i]];
+                    }
+                    ran++;
+                    if (guardAfterStep(p, steps + ran)) {
+                        break;
+                    }
+                }
+            }
+        } finally {
+            steps += ran;
+        }
+        return ran;
     }
 
     /**

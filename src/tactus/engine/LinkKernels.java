@@ -123,10 +123,11 @@ final class LinkKernels {
             int[] starts = new int[4];
             int[] ends = new int[4];
             int count = 0;
-            int j = p.sweepRuns ? 0 : b.n; // stencil sweeps off (Engine.setStencilSweeps): every link one by one
-            while (j < b.n) {
+            int n = b.nIrregular;   // the links of stencil runs are stepped by their own kernels
+            int j = p.sweepRuns ? 0 : n; // stencil sweeps off (Engine.setStencilSweeps): every link one by one
+            while (j < n) {
                 int e = j;
-                while (e < b.n && b.b[e] == b.a[e] + 1 && (e == j || b.a[e] == b.a[e - 1] + 1)) {
+                while (e < n && b.b[e] == b.a[e] + 1 && (e == j || b.a[e] == b.a[e - 1] + 1)) {
                     e++;
                 }
                 if (e - j >= MIN_SEGMENT) {
@@ -178,7 +179,7 @@ final class LinkKernels {
                 }
                 from = segEnd[q];
             }
-            links(from, b.n);
+            links(from, b.nIrregular);
         }
 
         /** Looks again (after a parameter change) which segments have one set of parameters for all their links. */

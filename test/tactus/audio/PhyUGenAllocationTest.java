@@ -47,6 +47,46 @@ class PhyUGenAllocationTest {
         assertEquals(0, measure(u, 2));
     }
 
+    /**
+     * The recorded block path (listening points that all read masses, no avatar): blocks of several sizes, mono and
+     * stereo.
+     */
+    @ParameterizedTest
+    @ValueSource(ints = {2, 64, 512})
+    void aRecordedBlockAllocatesNothing(int block) {
+        PhysicalModel pm = new PhysicalModel(44100);
+        StringModel.build(pm, 7, 0.001);
+        pm.init();
+        PhyUGen u = new PhyUGen(pm);
+        u.setBlockSize(block);
+        ListeningPoint a = u.listenToMass(StringModel.mass(3), SteppedModel.Y, 100, -0.5);
+        u.listenToMass(StringModel.mass(17), SteppedModel.Y, 100, 0.5);
+        for (int channels : new int[] {1, 2}) {
+            u.setChannelCount(channels);
+            float[] frame = new float[channels];
+            com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+            long tid = Thread.currentThread().getId();
+            for (int i = 0; i < 100_000; i++) {
+                u.tick(frame);
+            }
+            long[] measured = {-1, -1, -1, -1, -1, -1};
+            long last = -1;
+            for (int attempt = 0; attempt < measured.length && last != 0; attempt++) {
+                long b0 = mx.getThreadAllocatedBytes(tid);
+                long b1 = mx.getThreadAllocatedBytes(tid);
+                long a0 = mx.getThreadAllocatedBytes(tid);
+                for (int i = 0; i < 100_000; i++) {
+                    u.tick(frame);
+                }
+                measured[attempt] = mx.getThreadAllocatedBytes(tid) - a0 - (b1 - b0);
+                last = measured[attempt];
+            }
+            assertTrue(Float.isFinite(frame[0]) && a.gain() == 100);
+            assertEquals(0, last, "block " + block + ", " + channels + " channels: bytes allocated by 10^5 samples: "
+                    + java.util.Arrays.toString(measured));
+        }
+    }
+
     /** @return the bytes allocated by 10^5 samples (the last of up to six measurements: JIT
      * recompilations settle in the first ones; a real per-sample allocation shows in every one). */
     private static long measure(PhyUGen u, int oversampling) {

@@ -150,6 +150,131 @@ class PhyUGenBlockTest {
         assertTrue(u.isSilenced());
     }
 
+    /**
+     * A run through the recorded path (no avatar, listening points that all read masses): {@code points} points on
+     * masses 5, 9 and 26 along y, panned apart; a ramp on s3 from {@code rampAt} on, and mass 9 removed before sample
+     * {@code removeAt} (-1: never).
+     */
+    private static double[] recorded(int block, int channels, int points, int rampAt, int removeAt, int samples) {
+        PhysicalModel pm = new PhysicalModel(44100);
+        StringModel.build(pm, 7, 0.001);
+        pm.init();
+        PhyUGen u = new PhyUGen(pm);
+        u.setBlockSize(block);
+        int[] listened = {5, 26, 9};
+        for (int i = 0; i < points; i++) {
+            u.listenToMass(StringModel.mass(listened[i]), SteppedModel.Y, 300 - 50 * i, -0.8 + 0.7 * i);
+        }
+        pm.createLinkSubset("ramped");
+        pm.addLinkToSubset("s3", "ramped");
+        pm.addParamController("k3", "ramped", "stiffness", 0.01f);   // 441 steps
+        tactus.ParamController ramp = pm.getParamController("k3");
+        ramp.init(0.2f);
+        float[] frame = new float[channels];
+        double[] out = new double[2 * samples];
+        for (int i = 0; i < samples; i++) {
+            if (i == rampAt) {
+                ramp.triggerRamp(0.9f);
+            }
+            if (i == removeAt) {
+                pm.removeMatAndConnectedLinks(StringModel.mass(9));
+            }
+            u.tick(frame);
+            out[2 * i] = frame[0];
+            out[2 * i + 1] = frame[channels - 1];
+        }
+        return out;
+    }
+
+    @Test
+    void aRecordedBlockIsBitForBitThePerSamplePath() {
+        for (int channels : new int[] {1, 2}) {
+            for (int points : new int[] {1, 3}) {
+                for (int block : new int[] {2, 7, 64, 1000}) {
+                    int samples = (SAMPLES + block - 1) / block * block;
+                    double[] want = recorded(1, channels, points, -1, -1, samples);
+                    double[] got = recorded(block, channels, points, -1, -1, samples);
+                    double sound = 0;
+                    for (int i = 0; i < want.length; i++) {
+                        sound += Math.abs(want[i]);
+                        int at = i;
+                        assertEquals(Double.doubleToLongBits(want[i]), Double.doubleToLongBits(got[i]), () -> "block "
+                                + block + ", " + channels + " channels, " + points + " points, sample " + at / 2
+                                + ": " + want[at] + " vs " + got[at]);
+                    }
+                    assertTrue(sound > 1e-3, "the reference sounds: " + sound);
+                }
+            }
+        }
+    }
+
+    @Test
+    void aRampAndARemovedMassLandAtBlockBoundariesOnTheRecordedPath() {
+        int block = 64;
+        double[] plain = recorded(block, 2, 3, -1, -1, SAMPLES);
+        // a ramp begun before sample 1001 steps from the block boundary at 1024 on: the per-sample run with the ramp
+        // begun before sample 1024, bit for bit
+        double[] ramped = recorded(block, 2, 3, 1001, -1, SAMPLES);
+        double[] rampedPerSample = recorded(1, 2, 3, 1024, -1, SAMPLES);
+        int heard = firstDifference(plain, ramped);
+        assertTrue(heard > 1024 && heard < 1024 + 8, "the ramp is heard just after the boundary, at " + heard);
+        for (int i = 0; i < ramped.length; i++) {
+            assertEquals(Double.doubleToLongBits(rampedPerSample[i]), Double.doubleToLongBits(ramped[i]),
+                    "sample " + i / 2);
+        }
+        // mass 9 removed before sample 1001: its point goes silent, the others go on sounding
+        double[] removed = recorded(block, 2, 3, -1, 1001, SAMPLES);
+        int from = firstDifference(plain, removed);
+        assertTrue(from >= 1024 && from < 1024 + block, "the removal lands in the block from 1024, heard at " + from);
+        double after = 0;
+        for (int i = 2 * (1024 + block); i < removed.length; i++) {
+            assertTrue(Double.isFinite(removed[i]));
+            after += Math.abs(removed[i]);
+        }
+        assertTrue(after > 1e-3, "the other points sound on: " + after);
+    }
+
+    @Test
+    void aBlockOfMassPointsEntersTheModelOnceAndOtherPointsSampleBySample() {
+        for (boolean elongation : new boolean[] {false, true}) {
+            PhysicalModel pm = new PhysicalModel(44100);
+            StringModel.build(pm, 7, 0.001);
+            pm.init();
+            CountingSteppedModel counting = new CountingSteppedModel(new PhysicalModelStepper(pm));
+            PhyUGen u = new PhyUGen(counting);
+            u.setBlockSize(64);
+            u.listenToMass(StringModel.mass(5), SteppedModel.Y, 300, 0);
+            if (elongation) {
+                u.listenToElongation("s12", 40, 0);
+            }
+            float[] frame = new float[1];
+            double sound = 0;
+            for (int i = 0; i < 64 * 20; i++) {
+                u.tick(frame);
+                sound += Math.abs(frame[0]);
+            }
+            assertTrue(sound > 1e-3, "it sounds: " + sound);
+            if (elongation) {
+                assertEquals(0, counting.recordings, "an elongation is read per sample");
+                assertEquals(64 * 20, counting.steps);
+            } else {
+                assertEquals(20, counting.recordings, "one call per block");
+                assertEquals(64 * 20, counting.recordedSteps);
+                assertEquals(0, counting.steps);
+            }
+        }
+    }
+
+    /** The first sample (by its left channel) where b differs from a, -1 if none. */
+    private static int firstDifference(double[] a, double[] b) {
+        for (int i = 0; i < a.length / 2; i++) {
+            if (a[2 * i] != b[2 * i]) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
     @Test
     void aBlockSizeOutOfRangeIsRefusedNamingTheValueAndChangesNothing() {
         PhyUGen u = new PhyUGen(scene());

@@ -37,6 +37,16 @@ public final class Stepping {
      *     {@link #REFUSED} when another thread owns the model (nothing was done, the message was printed once)
      */
     private int stepOwned(Ownership o, int n, String call) {
+        return stepOwned(o, n, call, null, null, null, 0, null);
+    }
+
+    /**
+     * As {@link #stepOwned(Ownership, int, String)}, recording after each step the coordinates of masses (see
+     * {@link #stepsRecording}) when {@code ids} is not null; the masses are checked after the queued changes are
+     * applied and before the first step.
+     */
+    private int stepOwned(Ownership o, int n, String call, int[] ids, int[] stamps, int[] axes, int count,
+                          double[] out) {
         int r = o.beginStep(n);
         if (r == Ownership.ENDED) {
             return ENDED;
@@ -47,16 +57,14 @@ public final class Stepping {
         }
         try {
             o.applyQueued();
+            checkRecorded(ids, stamps, count);
             int done = 0;
             while (done < n) {
                 boolean ramping = core.ramping();
-                int ran;
                 if (ramping) {
                     advanceRamps();
-                    ran = core.engine.step(1);
-                } else {
-                    ran = core.engine.step(n - done);
                 }
+                int ran = engineSteps(ramping ? 1 : n - done, done, ids, axes, count, out);
                 core.snapshots.afterSteps(ran);
                 done += ran;
                 if (ran == 0) {
@@ -68,6 +76,65 @@ public final class Stepping {
         } finally {
             o.endStep();
         }
+    }
+
+    /**
+     * {@code computeNStepsRecording(n, ...)}: n simulation steps as one stepping call, recording after each step
+     * coordinate {@code axes[i]} of mass {@code ids[i]} (checked against {@code stamps[i]} before the first step) into
+     * {@code out[s * count + i]}. A recorded batch is short (an audio block): in locked mode it holds the lock for
+     * the whole batch, without slices.
+     *
+     * @return the number of steps run: fewer than n when the model diverged, 0 when another thread owns it
+     */
+    public int stepsRecording(int n, int[] ids, int[] stamps, int[] axes, int count, double[] out) {
+        Ownership o = lock.mode();
+        if (o != null && !o.isEnding()) {
+            int done = stepOwned(o, n, "computeNStepsRecording()", ids, stamps, axes, count, out);
+            if (done == REFUSED) {
+                return 0;
+            }
+            if (done != ENDED) {
+                return done;
+            }
+        }
+        lock.enter();
+        try {
+            checkRecorded(ids, stamps, count);
+            boolean ramped = false;
+            int done = 0;
+            while (done < n) {
+                boolean ramping = core.ramping();
+                if (ramping) {
+                    advanceRamps();
+                    ramped = true;
+                }
+                int ran = engineSteps(ramping ? 1 : n - done, done, ids, axes, count, out);
+                core.snapshots.afterSteps(ran);
+                done += ran;
+                if (ran == 0) {
+                    break;
+                }
+            }
+            if (ramped) {
+                core.guard.afterChange(null);
+            }
+            core.watch.check();
+            return done;
+        } finally {
+            lock.exit();
+        }
+    }
+
+    /** Throws the handle's IllegalStateException when a recorded mass has left the model. */
+    private void checkRecorded(int[] ids, int[] stamps, int count) {
+        for (int i = 0; i < count; i++) {
+            core.dir.checkMass(ids[i], stamps[i]);
+        }
+    }
+
+    /** k engine steps; when recording, into {@code out} from step {@code done} of the batch on. */
+    private int engineSteps(int k, int done, int[] ids, int[] axes, int count, double[] out) {
+        return ids == null ? core.engine.step(k) : core.engine.stepRecording(k, ids, axes, count, out, done * count);
     }
 
     /** {@code draw_physics()}: one display frame. @return the number of steps of this frame */
