@@ -374,7 +374,7 @@ public class PhysicalModel {
             scratch[0][i] = m.id;
             scratch[1][i] = m.stamp;
         }
-        initNotice.check(core.initialized, call + "()");
+        initNotice.check(core.initialized, "computeNStepsRecording()");
         return stepping.stepsRecording(n, scratch[0], scratch[1], axes, count, out);
     }
 

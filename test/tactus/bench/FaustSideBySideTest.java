@@ -33,9 +33,17 @@ class FaustSideBySideTest {
         assertEquals(8, FaustSideBySide.voices("voices8-string1d-100"));
         assertEquals(1, FaustSideBySide.voices("string3d-100"));
         assertEquals("string1d-100", FaustSideBySide.voice("voices8-string1d-100"));
-        assertEquals(4, FaustSideBySide.target("string3d-1000"), 0);
-        assertEquals(1.5, FaustSideBySide.target("plate-8x8"), 0);
-        assertEquals(2, FaustSideBySide.target("string1d-300"), 0);
+        // issue #36's targets
+        assertEquals(1, FaustSideBySide.target("string1d-30"), 0);
+        assertEquals(2, FaustSideBySide.target("string1d-100"), 0);
+        assertEquals(3, FaustSideBySide.target("string1d-300"), 0);
+        assertEquals(3, FaustSideBySide.target("string3d-100"), 0);
+        assertEquals(1, FaustSideBySide.target("plate-8x8"), 0);
+        assertEquals(1, FaustSideBySide.target("voices16-string1d-100"), 0);
+        // the per-element column's element counts: masses plus interactions, all voices
+        assertEquals(30 + 2 + 31, FaustSideBySide.elements("string1d-30"));
+        assertEquals(64 + 112, FaustSideBySide.elements("plate-8x8"));
+        assertEquals(16 * (100 + 2 + 101), FaustSideBySide.elements("voices16-string1d-100"));
     }
 
     @Test
