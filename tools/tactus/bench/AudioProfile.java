@@ -18,18 +18,36 @@ import tactus.engine.MassKind;
  * machine counts as little as possible):
  * <ol>
  *   <li>the engine alone, {@code Engine.step(n)} over a whole buffer (the physics and the divergence guard);</li>
- *   <li>the engine, one {@code step(1)} per sample and one position read ({@code Engine.position});</li>
+ *   <li>the block path: the engine recording one position per step ({@code Engine.stepRecording}), the facade's
+ *       block call ({@code computeNStepsRecording}, 64 steps per call, realtime mode), a {@code PhyUGen} at block 64
+ *       ticked through a Minim {@code Summer};</li>
+ *   <li>the per-sample path: the engine, one {@code step(1)} per sample and one position read
+ *       ({@code Engine.position});</li>
  *   <li>{@code PhysicalModel.computeStep()} and {@code Mass.getPosition(Vect3D)}, locked mode;</li>
  *   <li>the same in realtime mode (the model's owner, as under a PhyUGen);</li>
  *   <li>the same inside one run of the owner's calls per sample ({@code beginRealtimeCalls}), as a PhyUGen's
  *       sample is;</li>
- *   <li>a {@code PhyUGen} ticked through a Minim {@code Summer}, as an output or the OfflineRenderer ticks it.</li>
+ *   <li>a {@code PhyUGen} (block 1) ticked through a Minim {@code Summer}, as an output or the OfflineRenderer
+ *       ticks it;</li>
+ *   <li>Minim alone: a UGen that writes a constant, ticked through a {@code Summer} (what any UGen costs per sample
+ *       in Minim: a remainder and a monitor per tick).</li>
  * </ol>
+ * Each line says what it adds to the line it builds on.
  *
  * <pre>java -cp build/classes/java/tools:build/classes/java/main:&lt;minim, core jars&gt; tactus.bench.AudioProfile [masses...]</pre>
  */
 public final class AudioProfile {
     private static final int BUFFER = 512;
+    /** The block of the block layers, in samples: PhyUGen.setBlockSize's recommended 64. */
+    private static final int BLOCK = 64;
+
+    /** Minim's own cost per sample: a UGen that writes a constant. */
+    private static final class Constant extends ddf.minim.UGen {
+        @Override
+        protected void uGenerate(float[] channels) {
+            java.util.Arrays.fill(channels, 0.25f);
+        }
+    }
     private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
 
     private AudioProfile() {
@@ -62,11 +80,49 @@ public final class AudioProfile {
         float[] frame = new float[1];
         double[] pos = new double[3];
         Vect3D v = new Vect3D();
-        String[] names = {"Engine.step(512), per step", "Engine.step(1) + position", "computeStep + getPosition, locked",
-            "computeStep + getPosition, realtime", "the same in one run (beginRealtimeCalls)",
-            "PhyUGen through Minim's tick"};
+        PhysicalModel blockModel = string(n);
+        blockModel.beginRealtimeStepping();
+        Mass[] blockMasses = {blockModel.getMass("m" + listen)};
+        int[] blockAxes = {2};
+        double[] recorded = new double[BUFFER];
+        int[] engineIds = {listen};
+        PhyUGen blockUgen = new PhyUGen(string(n));
+        blockUgen.setBlockSize(BLOCK);
+        blockUgen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
+        Summer blockRoot = new Summer();
+        blockUgen.patch(blockRoot);
+        blockUgen.setSampleRate(44100);
+        blockUgen.setChannelCount(1);
+        blockRoot.setSampleRate(44100);
+        blockRoot.setChannelCount(1);
+        Summer constantRoot = new Summer();
+        Constant constant = new Constant();
+        constant.patch(constantRoot);
+        constant.setSampleRate(44100);
+        constant.setChannelCount(1);
+        constantRoot.setSampleRate(44100);
+        constantRoot.setChannelCount(1);
+        String[] names = {"Engine.step(512), per step", "Engine.stepRecording(512), per step",
+            "computeNStepsRecording(64), realtime", "PhyUGen, block 64, Minim's tick", "Engine.step(1) + position",
+            "computeStep + getPosition, locked", "computeStep + getPosition, realtime",
+            "the same in one run (beginRealtimeCalls)", "PhyUGen, block 1, Minim's tick",
+            "Minim alone: a constant UGen, Summer"};
+        // the line each one adds to (-1: none)
+        int[] parent = {-1, 0, 1, 2, 0, 4, 5, 6, 7, -1};
         Runnable[] layers = {
             () -> engine.step(BUFFER),
+            () -> engine.stepRecording(BUFFER, engineIds, blockAxes, 1, recorded, 0),
+            () -> {
+                for (int i = 0; i < BUFFER; i += BLOCK) {
+                    blockModel.computeNStepsRecording(BLOCK, blockMasses, blockAxes, recorded);
+                }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    frame[0] = 0;
+                    blockRoot.tick(frame);
+                }
+            },
             () -> {
                 for (int i = 0; i < BUFFER; i++) {
                     engine.step(1);
@@ -103,6 +159,12 @@ public final class AudioProfile {
                     frame[0] = 0;
                     root.tick(frame);
                 }
+            },
+            () -> {
+                for (int i = 0; i < BUFFER; i++) {
+                    frame[0] = 0;
+                    constantRoot.tick(frame);
+                }
             }
         };
         int buffersPerRun = Math.max(20, 2_000_000 / (BUFFER * n));
@@ -126,13 +188,14 @@ public final class AudioProfile {
             }
         }
         System.out.printf(Locale.ROOT, "1-D string, %d masses (median of %d interleaved rounds, ns of thread CPU time per sample)%n", n, rounds);
-        double prev = 0;
+        double[] med = new double[layers.length];
         for (int l = 0; l < layers.length; l++) {
             java.util.Arrays.sort(ns[l]);
-            double med = ns[l][rounds / 2];
-            System.out.printf(Locale.ROOT, "  %-40s %8.1f  (+%.1f)  [%.1f-%.1f]%n", names[l], med, med - prev, ns[l][0],
-                    ns[l][rounds - 1]);
-            prev = med;
+            med[l] = ns[l][rounds / 2];
+            String added = parent[l] < 0 ? "" : String.format(Locale.ROOT, "(+%.1f on \"%s\")", med[l] - med[parent[l]],
+                    names[parent[l]]);
+            System.out.printf(Locale.ROOT, "  %-40s %8.1f  [%.1f-%.1f]  %s%n", names[l], med[l], ns[l][0],
+                    ns[l][rounds - 1], added);
         }
     }
 
