@@ -542,13 +542,7 @@ public class PhyUGen extends UGen {
         try {
             ran = m.stepRecording(n, r.handles, r.axes, r.count, r.values);
         } catch (Throwable t) {
-            boolean diverged;
-            try {
-                diverged = m.isHalted();
-            } catch (Throwable ignored) {
-                diverged = false;
-            }
-            if (!diverged) {
+            if (!haltedAfterThrow(m)) {
                 return false;   // a point's mass left before the first step: the per-sample path finds which
             }
             silenceModel(true, t);
@@ -698,13 +692,7 @@ public class PhyUGen extends UGen {
         try {
             stepOnce(m);
         } catch (Throwable t) {
-            boolean diverged;
-            try {
-                diverged = m.isHalted();
-            } catch (Throwable ignored) {
-                diverged = false;
-            }
-            silenceModel(diverged, t);
+            silenceModel(haltedAfterThrow(m), t);
             return false;
         }
         if ((++haltCheck & (HALT_CHECK_SAMPLES - 1)) == 0 && m.isHalted()) {
@@ -717,6 +705,15 @@ public class PhyUGen extends UGen {
             faults.modelSoundsAgain();
         }
         return true;
+    }
+
+    /** {@return true when a model whose step just threw has diverged (false when even that question throws)} */
+    private static boolean haltedAfterThrow(SteppedModel m) {
+        try {
+            return m.isHalted();
+        } catch (Throwable ignored) {
+            return false;
+        }
     }
 
     private void silenceModel(boolean diverged, Throwable error) {

@@ -684,37 +684,7 @@ public final class Engine implements AutoCloseable {
         for (int i = 0; i < count; i++) {
             slots[i] = masses.slot[ids[i]];
         }
-        int ran = 0;
-        try {
-            if (count == 1) {
-                double[] coordinate = axes[0] == 0 ? p.x : axes[0] == 1 ? p.y : p.z;
-                int slot = slots[0];
-                while (ran < n) {
-                    p.step();
-                    out[offset + ran] = coordinate[slot];
-                    ran++;
-                    if (guardAfterStep(p, steps + ran)) {
-                        break;
-                    }
-                }
-            } else {
-                while (ran < n) {
-                    p.step();
-                    int q = offset + ran * count;
-                    for (int i = 0; i < count; i++) {
-                        int a = axes[i];
-                        out[q + i] = (a == 0 ? p.x : a == 1 ? p.y : p.z)[slots[i]];
-                    }
-                    ran++;
-                    if (guardAfterStep(p, steps + ran)) {
-                        break;
-                    }
-                }
-            }
-        } finally {
-            steps += ran;
-        }
-        return ran;
+        return stepOnOneThread(p, n, slots, axes, count, out, offset);
     }
 
     /**
@@ -759,10 +729,29 @@ public final class Engine implements AutoCloseable {
     }
 
     private int stepOnOneThread(StepPlan p, int n) {
+        return stepOnOneThread(p, n, null, null, 0, null, 0);
+    }
+
+    /**
+     * Runs n steps on the calling thread; after each, records coordinate {@code axes[i]} of plan slot
+     * {@code slots[i]} into {@code out[offset + s * count + i]} for i &lt; count (none when count is 0).
+     */
+    private int stepOnOneThread(StepPlan p, int n, int[] slots, int[] axes, int count, double[] out, int offset) {
+        double[] single = count == 1 ? (axes[0] == 0 ? p.x : axes[0] == 1 ? p.y : p.z) : null;
+        int singleSlot = count == 1 ? slots[0] : -1;
         int ran = 0;
         try {
             while (ran < n) {
                 p.step();
+                if (count == 1) {
+                    out[offset + ran] = single[singleSlot];
+                } else if (count > 1) {
+                    int q = offset + ran * count;
+                    for (int i = 0; i < count; i++) {
+                        int a = axes[i];
+                        out[q + i] = (a == 0 ? p.x : a == 1 ? p.y : p.z)[slots[i]];
+                    }
+                }
                 ran++;
                 if (guardAfterStep(p, steps + ran)) {
                     break;
