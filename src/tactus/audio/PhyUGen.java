@@ -354,6 +354,9 @@ public class PhyUGen extends UGen {
      * {@value #DEFAULT_BLOCK_SIZE}, the per-sample path), from any thread; it takes effect at the next block. With n
      * above 1, when Minim asks for the first sample of a block, the model enters once and steps the whole block; the
      * other samples come from a buffer; the output is bit for bit the per-sample path's as long as nothing changes.
+     * When every listening point reads a mass and neither an avatar nor oversampling is set, the block is a single
+     * call to the model ({@link PhysicalModel#computeNStepsRecording}), the fastest way to play a sound model: 64 is
+     * the block to use then (on a 30-mass string, 133 ns per sample against 188 at 1).
      * Changes to the model queued from other threads (parameters, topology), and those the ticking thread makes
      * between two samples, land at the next block boundary: at most one block (1.45 ms at 64 samples and 44.1 kHz)
      * later than with 1. No sample comes out later than with 1: Minim computes its whole output buffer in one burst
