@@ -265,6 +265,49 @@ class PhyUGenBlockTest {
         }
     }
 
+    /**
+     * A model that does not record a block itself gets {@link SteppedModel#stepRecording}'s default (a step and reads
+     * per sample, through its own calls): the same samples, bit for bit, as the facade's one call per block and as
+     * the per-sample path.
+     */
+    @Test
+    void theInterfacesDefaultRecordingGivesTheSameSamples() {
+        double[][] runs = new double[3][];
+        for (int variant = 0; variant < 3; variant++) {
+            PhysicalModel pm = new PhysicalModel(44100);
+            StringModel.build(pm, 7, 0.001);
+            pm.init();
+            CountingSteppedModel counting = new CountingSteppedModel(new PhysicalModelStepper(pm), variant == 2);
+            PhyUGen u = new PhyUGen(counting);
+            u.setBlockSize(variant == 0 ? 1 : 64);
+            u.listenToMass(StringModel.mass(5), SteppedModel.Y, 300, -0.5);
+            u.listenToMass(StringModel.mass(22), SteppedModel.Y, 200, 0.5);
+            u.setChannelCount(2);
+            float[] frame = new float[2];
+            runs[variant] = new double[2 * 64 * 30];
+            for (int i = 0; i < 64 * 30; i++) {
+                u.tick(frame);
+                runs[variant][2 * i] = frame[0];
+                runs[variant][2 * i + 1] = frame[1];
+            }
+            if (variant == 2) {
+                assertEquals(30, counting.recordings, "one recording per block");
+                assertEquals(64 * 30, counting.steps, "the default steps one sample at a time, through step()");
+            }
+        }
+        for (int variant = 1; variant < 3; variant++) {
+            for (int i = 0; i < runs[0].length; i++) {
+                assertEquals(Double.doubleToLongBits(runs[0][i]), Double.doubleToLongBits(runs[variant][i]),
+                        "variant " + variant + ", value " + i);
+            }
+        }
+        double sound = 0;
+        for (double v : runs[0]) {
+            sound += Math.abs(v);
+        }
+        assertTrue(sound > 1e-3, "it sounds: " + sound);
+    }
+
     /** The first sample (by its left channel) where b differs from a, -1 if none. */
     private static int firstDifference(double[] a, double[] b) {
         for (int i = 0; i < a.length / 2; i++) {
