@@ -538,8 +538,7 @@ public class PhyUGen extends UGen {
         if (!r.allAudible()) {
             return false;
         }
-        sinceRecheck += n - 1;
-        countTowardsRecheck(m);
+        countTowardsRecheck(m, n);
         r.beginBlock();
         int ran;
         try {
@@ -735,7 +734,13 @@ public class PhyUGen extends UGen {
 
     /** Counts one sample; every {@link #RECHECK_SAMPLES} samples, {@link #recheck}s. */
     private void countTowardsRecheck(SteppedModel m) {
-        if (++sinceRecheck >= RECHECK_SAMPLES) {
+        countTowardsRecheck(m, 1);
+    }
+
+    /** Counts this many samples (a block, at most {@link #MAX_BLOCK_SIZE}); then as {@link #countTowardsRecheck}. */
+    private void countTowardsRecheck(SteppedModel m, int samples) {
+        sinceRecheck += samples;
+        if (sinceRecheck >= RECHECK_SAMPLES) {
             sinceRecheck = 0;
             recheck(m);
         }

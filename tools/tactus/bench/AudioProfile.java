@@ -71,12 +71,7 @@ public final class AudioProfile {
         Mass realtimeMass = realtime.getMass("m" + listen);
         PhyUGen ugen = new PhyUGen(string(n));
         ugen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
-        Summer root = new Summer();
-        ugen.patch(root);
-        ugen.setSampleRate(44100);
-        ugen.setChannelCount(1);
-        root.setSampleRate(44100);
-        root.setChannelCount(1);
+        Summer root = summing(ugen);
         float[] frame = new float[1];
         double[] pos = new double[3];
         Vect3D v = new Vect3D();
@@ -89,19 +84,8 @@ public final class AudioProfile {
         PhyUGen blockUgen = new PhyUGen(string(n));
         blockUgen.setBlockSize(BLOCK);
         blockUgen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
-        Summer blockRoot = new Summer();
-        blockUgen.patch(blockRoot);
-        blockUgen.setSampleRate(44100);
-        blockUgen.setChannelCount(1);
-        blockRoot.setSampleRate(44100);
-        blockRoot.setChannelCount(1);
-        Summer constantRoot = new Summer();
-        Constant constant = new Constant();
-        constant.patch(constantRoot);
-        constant.setSampleRate(44100);
-        constant.setChannelCount(1);
-        constantRoot.setSampleRate(44100);
-        constantRoot.setChannelCount(1);
+        Summer blockRoot = summing(blockUgen);
+        Summer constantRoot = summing(new Constant());
         String[] names = {"Engine.step(512), per step", "Engine.stepRecording(512), per step",
             "computeNStepsRecording(64), realtime", "PhyUGen, block 64, Minim's tick", "Engine.step(1) + position",
             "computeStep + getPosition, locked", "computeStep + getPosition, realtime",
@@ -197,6 +181,17 @@ public final class AudioProfile {
             System.out.printf(Locale.ROOT, "  %-40s %8.1f  [%.1f-%.1f]  %s%n", names[l], med[l], ns[l][0],
                     ns[l][rounds - 1], added);
         }
+    }
+
+    /** @return a mono {@code Summer} at 44.1 kHz with the UGen patched into it, as an output ticks it. */
+    private static Summer summing(ddf.minim.UGen u) {
+        Summer root = new Summer();
+        u.patch(root);
+        u.setSampleRate(44100);
+        u.setChannelCount(1);
+        root.setSampleRate(44100);
+        root.setChannelCount(1);
+        return root;
     }
 
     /** The FaustCost string: n Mass1D (M 1) between two Ground1D, SpringDamper1D (K 0.2, Z 0.0005), struck. */

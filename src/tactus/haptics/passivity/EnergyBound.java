@@ -59,7 +59,6 @@ final class EnergyBound {
     private volatile double friction;                 // N: a lower bound of its own Coulomb friction
     private volatile double trim = DEFAULT_TRIM;      // r, >= 1
     private volatile boolean holdCompensation;        // true: the cap is moved by K tau v (see the class)
-    private static final double[] AT_REST = new double[3];
 
     /** Sets the stiffness K (N/m, > 0; 0 switches the bound off), from any thread. */
     void setStiffness(double nPerM) {
@@ -176,11 +175,6 @@ final class EnergyBound {
     void observe(double intoModel) {
         budget += intoModel;
         net += intoModel;
-    }
-
-    /** As {@link #apply(double[], double[], double, double)} for a handle at rest. */
-    void apply(double[] f) {
-        apply(f, AT_REST, 1e-3, 0);
     }
 
     /**

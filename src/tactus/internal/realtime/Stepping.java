@@ -58,21 +58,7 @@ public final class Stepping {
         try {
             o.applyQueued();
             checkRecorded(ids, stamps, count);
-            int done = 0;
-            while (done < n) {
-                boolean ramping = core.ramping();
-                if (ramping) {
-                    advanceRamps();
-                }
-                int ran = engineSteps(ramping ? 1 : n - done, done, ids, axes, count, out);
-                core.snapshots.afterSteps(ran);
-                done += ran;
-                if (ran == 0) {
-                    break;
-                }
-            }
-            core.watch.check();
-            return done;
+            return batch(n, ids, axes, count, out, false);
         } finally {
             o.endStep();
         }
@@ -100,29 +86,41 @@ public final class Stepping {
         lock.enter();
         try {
             checkRecorded(ids, stamps, count);
-            boolean ramped = false;
-            int done = 0;
-            while (done < n) {
-                boolean ramping = core.ramping();
-                if (ramping) {
-                    advanceRamps();
-                    ramped = true;
-                }
-                int ran = engineSteps(ramping ? 1 : n - done, done, ids, axes, count, out);
-                core.snapshots.afterSteps(ran);
-                done += ran;
-                if (ran == 0) {
-                    break;
-                }
-            }
-            if (ramped) {
-                core.guard.afterChange(null);
-            }
-            core.watch.check();
-            return done;
+            return batch(n, ids, axes, count, out, true);
         } finally {
             lock.exit();
         }
+    }
+
+    /**
+     * Runs n steps without slices, one at a time while parameter ramps run (they advance every step), recording when
+     * {@code ids} is not null, then checks for divergence.
+     *
+     * @param settleRamps true (locked mode): after steps that advanced a ramp, check stability once, as
+     *     {@link #runRampedSteps} does
+     * @return the number of steps run
+     */
+    private int batch(int n, int[] ids, int[] axes, int count, double[] out, boolean settleRamps) {
+        boolean ramped = false;
+        int done = 0;
+        while (done < n) {
+            boolean ramping = core.ramping();
+            if (ramping) {
+                advanceRamps();
+                ramped = true;
+            }
+            int ran = engineSteps(ramping ? 1 : n - done, done, ids, axes, count, out);
+            core.snapshots.afterSteps(ran);
+            done += ran;
+            if (ran == 0) {
+                break;
+            }
+        }
+        if (ramped && settleRamps) {
+            core.guard.afterChange(null);
+        }
+        core.watch.check();
+        return done;
     }
 
     /** Throws the handle's IllegalStateException when a recorded mass has left the model. */
