@@ -9,6 +9,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import tactus.haptics.safety.GuardHeartbeat;
 import tactus.haptics.safety.MotorGuard;
 import tactus.haptics.safety.MotorGuardLink;
+import tactus.haptics.safety.ResumeRamp;
 import tactus.haptics.transport.SerialTransport;
 import tactus.haptics.transport.Transport;
 import tactus.haptics.transport.WireFormat;
@@ -67,7 +68,7 @@ public class Board implements AutoCloseable {
     /** How long the force takes to come back, linearly from zero, after the motor guard zeroed it, in nanoseconds. */
     static final long RESUME_RAMP_NANOS = 100_000_000L;
     /** The most the ramp's factor may grow from one torque write to the next (a writer late by 100 ms still ramps). */
-    private static final float RESUME_RAMP_MAX_STEP = 0.05f;
+    private static final double RESUME_RAMP_MAX_STEP = 0.05;
     /** Unread input beyond this many bytes is dropped before a write (a sketch that never reads). */
     private static final int INPUT_CAP = 4096;
     /** Largest magnitude a reply value may have (degrees or ADC counts); larger means a misaligned frame. */
@@ -115,8 +116,7 @@ public class Board implements AutoCloseable {
 
     // the motor guard's writes while this JVM was paused (lock held)
     private long seenGuardWrites;
-    private long rampFromNanos;      // 0: no ramp
-    private float lastRamp = 1f;
+    private final ResumeRamp resumeRamp = new ResumeRamp(RESUME_RAMP_NANOS, RESUME_RAMP_MAX_STEP);
     private long zeroingsAtRamp;     // guardZeroings when torqueRamp() last scaled the torques
     private volatile long guardZeroings;
 
@@ -807,10 +807,11 @@ public class Board implements AutoCloseable {
     }
 
     /**
-     * The factor (0..1) by which a torque write is scaled now: 1, except in the {@link #RESUME_RAMP_NANOS} after
-     * the motor guard zeroed the motors of this paused JVM, when the force comes back linearly from zero instead
-     * of jumping to what the sketch computed after the pause; and by at most 5 % of the force per write, so that a
-     * writer that runs late after the pause still ramps (at least 20 writes).
+     * The factor (0..1) by which a torque write is scaled now: 1, except after the motor guard zeroed the motors of
+     * this paused JVM, when the force comes back linearly from zero over {@link #RESUME_RAMP_NANOS} of writing
+     * instead of jumping to what the sketch computed after the pause: by the time since the last write, and by at
+     * most 5 % of the force per write, so that neither a writer that runs late nor one that catches up after the
+     * pause with a burst of writes shortens the ramp (see {@link ResumeRamp}).
      */
     float torqueRamp() {
         lock.lock();
@@ -820,17 +821,7 @@ public class Board implements AutoCloseable {
             }
             syncGuardWrites();
             zeroingsAtRamp = guardZeroings;
-            if (rampFromNanos == 0) {
-                return 1f;
-            }
-            long t = System.nanoTime() - rampFromNanos;
-            float f = Math.min(lastRamp + RESUME_RAMP_MAX_STEP, Math.max(0f, (float) t / RESUME_RAMP_NANOS));
-            if (f >= 1f) {
-                rampFromNanos = 0;
-                f = 1f;
-            }
-            lastRamp = f;
-            return f;
+            return (float) resumeRamp.factor(System.nanoTime());
         } finally {
             lock.unlock();
         }
@@ -858,8 +849,7 @@ public class Board implements AutoCloseable {
             guardZeroings += k;
             torqueArmed = false;
             heartbeat.arm(false);
-            rampFromNanos = System.nanoTime() | 1L;
-            lastRamp = 0f;
+            resumeRamp.start(System.nanoTime());
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.concurrent.locks.LockSupport;
 import tactus.haptics.HaplyLinkException;
 import tactus.haptics.HapticDevice;
 import tactus.haptics.WorkspaceMapping;
+import tactus.haptics.safety.ResumeRamp;
 
 /**
  * An Inverse3 (or Inverse3x, or Minverse) through the Inverse Service, as a {@link HapticDevice}: each tick
@@ -40,8 +41,7 @@ public final class Inverse3Device implements HapticDevice {
     private long lastFrame = -1;
     private InverseGuardLink guard = InverseGuardLink.NONE;
     private long guardActsSeen;
-    private long rampStart;          // System.nanoTime() of the ramp's start; 0: no ramp
-    private double rampLast = 1;     // the factor of the last force sent
+    private final ResumeRamp ramp = new ResumeRamp(RAMP_NANOS, 0.05);   // the loop thread's
 
     private volatile long reconnectMillis;
     private volatile InverseServiceClient fresh;    // a new connection, published by the reconnecting thread
@@ -210,7 +210,7 @@ public final class Inverse3Device implements HapticDevice {
             client = f;
             c = f;
             lastFrame = -1;
-            rampStart = System.nanoTime();
+            ramp.start(System.nanoTime());
             reconnections++;
             reconnecting = null;
         }
@@ -286,20 +286,13 @@ public final class Inverse3Device implements HapticDevice {
         long acts = guard.guardActs();
         if (acts != guardActsSeen) {
             guardActsSeen = acts;   // the guard zeroed the force while this JVM was paused: ramp back in
-            rampStart = System.nanoTime();
+            ramp.start(System.nanoTime());
         }
-        if (rampStart != 0) {
-            double k = Math.min((System.nanoTime() - rampStart) / (double) RAMP_NANOS, rampLast + 0.05);
-            if (k >= 1) {
-                rampStart = 0;
-                k = 1;
-            }
-            rampLast = k;
+        if (ramp.isRunning()) {
+            double k = ramp.factor(System.nanoTime());
             fx *= k;
             fy *= k;
             fz *= k;
-        } else {
-            rampLast = 0;   // the next ramp starts from zero
         }
         guard.forceSent(fx, fy, fz);
         c.sendForce(fx, fy, fz);
