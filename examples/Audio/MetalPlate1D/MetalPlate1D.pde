@@ -53,7 +53,6 @@ void setup() {
   sound = new PhyUGen(plate);                  // the direct way: a model built elsewhere
   sound.listenToMass(name(3, 5), SteppedModel.Z, 3, -0.4);
   sound.listenToMass(name(n - 6, n - 3), SteppedModel.Z, 3, 0.4);
-  sound.setBlockSize(64);                      // 64 samples per call to the model: a strike lands within 1.5 ms
   out = LineOut.open(minim);
   sound.patch(out);
 }

@@ -96,13 +96,16 @@ public class PhyUGen extends UGen {
     /** The thread that computed the last sample: a new one is told to {@link AudioScheduling} (once per switch). */
     private Thread computingThread;
 
-    /** The default block length, in samples: 1, the per-sample path (see {@link #setBlockSize(int)}). */
-    public static final int DEFAULT_BLOCK_SIZE = 1;
+    /**
+     * The default block length, in samples: 64, one pass through the model per 1.45 ms at 44.1 kHz, shorter than any
+     * buffer Minim's outputs use (see {@link #setBlockSize(int)}).
+     */
+    public static final int DEFAULT_BLOCK_SIZE = 64;
     /** The longest block, in samples. */
     public static final int MAX_BLOCK_SIZE = 4096;
     private volatile int blockSize = DEFAULT_BLOCK_SIZE;
     /** Left and right buffers of at least blockSize samples, replaced whole by {@link #setBlockSize(int)}. */
-    private volatile float[][] blockBuffers = new float[2][1];
+    private volatile float[][] blockBuffers = new float[2][DEFAULT_BLOCK_SIZE];
     // the block the audio thread hands out: samples [blockPos, blockLength) of these are still to go
     private float[] blockLeft;
     private float[] blockRight;
@@ -351,19 +354,21 @@ public class PhyUGen extends UGen {
 
     /**
      * Sets how many samples this PhyUGen computes in one pass through the model (1 to {@value #MAX_BLOCK_SIZE}; default
-     * {@value #DEFAULT_BLOCK_SIZE}, the per-sample path), from any thread; it takes effect at the next block. With n
-     * above 1, when Minim asks for the first sample of a block, the model enters once and steps the whole block; the
-     * other samples come from a buffer; the output is bit for bit the per-sample path's as long as nothing changes.
-     * When every listening point reads a mass and neither an avatar nor oversampling is set, the block is a single
-     * call to the model ({@link PhysicalModel#computeNStepsRecording}), the fastest way to play a sound model: 64 is
-     * the block to use then (on a 30-mass string, 133 ns per sample against 188 at 1).
-     * Changes to the model queued from other threads (parameters, topology), and those the ticking thread makes
-     * between two samples, land at the next block boundary: at most one block (1.45 ms at 64 samples and 44.1 kHz)
-     * later than with 1. No sample comes out later than with 1: Minim computes its whole output buffer in one burst
-     * anyway, so the block adds no latency as long as it is not longer than Minim's buffer. The avatar exchange still
-     * runs every model step inside the block, with the haptic position it finds at each step; a fault silences the
-     * rest of its block. 1 is the per-sample path: each sample enters the model on its own, and a change made between
-     * two samples lands at the next one.
+     * {@value #DEFAULT_BLOCK_SIZE}), from any thread; it takes effect at the next block. When Minim asks for the first
+     * sample of a block, the model enters once and steps the whole block; the other samples come from a buffer; the
+     * output is bit for bit the per-sample path's as long as nothing changes. When every listening point reads a mass
+     * and neither an avatar nor oversampling is set, the block is a single call to the model
+     * ({@link PhysicalModel#computeNStepsRecording}), the fastest way to play a sound model (on a 30-mass string, 133
+     * ns per sample at 64 against 188 at 1). Changes to the model queued from other threads (parameters, topology),
+     * and those the ticking thread makes between two samples, land at the next block boundary: at most one block
+     * (1.45 ms at 64 samples and 44.1 kHz) later than with 1. No sample comes out later than with 1 as long as the
+     * block is not longer than the burst in which the output asks for samples (Minim's buffer: 1,024 frames for
+     * {@code getLineOut()}). The avatar exchange still runs every model step inside the block, with the haptic
+     * position it finds at each step; a fault silences the rest of its block.
+     *
+     * <p>1 is the per-sample path: each sample enters the model on its own, and a change made between two samples
+     * lands at the next one. Ask for it when something outside Minim asks for one sample at a time and reacts in
+     * between: a rig that renders a few samples per haptic tick, a test that changes the model between two samples.
      *
      * @throws IllegalArgumentException naming the value when it is out of range; nothing changes then
      */
@@ -520,7 +525,7 @@ public class PhyUGen extends UGen {
      * time: no avatar (its exchange runs per step), no oversampling, and listening points that all read mass
      * displacements and can all be read. The samples are the per-sample path's, bit for bit.
      *
-     * @return false when the block must take the per-sample path (nothing was stepped then)
+     * @return false when the block must take the per-sample path (nothing was stepped, or a step threw)
      */
     private boolean fillRecordedBlock(SteppedModel m, int n) {
         if (oversampler != null || avatarBinding != null || modelSilent) {
@@ -541,14 +546,17 @@ public class PhyUGen extends UGen {
         countTowardsRecheck(m, n);
         r.beginBlock();
         int ran;
+        m.beginSample();   // outside the catch, as on the per-sample path: its failure is this PhyUGen's
         try {
             ran = m.stepRecording(n, r.handles, r.axes, r.count, r.values);
         } catch (Throwable t) {
             if (!haltedAfterThrow(m)) {
-                return false;   // a point's mass left before the first step: the per-sample path finds which
+                return false;   // a point's mass left, or a step threw: the per-sample path finds which
             }
             silenceModel(true, t);
             ran = 0;
+        } finally {
+            m.endSample();
         }
         boolean stereo = blockStereo;
         boolean dc = dcEnabled;
@@ -571,10 +579,10 @@ public class PhyUGen extends UGen {
         if (ran > 0) {
             outputSilent = false;
         }
+        if (!modelSilent && m.isHalted()) {
+            silenceModel(true, null);   // diverged, and a DivergenceListener was told (at the last step, too)
+        }
         if (ran < n) {
-            if (!modelSilent && m.isHalted()) {
-                silenceModel(true, null);   // diverged, and a DivergenceListener was told
-            }
             for (int i = ran; i < n; i++) {
                 blockLeft[i] = 0f;
                 blockRight[i] = 0f;

@@ -63,8 +63,9 @@ public interface SteppedModel {
     /**
      * Runs up to n steps and records after each step the position of mass handle {@code masses[i]} along axis
      * {@code axes[i]} into {@code out[s * count + i]} (model units; s = 0 for the first step): one block of audio in
-     * one pass. The default steps and reads one at a time; a model that can do it in one call overrides it. Throws
-     * as {@link #step()} and {@link #massPosition(int, int)} do.
+     * one pass, called between {@link #beginSample()} and {@link #endSample()} as one sample's calls are. The default
+     * steps and reads one at a time; a model that can do it in one call overrides it. Throws as {@link #step()} and
+     * {@link #massPosition(int, int)} do.
      *
      * @return the number of steps run: fewer than n when the model halted (see {@link #isHalted()})
      */

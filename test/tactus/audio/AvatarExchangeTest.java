@@ -86,24 +86,33 @@ class AvatarExchangeTest {
      * A step in the device position reaches the audio at the first model step after it is published, then
      * the avatar follows its EWMA exactly: after j steps it has covered 1 - (1 - w)^j of the step (w = 1/s).
      */
-    @Test
-    void aPositionStepReachesTheAudioAtTheNextStepThroughTheEwma() {
+    @ParameterizedTest(name = "block of {0}")
+    @ValueSource(ints = {1, PhyUGen.DEFAULT_BLOCK_SIZE})
+    void aPositionStepReachesTheAudioAtTheNextStepThroughTheEwma(int block) {
         int smoothing = 30;
         PhysicalModel pm = new PhysicalModel(44100);
         pm.addHapticInput3D("avatar", new Vect3D(0, 0, 0), smoothing);
         pm.init();
         PhyUGen u = new PhyUGen(pm);
+        u.setBlockSize(block);
         u.setDcBlockerEnabled(false);
         u.listenToMass("avatar", SteppedModel.X, 1, 0);
         AvatarExchange ex = new AvatarExchange();
         u.attachAvatar("avatar", ex);
         u.setSampleRate(44100);
         float[] frame = new float[1];
-        for (int i = 0; i < 100; i++) {
+        int before = 100;
+        for (int i = 0; i < before; i++) {
             u.tick(frame);
             assertEquals(0, frame[0], 0f);
         }
         ex.publishPosition(1, 0, 0);
+        // the samples of the block in progress were computed before the publish: the step is seen at the next block
+        int boundary = (before + block - 1) / block * block;
+        for (int i = before; i < boundary; i++) {
+            u.tick(frame);
+            assertEquals(0, frame[0], 0f, "sample " + i + ", computed before the publish");
+        }
         double w = 1.0 / smoothing;
         for (int j = 1; j <= 200; j++) {
             u.tick(frame);

@@ -57,6 +57,7 @@ class ContactClickTest {
         }
         pm.init();
         PhyUGen u = new PhyUGen(pm);
+        u.setBlockSize(1);   // the test reads the model after each sample: the per-sample path
         u.setDcBlockerEnabled(false);
         ListeningPoint point = u.listenToMass(StringModel.mass(10), SteppedModel.Y, GAIN, 0);
         AvatarExchange ex = new AvatarExchange();

@@ -8,6 +8,9 @@ final class CountingSteppedModel implements SteppedModel {
     int steps;
     int recordings;
     int recordedSteps;
+    /** Calls of {@link #beginSample()}; and how many of them were not yet ended. */
+    int samplesBegun;
+    int samplesOpen;
 
     CountingSteppedModel(SteppedModel m) {
         this(m, false);
@@ -23,8 +26,8 @@ final class CountingSteppedModel implements SteppedModel {
     @Override public void step() { steps++; m.step(); }
     @Override public boolean isHalted() { return m.isHalted(); }
     @Override public java.util.concurrent.locks.Lock sampleLock() { return m.sampleLock(); }
-    @Override public void beginSample() { m.beginSample(); }
-    @Override public void endSample() { m.endSample(); }
+    @Override public void beginSample() { samplesBegun++; samplesOpen++; m.beginSample(); }
+    @Override public void endSample() { samplesOpen--; m.endSample(); }
     @Override public int resolveMass(String name) { return m.resolveMass(name); }
     @Override public int resolveLink(String name, boolean withForce) { return m.resolveLink(name, withForce); }
     @Override public int resolveAvatar(String name) { return m.resolveAvatar(name); }
@@ -41,6 +44,9 @@ final class CountingSteppedModel implements SteppedModel {
     @Override
     public int stepRecording(int n, int[] masses, int[] axes, int count, double[] out) {
         recordings++;
+        if (samplesOpen != 1) {
+            throw new AssertionError("a block is recorded between beginSample() and endSample(): " + samplesOpen + " open");
+        }
         int ran = interfaceDefault ? SteppedModel.super.stepRecording(n, masses, axes, count, out)
                 : m.stepRecording(n, masses, axes, count, out);
         recordedSteps += ran;

@@ -29,7 +29,7 @@ class PhyUGenAvatarForceTest {
     @Test
     void theContactForceOnTheAvatarReachesTheExchangeWhateverThreadAttachedIt() throws Exception {
         int blocks = 20;
-        int perBlock = 441;
+        int perBlock = 7 * PhyUGen.DEFAULT_BLOCK_SIZE;   // whole blocks per burst, as Minim's buffers are (448 samples)
         // reference: the same scene stepped and read on one thread, with no PhyUGen
         PhysicalModel plain = scene();
         double[] expected = new double[blocks];

@@ -235,14 +235,14 @@ class PhyUGenBlockTest {
     }
 
     @Test
-    void aBlockOfMassPointsEntersTheModelOnceAndOtherPointsSampleBySample() {
+    void byDefaultABlockOfMassPointsEntersTheModelOnceAndOtherPointsSampleBySample() {
         for (boolean elongation : new boolean[] {false, true}) {
             PhysicalModel pm = new PhysicalModel(44100);
             StringModel.build(pm, 7, 0.001);
             pm.init();
             CountingSteppedModel counting = new CountingSteppedModel(new PhysicalModelStepper(pm));
             PhyUGen u = new PhyUGen(counting);
-            u.setBlockSize(64);
+            assertEquals(64, u.blockSize(), "the default block");
             u.listenToMass(StringModel.mass(5), SteppedModel.Y, 300, 0);
             if (elongation) {
                 u.listenToElongation("s12", 40, 0);
@@ -261,6 +261,7 @@ class PhyUGenBlockTest {
                 assertEquals(20, counting.recordings, "one call per block");
                 assertEquals(64 * 20, counting.recordedSteps);
                 assertEquals(0, counting.steps);
+                assertEquals(20, counting.samplesBegun, "the model entered once per block");
             }
         }
     }

@@ -10,7 +10,8 @@ import tactus.PhysicalModel;
 import tactus.Vect3D;
 
 /**
- * A PhyUGen's sample enters the model once ({@link SteppedModel#beginSample()}); its output stays bit for bit that of
+ * On the per-sample path ({@code setBlockSize(1)}; blocks are {@link PhyUGenBlockTest}'s), a PhyUGen's sample enters
+ * the model once ({@link SteppedModel#beginSample()}); its output stays bit for bit that of
  * stepping the same model one sample at a time in locked mode with one facade call per step and per read, also when
  * the ticking thread changes a parameter between two samples, listens to an elongation beside a mass, or
  * oversamples.
@@ -50,6 +51,7 @@ class PhyUGenSampleRunTest {
     private static float[] played(int changeAt) {
         PhysicalModel pm = string();
         PhyUGen u = new PhyUGen(pm);
+        u.setBlockSize(1);
         u.setDcBlockerEnabled(false);
         u.listenToMass(StringModel.mass(5), SteppedModel.Y, GAIN_MASS, 0);
         u.listenToElongation("s9", GAIN_LINK, 0);
@@ -92,6 +94,7 @@ class PhyUGenSampleRunTest {
             PhysicalModel ref = string();
             PhysicalModel pm = string();
             PhyUGen u = new PhyUGen(pm);
+            u.setBlockSize(1);
             u.listenToMass(StringModel.mass(5), SteppedModel.Y, GAIN_MASS, 0);
             u.setOversampling(3);
             ref.setSimRate(pm.getSimRate());

@@ -137,14 +137,15 @@ class PhyUGenTest {
         PhyUGen e = new PhyUGen(pm);
         e.setDcBlockerEnabled(false);
         e.listenToElongation("s3", 1, 0);
-        float[][] elong = OfflineRenderer.renderToArray(e, RATE, 1, 0.02);
+        double seconds = 14.0 * PhyUGen.DEFAULT_BLOCK_SIZE / RATE;   // whole blocks: the last sample is the last step
+        float[][] elong = OfflineRenderer.renderToArray(e, RATE, 1, seconds);
         PhysicalModel pm2 = new PhysicalModel(RATE);
         StringModel.build(pm2, 7, 0.01);
         pm2.init();
         PhyUGen t = new PhyUGen(pm2);
         t.setDcBlockerEnabled(false);
         t.listenToTension("s3", 1, 0);
-        float[][] tension = OfflineRenderer.renderToArray(t, RATE, 1, 0.02);
+        float[][] tension = OfflineRenderer.renderToArray(t, RATE, 1, seconds);
         double rest = StringModel.D - StringModel.L0;
         for (int i = 0; i < elong[0].length; i += 37) {
             assertTrue(Math.abs(elong[0][i] - rest) < 1e-3, "elongation near D - L0");

@@ -259,6 +259,9 @@ public final class Inverse3WallRig {
         AudioSide(PhyUGen ugen, int hapticRate, int burst) {
             this.hapticRate = hapticRate;
             this.burst = burst;
+            if (burst <= 0) {
+                ugen.setBlockSize(1);   // a few samples per tick, the haptic position changing in between
+            }
             ugen.patch(root);
             ugen.setSampleRate(AUDIO_RATE);
             ugen.setChannelCount(1);
