@@ -29,7 +29,6 @@ public final class ResumeRamp {
         }
         this.durationNanos = durationNanos;
         this.longestGapNanos = (long) Math.ceil(maxStep * durationNanos);
-        this.lastNanos = 0;
     }
 
     /** Starts (or restarts) the ramp from a factor of 0 at time nowNanos ({@link System#nanoTime()}). */
