@@ -10,6 +10,7 @@ import tactus.audio.SteppedModel;
 import tactus.engine.Engine;
 import tactus.engine.LinkKind;
 import tactus.engine.MassKind;
+import tactus.faust.FaustCost;
 
 /**
  * Where a small model's audio sample goes (docs/performance.md, "Where a small model's sample goes"): the same 1-D
@@ -64,24 +65,25 @@ public final class AudioProfile {
     private static void profile(int n) {
         Engine engine = engineString(n);
         int listen = 2 * n / 3 + 1;
-        PhysicalModel locked = string(n);
+        PhysicalModel locked = FaustCost.string(n, false);
         Mass lockedMass = locked.getMass("m" + listen);
-        PhysicalModel realtime = string(n);
+        PhysicalModel realtime = FaustCost.string(n, false);
         realtime.beginRealtimeStepping();
         Mass realtimeMass = realtime.getMass("m" + listen);
-        PhyUGen ugen = new PhyUGen(string(n));
+        PhyUGen ugen = new PhyUGen(FaustCost.string(n, false));
+        ugen.setBlockSize(1);
         ugen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
         Summer root = summing(ugen);
         float[] frame = new float[1];
         double[] pos = new double[3];
         Vect3D v = new Vect3D();
-        PhysicalModel blockModel = string(n);
+        PhysicalModel blockModel = FaustCost.string(n, false);
         blockModel.beginRealtimeStepping();
         Mass[] blockMasses = {blockModel.getMass("m" + listen)};
         int[] blockAxes = {2};
         double[] recorded = new double[BUFFER];
         int[] engineIds = {listen};
-        PhyUGen blockUgen = new PhyUGen(string(n));
+        PhyUGen blockUgen = new PhyUGen(FaustCost.string(n, false));
         blockUgen.setBlockSize(BLOCK);
         blockUgen.listenToMass("m" + listen, SteppedModel.Z, 1, 0);
         Summer blockRoot = summing(blockUgen);
@@ -183,31 +185,17 @@ public final class AudioProfile {
         }
     }
 
-    /** @return a mono {@code Summer} at 44.1 kHz with the UGen patched into it, as an output ticks it. */
-    private static Summer summing(ddf.minim.UGen u) {
+    /** @return a mono {@code Summer} at 44.1 kHz with the UGens patched into it, as an output ticks them. */
+    static Summer summing(ddf.minim.UGen... us) {
         Summer root = new Summer();
-        u.patch(root);
-        u.setSampleRate(44100);
-        u.setChannelCount(1);
+        for (ddf.minim.UGen u : us) {
+            u.patch(root);
+            u.setSampleRate(44100);
+            u.setChannelCount(1);
+        }
         root.setSampleRate(44100);
         root.setChannelCount(1);
         return root;
-    }
-
-    /** The FaustCost string: n Mass1D (M 1) between two Ground1D, SpringDamper1D (K 0.2, Z 0.0005), struck. */
-    static PhysicalModel string(int n) {
-        PhysicalModel m = new PhysicalModel(44100);
-        m.addGround1D("g0", new Vect3D(0, 0, 0));
-        m.addGround1D("g1", new Vect3D(n + 1, 0, 0));
-        for (int i = 1; i <= n; i++) {
-            m.addMass1D("m" + i, 1, new Vect3D(i, 0, 0), new Vect3D());
-        }
-        for (int i = 0; i <= n; i++) {
-            m.addSpringDamper1D("s" + i, 0, 0.2, 0.0005, i == 0 ? "g0" : "m" + i, i == n ? "g1" : "m" + (i + 1));
-        }
-        m.init();
-        m.triggerForceImpulse("m" + (n / 5 + 1), 0, 0, 1);
-        return m;
     }
 
     private static Engine engineString(int n) {

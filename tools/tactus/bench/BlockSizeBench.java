@@ -24,19 +24,13 @@ public final class BlockSizeBench {
     }
 
     private static Summer voices(String id, int block) {
-        Summer root = new Summer();
-        int v = FaustSideBySide.voices(id);
-        for (int i = 0; i < v; i++) {
-            PhyUGen u = new PhyUGen(FaustSideBySide.model(id));
-            u.setBlockSize(block);
-            u.listenToMass(FaustSideBySide.listened(id), SteppedModel.Z, 1, 0);
-            u.patch(root);
-            u.setSampleRate(44100);
-            u.setChannelCount(1);
+        PhyUGen[] us = new PhyUGen[FaustSideBySide.voices(id)];
+        for (int i = 0; i < us.length; i++) {
+            us[i] = new PhyUGen(FaustSideBySide.model(id));
+            us[i].setBlockSize(block);
+            us[i].listenToMass(FaustSideBySide.listened(id), SteppedModel.Z, 1, 0);
         }
-        root.setSampleRate(44100);
-        root.setChannelCount(1);
-        return root;
+        return AudioProfile.summing(us);
     }
 
     /** CPU ns per sample over about the given time. */

@@ -59,10 +59,10 @@ public final class FaustSideBySide {
     /** The system property that sets the PhyUGens' block size in the Tactus process ({@code --block=N}). */
     static final String BLOCK_PROPERTY = "tactus.bench.block";
     /**
-     * The PhyUGens' block size unless {@code --block=N} says otherwise: 64 samples, one call to the model per block
-     * ({@code PhyUGen.setBlockSize}), the setting docs/audio.md recommends for audio-rate models.
+     * The PhyUGens' block size unless {@code --block=N} says otherwise: the PhyUGen's default, 64 samples, one call to
+     * the model per block ({@code PhyUGen.setBlockSize}).
      */
-    static final int DEFAULT_BLOCK = 64;
+    static final int DEFAULT_BLOCK = PhyUGen.DEFAULT_BLOCK_SIZE;
     /** The cost of one element update that SIMD code can reach with the model in cache (issue #36), in ns. */
     static final double ELEMENT_LIMIT_NS = 0.3;
 
