@@ -710,6 +710,7 @@ public final class Engine implements AutoCloseable {
     private int stepInParallel(StepPlan p, int n) {
         hookPlan = p;
         hookSteps = 0;
+        p.settleOffAxisForces();
         try {
             return stepper.run(p, n, guardHook);
         } finally {
@@ -1227,6 +1228,9 @@ public final class Engine implements AutoCloseable {
             plan.fx[s] += fx;
             plan.fy[s] += fy;
             plan.fz[s] += fz;
+            if ((fx != 0 || fy != 0) && plan.isOneDimensional(s)) {
+                plan.offAxisResidue = true;   // no kernel may clear it: cleared before the next step
+            }
         } else {
             int q = 3 * id;
             masses.pendingForce[q] += fx;

@@ -181,7 +181,11 @@ final class MassKernels {
         }
     }
 
-    /** Mass1D: only z moves; with neither friction nor gravity ({@code plain}), by the reduced update. */
+    /**
+     * Mass1D: only z moves; with neither friction nor gravity ({@code plain}), by the reduced update. Its x and y
+     * forces, which never move it, are cleared here only when an interaction can write them
+     * ({@link StepPlan#offAxisWriters}).
+     */
     static final class Line1D extends SlotKernel {
         private final boolean plain;
 
@@ -192,7 +196,13 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            if (plain) {
+            if (!p.offAxisWriters) {
+                if (plain) {
+                    free(p.z, p.pz, p.fz, p.invM, from, to);
+                } else {
+                    damped(p.z, p.pz, p.fz, p.invM, p.retention, p.medium.gz, from, to);
+                }
+            } else if (plain) {
                 free1D(p.z, p.pz, p.fz, p.fx, p.fy, p.invM, from, to);
             } else {
                 damped1D(p.z, p.pz, p.fz, p.fx, p.fy, p.invM, p.retention, p.medium.gz, from, to);
@@ -255,7 +265,7 @@ final class MassKernels {
         }
     }
 
-    /** Osc1D: the oscillator along z only. */
+    /** Osc1D: the oscillator along z only; its x and y forces as for {@link Line1D}. */
     static final class Osc1D extends SlotKernel {
         Osc1D(StepPlan p, int s, int e) {
             super(p, s, e);
@@ -263,8 +273,12 @@ final class MassKernels {
 
         @Override
         void step(int from, int to) {
-            oscillate1D(p.z, p.pz, p.restZ, p.fz, p.fx, p.fy, p.invM, p.retention, p.oscStiffnessPerMass,
-                    p.medium.gz, from, to);
+            if (p.offAxisWriters) {
+                oscillate1D(p.z, p.pz, p.restZ, p.fz, p.fx, p.fy, p.invM, p.retention, p.oscStiffnessPerMass,
+                        p.medium.gz, from, to);
+            } else {
+                oscillate(p.z, p.pz, p.restZ, p.fz, p.invM, p.retention, p.oscStiffnessPerMass, p.medium.gz, from, to);
+            }
         }
     }
 

@@ -62,6 +62,18 @@ public final class StepPlan {
      * ({@link #selectKernels()}); false: masses by their own kernels, then every run in two passes.
      */
     boolean sweepRuns = true;
+    /**
+     * true when some interaction kernel (a 3-D link, a plane contact, a contact group) may write an x or y force
+     * into a one-dimensional mass (Mass1D, Osc1D), whose own kernels then clear those forces every step; false
+     * (the usual case) when nothing but the API can write them there, so that the 1-D kernels leave them alone
+     * (two stores per mass and step fewer) and {@link #settleOffAxisForces()} clears what the API wrote.
+     */
+    boolean offAxisWriters;
+    /**
+     * Set when an x or y force may have been written into a one-dimensional mass outside the kernels (the API's
+     * {@code addForce}, a compile that carried forces over); cleared by {@link #settleOffAxisForces()}.
+     */
+    boolean offAxisResidue = true;
     private Kernel[] kernels = new Kernel[0];
     private int kernelsVersion;
 
@@ -97,6 +109,7 @@ public final class StepPlan {
      * goes through {@link Engine#step(int)}, which counts steps and runs the divergence guard.
      */
     void step() {
+        settleOffAxisForces();
         Kernel[] ks = kernels;
         for (int i = 0; i < ks.length; i++) {
             ks[i].run();
@@ -105,6 +118,56 @@ public final class StepPlan {
 
     Kernel[] kernels() {
         return kernels;
+    }
+
+    /**
+     * Clears the x and y forces of the one-dimensional masses if something outside the kernels may have written
+     * them since the last step ({@link #offAxisResidue}): they never move such a mass, and its kernels only clear
+     * them when an interaction can write them ({@link #offAxisWriters}). Call before a step; allocates nothing.
+     */
+    void settleOffAxisForces() {
+        if (!offAxisResidue) {
+            return;
+        }
+        offAxisResidue = false;
+        clearXY(start(MassKind.MASS1D), end(MassKind.MASS1D));
+        clearXY(start(MassKind.OSC1D), end(MassKind.OSC1D));
+    }
+
+    private void clearXY(int s, int e) {
+        java.util.Arrays.fill(fx, s, e, 0.0);
+        java.util.Arrays.fill(fy, s, e, 0.0);
+    }
+
+    /** @return true if slot s holds a one-dimensional mass (Mass1D or Osc1D). */
+    boolean isOneDimensional(int s) {
+        return s >= start(MassKind.MASS1D) && s < end(MassKind.MASS1D)
+                || s >= start(MassKind.OSC1D) && s < end(MassKind.OSC1D);
+    }
+
+    /** @return true if some link of a kind with x or y forces, or some contact group, touches a 1-D mass. */
+    private boolean findOffAxisWriters() {
+        if (start(MassKind.MASS1D) == end(MassKind.MASS1D) && start(MassKind.OSC1D) == end(MassKind.OSC1D)) {
+            return false;
+        }
+        for (LinkBatch b : batches) {
+            if (b == null || b.kind.isOneDimensional()) {
+                continue;
+            }
+            for (int j = 0; j < b.n; j++) {
+                if (isOneDimensional(b.a[j]) || isOneDimensional(b.b[j])) {
+                    return true;
+                }
+            }
+        }
+        for (ContactGroupKernel g : groups) {
+            for (int s : g.members()) {
+                if (isOneDimensional(s)) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     int kernelsVersion() {
@@ -160,6 +223,11 @@ public final class StepPlan {
     void selectKernels() {
         java.util.ArrayList<Kernel> list = new java.util.ArrayList<>();
         boolean plainMasses = !medium.hasGravity() && !medium.hasFriction();
+        boolean writers = findOffAxisWriters();
+        if (writers != offAxisWriters) {
+            offAxisWriters = writers;
+            offAxisResidue = true;   // forces an interaction wrote under the old selection must not linger
+        }
         boolean anyRun = false;
         for (LinkBatch b : batches) {
             anyRun |= b != null && b.runs.length > 0;
