@@ -21,25 +21,12 @@ import org.junit.jupiter.params.provider.EnumSource;
 class OffAxisForcesTest {
 
     /**
-     * A struck 1-D string of n masses of a kind between two Ground1D, with varied masses and parameters; with
-     * {@code zeroLink}, a SpringDamper3D of zero stiffness and damping also ties mass 3 to a Ground3D off the axis,
-     * so that an interaction can write x and y forces into a 1-D mass (it writes zeros).
+     * The struck 1-D string of {@link SpringDamper1DSegmentTest} (n masses of a kind between two Ground1D, varied
+     * masses and parameters); with {@code zeroLink}, a SpringDamper3D of zero stiffness and damping also ties mass 3
+     * to a Ground3D off the axis, so that an interaction can write x and y forces into a 1-D mass (it writes zeros).
      */
     private static Engine string(MassKind kind, int n, boolean zeroLink, int[] ids) {
-        Engine e = new Engine();
-        int g0 = e.addMass(MassKind.GROUND1D, 1, 0, 0, 0, 0, 0, 0);
-        int prev = g0;
-        for (int i = 1; i <= n; i++) {
-            int m = e.addMass(kind, 1 + 0.1 * (i % 3), i, 0, 0.01 * Math.sin(i * 0.7), 0, 0, 0.0003 * Math.cos(i));
-            if (kind == MassKind.OSC1D) {
-                e.setOscillator(m, 0.001 * (1 + i % 4), 0.0001);
-            }
-            ids[i] = m;
-            e.addLink(LinkKind.SPRING_DAMPER1D, prev, m, 0.2 + 0.01 * (i % 5), 0.0005 * (i % 3), 0.001 * (i % 2));
-            prev = m;
-        }
-        int g1 = e.addMass(MassKind.GROUND1D, 1, n + 1, 0, 0, 0, 0, 0);
-        e.addLink(LinkKind.SPRING_DAMPER1D, prev, g1, 0.2, 0.0005, 0);
+        Engine e = SpringDamper1DSegmentTest.string(kind, n, true, ids);
         if (zeroLink) {
             int off = e.addMass(MassKind.GROUND3D, 1, 3, 5, 1, 0, 0, 0);
             e.addLink(LinkKind.SPRING_DAMPER3D, ids[3], off, 0, 0, 0);

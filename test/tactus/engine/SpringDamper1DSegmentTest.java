@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Timeout;
 class SpringDamper1DSegmentTest {
 
     /** A struck 1-D string of n masses of a kind between two Ground1D, with varied parameters and rest lengths. */
-    private static Engine string(MassKind kind, int n, boolean sweeps, int[] ids) {
+    static Engine string(MassKind kind, int n, boolean sweeps, int[] ids) {
         return string(kind, n, sweeps, ids, false);
     }
 
