@@ -164,6 +164,15 @@ final class LinkKernels {
         private final double[] segZ;
         private final double[] segL;
 
+        /**
+         * True when every link outside the segments has the same stiffness, damping and length (uK, uZ, uL), held in
+         * registers then (a plate's links, the ends of a string); with stencil sweeps off, never (the reference).
+         */
+        private boolean uniformLinks;
+        private double uK;
+        private double uZ;
+        private double uL;
+
         @Override
         public void run() {
             if (b.paramsVersion != seenParams) {
@@ -171,7 +180,7 @@ final class LinkKernels {
             }
             int from = 0;
             for (int q = 0; q < segStart.length; q++) {
-                links(from, segStart[q]);
+                between(from, segStart[q]);
                 if (uniform[q]) {
                     uniformSegment(segStart[q], segEnd[q], segK[q], segZ[q], segL[q]);
                 } else {
@@ -179,12 +188,22 @@ final class LinkKernels {
                 }
                 from = segEnd[q];
             }
-            links(from, b.nIrregular);
+            between(from, b.nIrregular);
+        }
+
+        /** The links [from, to) outside the segments, one by one. */
+        private void between(int from, int to) {
+            if (uniformLinks) {
+                uniformLinks(from, to, uK, uZ, uL);
+            } else {
+                links(from, to);
+            }
         }
 
         /** Looks again (after a parameter change) which segments have one set of parameters for all their links. */
         private void findUniformSegments() {
             seenParams = b.paramsVersion;
+            findUniformLinks();
             for (int q = 0; q < segStart.length; q++) {
                 int js = segStart[q];
                 double kk = b.k[js], zz = b.z[js], l = b.len[js];
@@ -199,6 +218,50 @@ final class LinkKernels {
                 segK[q] = kk;
                 segZ[q] = zz;
                 segL[q] = l;
+            }
+        }
+
+        /** Looks again whether the links outside the segments all share one stiffness, damping and length. */
+        private void findUniformLinks() {
+            int q = 0;
+            boolean same = true;
+            boolean first = true;
+            for (int j = 0; j < b.nIrregular && same; j++) {
+                if (q < segStart.length && j == segStart[q]) {
+                    j = segEnd[q++] - 1;   // a segment's links are looked at by findUniformSegments
+                    continue;
+                }
+                if (first) {
+                    uK = b.k[j];
+                    uZ = b.z[j];
+                    uL = b.len[j];
+                    first = false;
+                } else {
+                    // compared as bits, as in findUniformSegments
+                    same = Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(uK)
+                            && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(uZ)
+                            && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(uL);
+                }
+            }
+            uniformLinks = same && !first && p.sweepRuns;
+        }
+
+        /** @return true when the links outside the segments run with their shared parameters as constants (tests). */
+        boolean uniformLinks() {
+            return uniformLinks;
+        }
+
+        /** As {@link #links}, for links that all have stiffness kk, damping zz and length l: fewer loads per link. */
+        private void uniformLinks(int from, int to, double kk, double zz, double l) {
+            final double[] z = p.z, fz = p.fz, dp = b.dp;
+            final int[] ia = b.a, ib = b.b;
+            for (int j = from; j < to; j++) {
+                int a = ia[j], c = ib[j];
+                double e = z[a] - z[c];
+                double f = kk * (e - l) + zz * (e - dp[j]);
+                dp[j] = e;
+                fz[a] -= f;
+                fz[c] += f;
             }
         }
 

@@ -2,6 +2,7 @@ package tactus.engine;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -178,6 +179,75 @@ class SpringDamper1DSegmentTest {
             ref.step(1);
             assertSame(seg, ref, "plate, step " + step);
         }
+    }
+
+    /**
+     * The Faust bench's plate (8 x 8 Osc1D, each tied to its right and lower neighbour, the two links of a mass one
+     * after the other, so no segment), all links alike: stepped with the shared parameters as constants, the same
+     * bits as link by link, through a change that makes one link different, back, and a change of all of them.
+     */
+    @Test
+    void aUniformPlateRunsItsLinksWithConstantsAndTheSameBits() {
+        Engine seg = uniformPlate(true);
+        Engine ref = uniformPlate(false);
+        seg.step(1);
+        ref.step(1);
+        assertTrue(uniformLinks(seg), "every link alike: constants");
+        assertFalse(uniformLinks(ref), "sweeps off: the link-by-link reference");
+        double z0 = seg.plan().z[27];
+        for (int step = 0; step < 600; step++) {
+            for (Engine e : new Engine[] {seg, ref}) {
+                if (step == 100) {
+                    e.setLinkParams(37, 0.2, 0.00002, 0);
+                } else if (step == 200) {
+                    e.setLinkParams(37, 0.15, 0.00002, 0);
+                } else if (step == 300) {
+                    for (int l = 0; l < e.linkIdCount(); l++) {
+                        e.setLinkParams(l, 0.1, 0.0001, 0.0005);
+                    }
+                }
+            }
+            seg.step(1);
+            ref.step(1);
+            assertSame(seg, ref, "uniform plate, step " + step);
+            boolean alike = step < 100 || step >= 200;
+            assertEquals(alike, uniformLinks(seg), "constants exactly while every link is alike, step " + step);
+        }
+        assertNotEquals(z0, seg.plan().z[27], "the plate should move");
+    }
+
+    private static boolean uniformLinks(Engine e) {
+        for (Kernel k : e.plan().kernels()) {
+            if (k instanceof LinkKernels.SpringDamper1D) {
+                return ((LinkKernels.SpringDamper1D) k).uniformLinks();
+            }
+        }
+        throw new AssertionError("no SpringDamper1D kernel");
+    }
+
+    private static Engine uniformPlate(boolean sweeps) {
+        int n = 8;
+        Engine e = new Engine();
+        e.setStencilSweeps(sweeps);
+        int[][] id = new int[n][n];
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                double z = i == 2 && j == 2 ? 0.01 : 0;   // struck at p2_2
+                id[i][j] = e.addMass(MassKind.OSC1D, 1, i, j, z, 0, 0, 0);
+                e.setOscillator(id[i][j], 0.0005, 0);
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                if (i + 1 < n) {
+                    e.addLink(LinkKind.SPRING_DAMPER1D, id[i][j], id[i + 1][j], 0.15, 0.00002, 0);
+                }
+                if (j + 1 < n) {
+                    e.addLink(LinkKind.SPRING_DAMPER1D, id[i][j], id[i][j + 1], 0.15, 0.00002, 0);
+                }
+            }
+        }
+        return e;
     }
 
     private static Engine plate(boolean sweeps) {
