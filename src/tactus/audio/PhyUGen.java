@@ -80,6 +80,8 @@ public class PhyUGen extends UGen {
     private final RateHolder rateHolder = new RateHolder();
     // the audio thread's own fault bookkeeping
     private int sinceRecheck;
+    /** True once the block being filled has counted its samples towards the recheck (a one-call block). */
+    private boolean blockCounted;
     private boolean modelSilent;
     private boolean halted;
     private boolean retryStep;
@@ -498,13 +500,16 @@ public class PhyUGen extends UGen {
         blockChannels = channelCount;
         blockStereo = channelCount >= 2 && !forceMono;
         SteppedModel m = steppedModel();
+        blockCounted = false;
         if (n > 1 && fillRecordedBlock(m, n)) {
             return;
         }
         m.beginSample();
         try {
             for (int i = 0; i < n; i++) {
-                countTowardsRecheck(m);
+                if (!blockCounted) {   // a one-call block that fell back here has counted its samples already
+                    countTowardsRecheck(m);
+                }
                 if (computeSample(m, blockStereo)) {
                     blockLeft[i] = sampleLeft;
                     blockRight[i] = sampleRight;
@@ -544,6 +549,7 @@ public class PhyUGen extends UGen {
             return false;
         }
         countTowardsRecheck(m, n);
+        blockCounted = true;
         r.beginBlock();
         int ran;
         m.beginSample();   // outside the catch, as on the per-sample path: its failure is this PhyUGen's
@@ -749,7 +755,7 @@ public class PhyUGen extends UGen {
     private void countTowardsRecheck(SteppedModel m, int samples) {
         sinceRecheck += samples;
         if (sinceRecheck >= RECHECK_SAMPLES) {
-            sinceRecheck = 0;
+            sinceRecheck -= RECHECK_SAMPLES;   // a block that crosses the mark keeps its samples past it
             recheck(m);
         }
     }

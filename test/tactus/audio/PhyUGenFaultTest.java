@@ -424,6 +424,44 @@ class PhyUGenFaultTest {
         assertPrintedOnlyByTheNoticeThread();
     }
 
+    /**
+     * The retries of a failing step come every {@link PhyUGen#RECHECK_SAMPLES} samples counted from the first one,
+     * whatever the block: a one-call block that fell back to one sample per pass (to find out what failed) counts
+     * its samples once, not twice.
+     */
+    @ParameterizedTest
+    @ValueSource(ints = {1, 16, PhyUGen.DEFAULT_BLOCK_SIZE, 256})
+    void retriesComeEveryRecheckIntervalCountedFromTheFirstSample(int block) throws Exception {
+        FlakyModel model = new FlakyModel();
+        PhyUGen u = new PhyUGen(model);
+        u.setSampleRate(44100);
+        u.setChannelCount(2);
+        u.setBlockSize(block);
+        u.listenToMass("x", SteppedModel.X, 1, 0);
+        int start = 1024;   // whole blocks of every size tried
+        tick(u, start, -1);
+        model.fail = true;
+        java.util.List<Integer> at = new java.util.ArrayList<>();
+        int last = model.calls;
+        int end = start + 5 * PhyUGen.RECHECK_SAMPLES;
+        for (int s = start; s < end; s++) {
+            tick(u, 1, -1);   // a block is computed at the tick of its first sample
+            if (model.calls != last) {
+                at.add(s);
+                last = model.calls;
+            }
+        }
+        assertEquals(start, at.get(0), "the first step after the failure begins throws at once: " + at);
+        for (int k = 1; k < at.size(); k++) {
+            int first = at.get(k);
+            // the block computed at this tick holds sample first .. first + block - 1 (0-based); one of them must be
+            // a sample whose 1-based number is a multiple of the interval
+            assertTrue((first + block) / PhyUGen.RECHECK_SAMPLES > first / PhyUGen.RECHECK_SAMPLES,
+                    "retry " + k + " in the block from sample " + first + " (block " + block + "): " + at);
+        }
+        assertEquals(6, at.size(), "the failure, then one retry per " + PhyUGen.RECHECK_SAMPLES + " samples: " + at);
+    }
+
     @ParameterizedTest
     @ValueSource(ints = {1, PhyUGen.DEFAULT_BLOCK_SIZE})
     void aFailureOfThePhyUGenItselfIsWrittenAsZeroAndSaidOnce(int block) throws Exception {
