@@ -80,8 +80,6 @@ public class PhyUGen extends UGen {
     private final RateHolder rateHolder = new RateHolder();
     // the audio thread's own fault bookkeeping
     private int sinceRecheck;
-    /** True once the block being filled has counted its samples towards the recheck (a one-call block). */
-    private boolean blockCounted;
     private boolean modelSilent;
     private boolean halted;
     private boolean retryStep;
@@ -500,16 +498,13 @@ public class PhyUGen extends UGen {
         blockChannels = channelCount;
         blockStereo = channelCount >= 2 && !forceMono;
         SteppedModel m = steppedModel();
-        blockCounted = false;
         if (n > 1 && fillRecordedBlock(m, n)) {
             return;
         }
         m.beginSample();
         try {
             for (int i = 0; i < n; i++) {
-                if (!blockCounted) {   // a one-call block that fell back here has counted its samples already
-                    countTowardsRecheck(m);
-                }
+                countTowardsRecheck(m);
                 if (computeSample(m, blockStereo)) {
                     blockLeft[i] = sampleLeft;
                     blockRight[i] = sampleRight;
@@ -548,8 +543,6 @@ public class PhyUGen extends UGen {
         if (!r.allAudible()) {
             return false;
         }
-        countTowardsRecheck(m, n);
-        blockCounted = true;
         r.beginBlock();
         int ran;
         m.beginSample();   // outside the catch, as on the per-sample path: its failure is this PhyUGen's
@@ -596,6 +589,8 @@ public class PhyUGen extends UGen {
             silenceFilters();
         }
         blockLength = n;
+        // counted once done: a block that falls back to one sample per pass is counted there, sample by sample
+        countTowardsRecheck(m, n);
         return true;
     }
 
