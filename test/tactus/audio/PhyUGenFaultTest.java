@@ -68,6 +68,16 @@ class PhyUGenFaultTest {
         return peak;
     }
 
+    /** A stereo PhyUGen at 44.1 kHz with blocks of this length, listening to the flaky model's mass x. */
+    private static PhyUGen listeningToX(FlakyModel model, int block) {
+        PhyUGen u = new PhyUGen(model);
+        u.setSampleRate(44100);
+        u.setChannelCount(2);
+        u.setBlockSize(block);
+        u.listenToMass("x", SteppedModel.X, 1, 0);
+        return u;
+    }
+
     /** The least whole number of blocks of the given length that is at least n samples, in samples. */
     private static int wholeBlocks(int n, int block) {
         return (n + block - 1) / block * block;
@@ -399,11 +409,7 @@ class PhyUGenFaultTest {
     @ValueSource(ints = {1, PhyUGen.DEFAULT_BLOCK_SIZE})
     void aStepThatThrowsIsRetriedAboutTwentyTimesASecondNotEverySample(int block) throws Exception {
         FlakyModel model = new FlakyModel();
-        PhyUGen u = new PhyUGen(model);
-        u.setSampleRate(44100);
-        u.setChannelCount(2);
-        u.setBlockSize(block);
-        u.listenToMass("x", SteppedModel.X, 1, 0);
+        PhyUGen u = listeningToX(model, block);
         assertTrue(tick(u, wholeBlocks(1000, block), -1) > 0.01);   // the next sample begins a block
         model.fail = true;
         int before = model.calls;
@@ -433,11 +439,7 @@ class PhyUGenFaultTest {
     @ValueSource(ints = {1, 16, PhyUGen.DEFAULT_BLOCK_SIZE, 256})
     void retriesComeEveryRecheckIntervalCountedFromTheFirstSample(int block) throws Exception {
         FlakyModel model = new FlakyModel();
-        PhyUGen u = new PhyUGen(model);
-        u.setSampleRate(44100);
-        u.setChannelCount(2);
-        u.setBlockSize(block);
-        u.listenToMass("x", SteppedModel.X, 1, 0);
+        PhyUGen u = listeningToX(model, block);
         int start = 1024;   // whole blocks of every size tried
         tick(u, start, -1);
         model.fail = true;
@@ -466,11 +468,7 @@ class PhyUGenFaultTest {
     @ValueSource(ints = {1, PhyUGen.DEFAULT_BLOCK_SIZE})
     void aFailureOfThePhyUGenItselfIsWrittenAsZeroAndSaidOnce(int block) throws Exception {
         FlakyModel model = new FlakyModel();
-        PhyUGen u = new PhyUGen(model);
-        u.setSampleRate(44100);
-        u.setChannelCount(2);
-        u.setBlockSize(block);
-        u.listenToMass("x", SteppedModel.X, 1, 0);
+        PhyUGen u = listeningToX(model, block);
         tick(u, wholeBlocks(100, block), -1);
         model.badLock = true;
         assertEquals(0f, assertDoesNotThrow(() -> tick(u, 5000, -1)));
