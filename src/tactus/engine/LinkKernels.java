@@ -209,10 +209,7 @@ final class LinkKernels {
                 double kk = b.k[js], zz = b.z[js], l = b.len[js];
                 boolean same = true;
                 for (int j = js + 1; j < segEnd[q] && same; j++) {
-                    // compared as bits: the constants must give exactly the values the links hold (-0.0, NaN)
-                    same = Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(kk)
-                            && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(zz)
-                            && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(l);
+                    same = hasParams(j, kk, zz, l);
                 }
                 uniform[q] = same;
                 segK[q] = kk;
@@ -237,13 +234,20 @@ final class LinkKernels {
                     uL = b.len[j];
                     first = false;
                 } else {
-                    // compared as bits, as in findUniformSegments
-                    same = Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(uK)
-                            && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(uZ)
-                            && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(uL);
+                    same = hasParams(j, uK, uZ, uL);
                 }
             }
             uniformLinks = same && !first && p.sweepRuns;
+        }
+
+        /**
+         * @return true if link j has exactly this stiffness, damping and length, compared as bits: the constants must
+         *     give exactly the values the links hold (-0.0, NaN)
+         */
+        private boolean hasParams(int j, double kk, double zz, double l) {
+            return Double.doubleToRawLongBits(b.k[j]) == Double.doubleToRawLongBits(kk)
+                    && Double.doubleToRawLongBits(b.z[j]) == Double.doubleToRawLongBits(zz)
+                    && Double.doubleToRawLongBits(b.len[j]) == Double.doubleToRawLongBits(l);
         }
 
         /** @return true when the links outside the segments run with their shared parameters as constants (tests). */
