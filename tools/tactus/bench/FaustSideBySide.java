@@ -22,6 +22,7 @@ import tactus.PhysicalModel;
 import tactus.Vect3D;
 import tactus.audio.PhyUGen;
 import tactus.audio.SteppedModel;
+import tactus.audio.VoiceBank;
 import tactus.export.FaustExportOptions;
 import tactus.export.FaustExporter;
 import tactus.faust.FaustCost;
@@ -39,15 +40,17 @@ import tactus.faust.FaustToolchain;
  * wall-clock figures are printed beside them.
  *
  * <p>Models: 1-D strings of 30, 100, 300 and 1,000 masses (Mass1D, SpringDamper1D), the 8 x 8 metal plate (Osc1D),
- * 3-D strings of 100 and 1,000 masses (Mass3D, SpringDamper3D), and 16 voices of the 100-mass 1-D string (16 Faust
- * instances in one program; 16 PhyUGens on one Summer). The compiled programs are kept in {@code build/faustbench}
+ * 3-D strings of 100 and 1,000 masses (Mass3D, SpringDamper3D), 8 and 16 voices of the 100-mass 1-D string (V Faust
+ * instances in one program; V models with a PhyUGen each on one Summer), and 16 voices of the 30- and 100-mass strings
+ * in one {@code VoiceBank} (one model, one PhyUGen). The compiled programs are kept in {@code build/faustbench}
  * and reused while the exported source is the same. Without {@code faust} or {@code g++} the Faust column says so
  * and Tactus is measured alone.
  */
 public final class FaustSideBySide {
     /** Model ids, in report order. */
     static final String[] MODELS = {"string1d-30", "string1d-100", "string1d-300", "string1d-1000", "plate-8x8",
-        "string3d-100", "string3d-1000", "voices8-string1d-100", "voices16-string1d-100"};
+        "string3d-100", "string3d-1000", "voices8-string1d-100", "voices16-string1d-100", "bank16-string1d-30",
+        "bank16-string1d-100"};
     private static final int RATE = 44100;
     private static final double SAMPLE_NS = 1e9 / RATE;
     private static final String TAG = "<!-- side by side with Faust (gradle bench) -->";
@@ -116,7 +119,7 @@ public final class FaustSideBySide {
 
     /** @return the model of an id (for voices: one voice). */
     static PhysicalModel model(String id) {
-        if (id.startsWith("voices")) {
+        if (multiVoice(id)) {
             return model(voice(id));
         }
         if (id.equals("plate-8x8")) {
@@ -128,7 +131,7 @@ public final class FaustSideBySide {
 
     /** @return the listening mass of a model: mass 2n/3 + 1 of a string, p3_5 of the plate. */
     static String listened(String id) {
-        if (id.startsWith("voices")) {
+        if (multiVoice(id)) {
             return listened(voice(id));
         }
         if (id.equals("plate-8x8")) {
@@ -138,14 +141,37 @@ public final class FaustSideBySide {
         return "m" + (2 * n / 3 + 1);
     }
 
-    /** @return the number of voices of a model id: V for "voicesV-&lt;model&gt;", else 1. */
+    /**
+     * @return true for an id of several voices: "voicesV-&lt;model&gt;" (V models) or "bankV-&lt;model&gt;" (one
+     *     VoiceBank of V voices)
+     */
+    static boolean multiVoice(String id) {
+        return id.startsWith("voices") || id.startsWith("bank");
+    }
+
+    /** @return the number of voices of a model id: V for "voicesV-&lt;model&gt;" or "bankV-&lt;model&gt;", else 1. */
     static int voices(String id) {
-        return id.startsWith("voices") ? Integer.parseInt(id.substring(6, id.indexOf('-'))) : 1;
+        return multiVoice(id) ? Integer.parseInt(id.substring(id.startsWith("bank") ? 4 : 6, id.indexOf('-'))) : 1;
     }
 
     /** @return the model one voice of a "voicesV-&lt;model&gt;" id plays. */
     static String voice(String id) {
         return id.substring(id.indexOf('-') + 1);
+    }
+
+    /**
+     * @return the VoiceBank of a "bankV-string1d-N" id: V voices of {@link FaustCost#string}'s 1-D string in one
+     *     model, each struck as that string is
+     */
+    static VoiceBank bank(String id) {
+        int n = Integer.parseInt(voice(id).substring("string1d-".length()));
+        PhysicalModel m = new PhysicalModel(RATE);
+        VoiceBank bank = new VoiceBank(m, voices(id), (mm, prefix, v) -> FaustCost.addString(mm, prefix, n, false));
+        m.init();
+        for (int v = 0; v < bank.size(); v++) {
+            m.triggerForceImpulse(bank.name(v, "m" + (n / 5 + 1)), 0, 0, 1);
+        }
+        return bank;
     }
 
     /** The 8 x 8 plate of {@link FaustCost#plate}, struck at p2_2. */
@@ -173,28 +199,48 @@ public final class FaustSideBySide {
 
         Subject(String id) {
             int v = voices(id);
-            models = new PhysicalModel[v];
+            int block = Integer.getInteger(BLOCK_PROPERTY, DEFAULT_BLOCK);
             reads = new Mass[v];
-            for (int i = 0; i < v; i++) {
-                models[i] = model(id);
-                reads[i] = models[i].getMass(listened(id));
-                PhyUGen u = new PhyUGen(model(id));
-                u.setBlockSize(Integer.getInteger(BLOCK_PROPERTY, DEFAULT_BLOCK));
-                u.listenToMass(listened(id), SteppedModel.Z, 1, 0);
-                u.patch(root);
-                u.setSampleRate(RATE);
-                u.setChannelCount(1);
+            if (id.startsWith("bank")) {   // one model of V voices, stepped; another, heard through one PhyUGen
+                VoiceBank stepped = bank(id);
+                models = new PhysicalModel[] {stepped.getModel()};
+                for (int i = 0; i < v; i++) {
+                    reads[i] = stepped.getModel().getMass(stepped.name(i, listened(id)));
+                }
+                VoiceBank heard = bank(id);
+                PhyUGen u = new PhyUGen(heard.getModel());
+                u.setBlockSize(block);
+                heard.listenToMass(u, listened(id), SteppedModel.Z, 1, 0);
+                patch(u);
+            } else {
+                models = new PhysicalModel[v];
+                for (int i = 0; i < v; i++) {
+                    models[i] = model(id);
+                    reads[i] = models[i].getMass(listened(id));
+                    PhyUGen u = new PhyUGen(model(id));
+                    u.setBlockSize(block);
+                    u.listenToMass(listened(id), SteppedModel.Z, 1, 0);
+                    patch(u);
+                }
             }
             root.setSampleRate(RATE);
             root.setChannelCount(1);
         }
 
+        private void patch(PhyUGen u) {
+            u.patch(root);
+            u.setSampleRate(RATE);
+            u.setChannelCount(1);
+        }
+
         double step(int samples) {
             double sum = 0;
             for (int s = 0; s < samples; s++) {
-                for (int i = 0; i < models.length; i++) {
-                    models[i].computeStep();
-                    sum += reads[i].getPosition(scratch).z;
+                for (PhysicalModel m : models) {
+                    m.computeStep();
+                }
+                for (Mass r : reads) {
+                    sum += r.getPosition(scratch).z;
                 }
             }
             return sum;
@@ -410,7 +456,7 @@ public final class FaustSideBySide {
      *     timeout: delete build/faustbench to try a failed model again)
      */
     static Path[] compile(String id, Path work, int timeout) throws IOException {
-        String name = id.startsWith("voices") ? voice(id) : id;
+        String name = multiVoice(id) ? voice(id) : id;
         String dsp = dsp(name);
         Path failed = work.resolve(name + ".failed");
         Path src = work.resolve(name + ".dsp");
@@ -508,6 +554,11 @@ public final class FaustSideBySide {
             case "voices8-string1d-100":
             case "voices16-string1d-100":
                 return voices(id) + " voices of the 100-mass 1-D string (per sample of all voices)";
+            case "bank16-string1d-30":
+            case "bank16-string1d-100":
+                return voices(id) + " voices of the " + voice(id).substring("string1d-".length())
+                        + "-mass 1-D string in one `VoiceBank`"
+                        + " (one model, one PhyUGen; per sample of all voices)";
             default:
                 int n = Integer.parseInt(id.substring(id.indexOf('-') + 1));
                 return String.format(Locale.ROOT, "%s string, %,d masses", id.startsWith("string3d") ? "3-D" : "1-D", n);
@@ -621,8 +672,8 @@ public final class FaustSideBySide {
                 + "A Faust measurement is one process: `-bench` renders in blocks of 256 samples, a tenth of the samples "
                 + "untimed first, then about %.2f s timed; `-voices V` renders V instances in turn per block. Tactus runs "
                 + "in one child JVM (`-Xms1g -Xmx1g -XX:+UseParallelGC`) that builds each model on first use, warms it for "
-                + "2 s, then measures about %.2f s of `computeStep()` + `Mass.getPosition(Vect3D)` per sample (each voice "
-                + "its own model) and %.2f s of a `Summer` ticked per sample with the model's `PhyUGen`(s) patched into it, "
+                + "2 s, then measures about %.2f s of `computeStep()` + `Mass.getPosition(Vect3D)` per sample (a "
+                + "voices row: each voice its own model; a `VoiceBank` row: one model of all voices, every voice read) and %.2f s of a `Summer` ticked per sample with the model's `PhyUGen`(s) patched into it, "
                 + "as an `AudioOutput` or the `OfflineRenderer` ticks them. In each round every model is measured by both "
                 + "engines, Faust first in even rounds, Tactus first in odd ones. Strings: `FaustCost.string` (between two "
                 + "fixed points, struck once, listened at mass 2n/3 + 1); the plate as in `FaustAgreementTest`, struck at "

@@ -101,33 +101,41 @@ public final class FaustCost {
      */
     public static PhysicalModel string(int n, boolean threeD) {
         PhysicalModel m = new PhysicalModel(44100);
+        addString(m, "", n, threeD);
+        m.init();
+        m.triggerForceImpulse("m" + (n / 5 + 1), 0, 0, 1);
+        return m;
+    }
+
+    /**
+     * Adds the modules of {@link #string} to a model, each name with a prefix (a voice of a {@code VoiceBank}):
+     * grounds g0 and g1, masses m1..mn, links s0..sn; the strike is left to the caller.
+     */
+    public static void addString(PhysicalModel m, String prefix, int n, boolean threeD) {
         if (threeD) {
-            m.addGround3D("g0", new Vect3D(0, 0, 0));
-            m.addGround3D("g1", new Vect3D(n + 1, 0, 0));
+            m.addGround3D(prefix + "g0", new Vect3D(0, 0, 0));
+            m.addGround3D(prefix + "g1", new Vect3D(n + 1, 0, 0));
         } else {
-            m.addGround1D("g0", new Vect3D(0, 0, 0));
-            m.addGround1D("g1", new Vect3D(n + 1, 0, 0));
+            m.addGround1D(prefix + "g0", new Vect3D(0, 0, 0));
+            m.addGround1D(prefix + "g1", new Vect3D(n + 1, 0, 0));
         }
         for (int i = 1; i <= n; i++) {
             Vect3D pos = new Vect3D(i, 0, 0);
             if (threeD) {
-                m.addMass3D("m" + i, 1, pos, new Vect3D());
+                m.addMass3D(prefix + "m" + i, 1, pos, new Vect3D());
             } else {
-                m.addMass1D("m" + i, 1, pos, new Vect3D());
+                m.addMass1D(prefix + "m" + i, 1, pos, new Vect3D());
             }
         }
         for (int i = 0; i <= n; i++) {
-            String a = i == 0 ? "g0" : "m" + i;
-            String b = i == n ? "g1" : "m" + (i + 1);
+            String a = prefix + (i == 0 ? "g0" : "m" + i);
+            String b = prefix + (i == n ? "g1" : "m" + (i + 1));
             if (threeD) {
-                m.addSpringDamper3D("s" + i, 0.8, 0.2, 0.0005, a, b);
+                m.addSpringDamper3D(prefix + "s" + i, 0.8, 0.2, 0.0005, a, b);
             } else {
-                m.addSpringDamper1D("s" + i, 0, 0.2, 0.0005, a, b);
+                m.addSpringDamper1D(prefix + "s" + i, 0, 0.2, 0.0005, a, b);
             }
         }
-        m.init();
-        m.triggerForceImpulse("m" + (n / 5 + 1), 0, 0, 1);
-        return m;
     }
 
     /**
