@@ -710,7 +710,7 @@ public final class Engine implements AutoCloseable {
     private int stepInParallel(StepPlan p, int n) {
         hookPlan = p;
         hookSteps = 0;
-        p.settleOffAxisForces();
+        p.prepareStep();
         try {
             return stepper.run(p, n, guardHook);
         } finally {

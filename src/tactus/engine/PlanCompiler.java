@@ -167,6 +167,7 @@ final class PlanCompiler {
 
     /** Writes the per-slot coefficients of one mass from its parameters and the medium. */
     static void fillMass(StepPlan p, int s, MassTable mt, int id, Medium medium) {
+        p.massParamsVersion++;
         MassKind k = mt.kind[id];
         double im = k.isInertial() ? 1.0 / mt.mass[id] : 0.0;
         p.invM[s] = im;

@@ -74,6 +74,13 @@ public final class StepPlan {
      * {@code addForce}, a compile that carried forces over); cleared by {@link #settleOffAxisForces()}.
      */
     boolean offAxisResidue = true;
+    /**
+     * Counts changes of the masses' coefficients ({@link PlanCompiler#fillMass}): the oscillator kernels look again
+     * whether their masses share one retention and one stiffness ({@link #prepareStep()}).
+     */
+    int massParamsVersion;
+    /** The {@link #massParamsVersion} the oscillator kernels last looked at. */
+    private int seenMassParams = -1;
     private Kernel[] kernels = new Kernel[0];
     private int kernelsVersion;
 
@@ -109,7 +116,7 @@ public final class StepPlan {
      * goes through {@link Engine#step(int)}, which counts steps and runs the divergence guard.
      */
     void step() {
-        settleOffAxisForces();
+        prepareStep();
         Kernel[] ks = kernels;
         for (int i = 0; i < ks.length; i++) {
             ks[i].run();
@@ -118,6 +125,25 @@ public final class StepPlan {
 
     Kernel[] kernels() {
         return kernels;
+    }
+
+    /**
+     * What must hold before the kernels run, on the thread that steps (before a parallel batch, on the thread that
+     * starts it): the x and y forces of the 1-D masses settled ({@link #settleOffAxisForces()}) and, after a change
+     * of the masses' coefficients, the oscillator kernels' shared coefficients looked at again. Allocates nothing.
+     */
+    void prepareStep() {
+        settleOffAxisForces();
+        if (massParamsVersion != seenMassParams) {
+            seenMassParams = massParamsVersion;
+            for (Kernel k : kernels) {
+                MassKernels.SlotKernel m = k instanceof StencilKernel ? ((StencilKernel) k).masses()
+                        : k instanceof MassKernels.SlotKernel ? (MassKernels.SlotKernel) k : null;
+                if (m instanceof MassKernels.OscKernel) {
+                    ((MassKernels.OscKernel) m).findSharedCoefficients();
+                }
+            }
+        }
     }
 
     /**
