@@ -138,17 +138,24 @@ class OffAxisForcesTest {
         assertTrue(plane.plan().offAxisWriters, "a plane contact along x on an Osc1D");
     }
 
+    /**
+     * Steps an engine on two threads from its first batch on: its step-mode chooser gets a clock on which the
+     * one-thread probe takes 1000 ns and every later run 1 ns.
+     */
+    static void parallelFromTheProbeOn(Engine e) {
+        e.setThreads(2);
+        long[] t = {0};
+        int[] calls = {0};
+        e.setModeClock(() -> t[0] += ++calls[0] <= 2 ? 1000 : 1);
+    }
+
     @Test
     void theParallelStepperClearsWhatTheApiWroteToo() {
         int n = 12_000;   // 24,001 elements: past the parallel stepper's threshold of 20,000
         int[] ids = new int[n + 1];
         int[] idsRef = new int[n + 1];
         try (Engine par = string(MassKind.MASS1D, n, false, ids); Engine ser = string(MassKind.MASS1D, n, false, idsRef)) {
-            par.setThreads(2);
-            // a clock on which the one-thread probe takes 1000 ns and every later run 1 ns: parallel from the probe on
-            long[] t = {0};
-            int[] calls = {0};
-            par.setModeClock(() -> t[0] += ++calls[0] <= 2 ? 1000 : 1);
+            parallelFromTheProbeOn(par);
             for (int round = 0; round < 6; round++) {
                 for (int i = 1; i <= n; i += 997) {
                     par.addForce(ids[i], 1, -1, 0.001 * i / n);

@@ -129,11 +129,7 @@ class SharedOscillatorCoefficientsTest {
         int[] ids = new int[n * n];
         int[] idsRef = new int[n * n];
         try (Engine par = plate(MassKind.OSC1D, n, false, ids); Engine ser = plate(MassKind.OSC1D, n, true, idsRef)) {
-            par.setThreads(2);
-            // a clock on which the one-thread probe takes 1000 ns and every later run 1 ns: parallel from the probe on
-            long[] t = {0};
-            int[] calls = {0};
-            par.setModeClock(() -> t[0] += ++calls[0] <= 2 ? 1000 : 1);
+            OffAxisForcesTest.parallelFromTheProbeOn(par);
             for (int round = 0; round < 6; round++) {
                 if (round == 2) {
                     par.setOscillator(ids[5], 0.002, 0.00002);
