@@ -334,6 +334,7 @@ public final class StepPlan {
         }
         kernels = list.toArray(new Kernel[0]);
         kernelsVersion++;
+        seenMassParams = -1;   // new oscillator kernels look at their masses' coefficients before their first step
     }
 
     /** @return the mass kind whose slots include all of [s, e), or null if they span several kinds. */

@@ -14,8 +14,9 @@ import org.junit.jupiter.params.provider.EnumSource;
 /**
  * Oscillator kernels (Osc1D, Osc3D) whose masses all share one retention and one stiffness run with them as constants
  * ({@link MassKernels.OscKernel}). The model moves bit for bit as with the coefficients read per mass (the reference
- * form, stencil sweeps off); a parameter change switches the shared form off, and back on, at the next step; and so
- * does the parallel stepper.
+ * form, stencil sweeps off); a parameter change switches the shared form off, and back on, at the next step, kernels
+ * selected again (air friction, gravity, stencil sweeps off and on) share the values; and so does the parallel
+ * stepper.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class SharedOscillatorCoefficientsTest {
@@ -106,15 +107,27 @@ class SharedOscillatorCoefficientsTest {
                     plate.setMass(ids[i], 1.5);
                     ref.setMass(idsRef[i], 1.5);
                 }
+            } else if (step == 2500) {   // air friction: the kernels are selected again, and share the new values
+                plate.setFriction(0.0001);
+                ref.setFriction(0.0001);
+            } else if (step == 2700) {   // the reference form: a new plan reads the coefficients per mass
+                plate.setStencilSweeps(false);
+            } else if (step == 2800) {   // sweeps again, and gravity: the kernels selected again, with no new values
+                plate.setStencilSweeps(true);
+                plate.step(1);
+                ref.step(1);
+                plate.setGravity(0, 0, -1e-9);
+                ref.setGravity(0, 0, -1e-9);
             }
             plate.step(1);
             ref.step(1);
-            if (step == 700) {
-                assertFalse(shared(plate), "after the retune");
-            } else if (step == 1400 || step == 2100) {
+            if (step == 700 || step == 2700) {
+                assertFalse(shared(plate), "after step " + step + "'s change");
+            } else if (step == 1400 || step == 2100 || step == 2500 || step == 2800) {
                 assertTrue(shared(plate), "after step " + step + "'s change");
             }
-            if (step % 50 == 0 || step >= 699 && step <= 702 || step >= 1399 && step <= 1402) {
+            if (step % 50 == 0 || step >= 699 && step <= 702 || step >= 1399 && step <= 1402
+                    || step >= 2499 && step <= 2502 || step >= 2799 && step <= 2802) {
                 assertSameMotion(plate, ids, ref, idsRef, kind + " after step " + step);
             }
         }
