@@ -215,17 +215,24 @@ class FrozenBoardTest {
         }
     }
 
-    /** True if this JVM's thread of that name is asleep in the kernel in a tty write (Linux: /proc). */
+    /**
+     * True if this JVM's thread of that name is asleep in the kernel in a tty write (Linux: /proc). Other threads may
+     * end while the tasks are listed: their folders are skipped.
+     */
     private static boolean asleepInTtyWrite(String threadName) throws IOException {
         java.nio.file.Path tasks = java.nio.file.Paths.get("/proc/self/task");
         try (java.util.stream.Stream<java.nio.file.Path> all = java.nio.file.Files.list(tasks)) {
             for (java.nio.file.Path t : (Iterable<java.nio.file.Path>) all::iterator) {
-                String comm = new String(java.nio.file.Files.readAllBytes(t.resolve("comm"))).trim();
-                if (comm.equals(threadName)) {
-                    String stat = new String(java.nio.file.Files.readAllBytes(t.resolve("stat")));
-                    String wchan = new String(java.nio.file.Files.readAllBytes(t.resolve("wchan")));
-                    char state = stat.charAt(stat.lastIndexOf(')') + 2);
-                    return state == 'S' && !wchan.contains("futex");
+                try {
+                    String comm = new String(java.nio.file.Files.readAllBytes(t.resolve("comm"))).trim();
+                    if (comm.equals(threadName)) {
+                        String stat = new String(java.nio.file.Files.readAllBytes(t.resolve("stat")));
+                        String wchan = new String(java.nio.file.Files.readAllBytes(t.resolve("wchan")));
+                        char state = stat.charAt(stat.lastIndexOf(')') + 2);
+                        return state == 'S' && !wchan.contains("futex");
+                    }
+                } catch (java.nio.file.NoSuchFileException ended) {
+                    // a thread of the JVM (not the writer, which is still in its write) ended after the listing
                 }
             }
         }
