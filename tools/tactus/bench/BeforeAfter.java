@@ -81,7 +81,7 @@ public final class BeforeAfter {
                 }
                 pm.getMethod("init").invoke(model);
                 pm.getMethod("triggerForceImpulse", String.class, double.class, double.class, double.class)
-                        .invoke(model, "m" + (n / 5 + 1), 0.0, 0.0, 1.0);
+                        .invoke(model, tactus.faust.FaustCost.struckMass(n), 0.0, 0.0, 1.0);
                 tick = ugenTick(loader, pm, model, "m" + (2 * n / 3 + 1), 2);
                 return;
             }

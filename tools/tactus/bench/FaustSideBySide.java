@@ -169,7 +169,7 @@ public final class FaustSideBySide {
         VoiceBank bank = new VoiceBank(m, voices(id), (mm, prefix, v) -> FaustCost.addString(mm, prefix, n, false));
         m.init();
         for (int v = 0; v < bank.size(); v++) {
-            m.triggerForceImpulse(bank.name(v, "m" + (n / 5 + 1)), 0, 0, 1);
+            m.triggerForceImpulse(bank.name(v, FaustCost.struckMass(n)), 0, 0, 1);
         }
         return bank;
     }
@@ -673,7 +673,8 @@ public final class FaustSideBySide {
                 + "untimed first, then about %.2f s timed; `-voices V` renders V instances in turn per block. Tactus runs "
                 + "in one child JVM (`-Xms1g -Xmx1g -XX:+UseParallelGC`) that builds each model on first use, warms it for "
                 + "2 s, then measures about %.2f s of `computeStep()` + `Mass.getPosition(Vect3D)` per sample (a "
-                + "voices row: each voice its own model; a `VoiceBank` row: one model of all voices, every voice read) and %.2f s of a `Summer` ticked per sample with the model's `PhyUGen`(s) patched into it, "
+                + "voices row: each voice its own model; a `VoiceBank` row: one model of all voices, every voice read) "
+                + "and %.2f s of a `Summer` ticked per sample with the model's `PhyUGen`(s) patched into it, "
                 + "as an `AudioOutput` or the `OfflineRenderer` ticks them. In each round every model is measured by both "
                 + "engines, Faust first in even rounds, Tactus first in odd ones. Strings: `FaustCost.string` (between two "
                 + "fixed points, struck once, listened at mass 2n/3 + 1); the plate as in `FaustAgreementTest`, struck at "

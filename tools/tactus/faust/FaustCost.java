@@ -103,8 +103,13 @@ public final class FaustCost {
         PhysicalModel m = new PhysicalModel(44100);
         addString(m, "", n, threeD);
         m.init();
-        m.triggerForceImpulse("m" + (n / 5 + 1), 0, 0, 1);
+        m.triggerForceImpulse(struckMass(n), 0, 0, 1);
         return m;
+    }
+
+    /** @return the mass {@link #string} strikes (and takes a force input on, exported): m(n/5 + 1) */
+    public static String struckMass(int n) {
+        return "m" + (n / 5 + 1);
     }
 
     /**
@@ -165,7 +170,7 @@ public final class FaustCost {
 
     /** @return export options for {@link #string}: output mass 2n/3 + 1 along z, a force input on mass n/5 + 1. */
     public static FaustExportOptions options(int n, boolean threeD) {
-        return new FaustExportOptions().listen("m" + (2 * n / 3 + 1), 2).forceInput("m" + (n / 5 + 1), 2);
+        return new FaustExportOptions().listen("m" + (2 * n / 3 + 1), 2).forceInput(struckMass(n), 2);
     }
 
     static double stepNanos(PhysicalModel m, int samples) {
