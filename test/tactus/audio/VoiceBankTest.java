@@ -54,17 +54,22 @@ class VoiceBankTest {
         return m;
     }
 
+    /** @return voice v of {@link #string}(0) alone in its own model: a one-voice bank told it is voice v (names v0_) */
+    private static PhysicalModel alone(int voice) {
+        PhysicalModel m = new PhysicalModel(44100);
+        VoiceBank.VoiceBuilder b = string(0);
+        new VoiceBank(m, 1, (mm, p, ignored) -> b.build(mm, p, voice));
+        m.init();
+        return m;
+    }
+
     @Test
     void eachVoiceMovesAsItsStringAloneBitForBitAndTheOthersStayAtRest() {
         for (int voices : new int[] {1, 3, 8}) {
             VoiceBank[] bank = new VoiceBank[1];
             PhysicalModel m = bank(voices, string(0), bank);
             int played = voices - 1;
-            // the same voice alone: a one-voice bank whose builder is told it is voice `played`
-            PhysicalModel alone = new PhysicalModel(44100);
-            VoiceBank.VoiceBuilder b = string(0);
-            new VoiceBank(alone, 1, (mm, p, v) -> b.build(mm, p, played));
-            alone.init();
+            PhysicalModel alone = alone(played);
             m.triggerForceImpulse(bank[0].name(played, "m4"), 0, 0, 0.3);
             alone.triggerForceImpulse("v0_m4", 0, 0, 0.3);
             for (int step = 0; step < 3000; step += 500) {
@@ -159,11 +164,7 @@ class VoiceBankTest {
         String[] struck = {"m2", "m7"};
         double[] force = {0.2, -0.1};
         for (int k = 0; k < 2; k++) {
-            PhysicalModel a = new PhysicalModel(44100);
-            VoiceBank.VoiceBuilder b = string(0);
-            int v = voice[k];
-            new VoiceBank(a, 1, (mm, p, ignored) -> b.build(mm, p, v));
-            a.init();
+            PhysicalModel a = alone(voice[k]);
             a.triggerForceImpulse("v0_" + struck[k], 0, 0, force[k]);
             alone[k] = new PhyUGen(a);
             alone[k].listenToMass("v0_m5", SteppedModel.Z, 100, 0);
